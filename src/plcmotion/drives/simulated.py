@@ -1,0 +1,166 @@
+"""Simulated drives: a servo drive with its encoder, a stepper on a pulse output, and the ideal drive of
+``Simulation.Mode = 1``.
+
+Servo (PROFIdrive/analog, S7-1200 V6 §2.2): the drive closes its speed loop, modelled as a first-order lag
+with time constant ``Plant.SpeedTimeConstant`` and integrated exactly over each servo cycle; its speed is
+limited to ``Actor.DriveParameter.MaxSpeed``.  The encoder counts increments of finite size (steps per
+revolution times the fine resolution of Gx_XIST1, or the linear grid), so the actual position is quantised
+and lags the setpoint: the following error is a real quantity.  Without enable the drive ramps down with
+its own ramp (``Plant.OffRampTime``), as a drive does when the controller removes the enable.
+
+Stepper (PTO, §2.1): open loop, the actual position is the number of output pulses, i.e. the setpoint
+rounded to whole pulses; the actual velocity is the pulse frequency.
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, Mapping
+
+import numpy as np
+
+from .base import DriveChannel, DriveGroup
+
+
+def encoder_increment(cfg: Mapping[str, Any]) -> float:
+    """Distance [user unit] of one increment of the encoder (S7-1200 V6 §5.4.3.3, §12.9.6.3)."""
+    fine = 2 ** cfg["Sensor[1].Parameter.FineResolutionXist1"]
+    if cfg["Sensor[1].System"] == 1:                      # rotary
+        per_rev = cfg["Sensor[1].Parameter.StepsPerRevolution"] * fine
+        distance = (cfg["Mechanics.LeadScrew"] if cfg["Sensor[1].MountingMode"] == 0
+                    else cfg["Sensor[1].Parameter.DistancePerRevolution"])
+        return distance / per_rev
+    return cfg["Sensor[1].Parameter.Resolution"] / fine
+
+
+def drive_speed_limit(cfg: Mapping[str, Any]) -> float:
+    """Load velocity [user unit/s] at the drive's maximum speed."""
+    return cfg["Actor.DriveParameter.MaxSpeed"] / 60.0 * cfg["Mechanics.LeadScrew"]
+
+
+class _ServoChannel(DriveChannel):
+    def __init__(self, group: "ServoDrives", member: int):
+        self.group, self.member = group, member
+
+    def set_enable(self, on: bool, t: float) -> None:
+        g, m = self.group, self.member
+        if on and not g.en[m]:
+            g.ready_at[m] = t + g.ready_delay[m]
+        g.en[m] = on
+
+    def ready(self, t: float) -> bool:
+        g, m = self.group, self.member
+        return bool(g.en[m]) and t >= g.ready_at[m] - 1e-12
+
+    def set_actual(self, bank: Any, value: float) -> None:
+        g, m = self.group, self.member
+        counted = math.floor(g.x[m] / g.q[m]) * g.q[m]
+        old = counted + g.off[m]
+        g.off[m] = value - counted
+        g.last[m] += value - old
+        bank.act_p[g.idx[m]] = value
+
+
+class ServoDrives(DriveGroup):
+    """Closed-loop drives (PROFIdrive telegram or analog speed setpoint) with incremental encoders."""
+
+    _FIELDS = ("x", "v", "cmd", "e", "tfac", "vlim", "off_dec", "ready_at", "ready_delay", "q", "off", "last")
+
+    def __init__(self) -> None:
+        self.idx = np.zeros(0, dtype=np.intp)
+        self.en = np.zeros(0, dtype=bool)
+        for name in self._FIELDS:
+            setattr(self, name, np.zeros(0))
+
+    def add(self, index: int, cfg: Mapping[str, Any], servo_cycle: float, t: float) -> DriveChannel:
+        tc = cfg["Plant.SpeedTimeConstant"]
+        e = math.exp(-servo_cycle / tc) if tc > 0 else 0.0
+        vlim = drive_speed_limit(cfg)
+        off_time = cfg["Plant.OffRampTime"]
+        q = encoder_increment(cfg)
+        x0 = cfg["Plant.InitialPosition"]
+        values = dict(x=x0, v=0.0, cmd=0.0, e=e, tfac=tc * (1 - e), vlim=vlim,
+                      off_dec=(vlim / off_time) if off_time > 0 else math.inf, ready_at=math.inf,
+                      ready_delay=cfg["Plant.ReadyDelay"], q=q, off=0.0, last=math.floor(x0 / q) * q)
+        for name in self._FIELDS:
+            setattr(self, name, np.append(getattr(self, name), values[name]))
+        self.idx = np.append(self.idx, index)
+        self.en = np.append(self.en, False)
+        return _ServoChannel(self, len(self.idx) - 1)
+
+    def read(self, bank: Any, t: float, dt: float) -> None:
+        if not len(self.idx):
+            return
+        on = self.en & (self.ready_at <= t - dt + 1e-12)     # in operation during the last cycle
+        c, v0 = self.cmd, self.v
+        # enabled: exact solution of the first-order speed loop for a command held over dt
+        v_on = c + (v0 - c) * self.e
+        x_on = c * dt + (v0 - c) * self.tfac
+        # not enabled: the drive ramps down on its own
+        speed = np.abs(v0)
+        dv = self.off_dec * dt
+        v_off = np.sign(v0) * np.maximum(speed - dv, 0.0)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            x_off = np.where(speed > dv, (v0 + v_off) * (0.5 * dt), v0 * speed / (2 * self.off_dec))
+        self.v = np.where(on, v_on, v_off)
+        self.x = self.x + np.where(on, x_on, x_off)
+        act = np.floor(self.x / self.q) * self.q + self.off
+        bank.act_v[self.idx] = (act - self.last) / dt
+        bank.act_p[self.idx] = act
+        self.last = act
+
+    def write(self, bank: Any, t: float) -> None:
+        if len(self.idx):
+            self.cmd = np.clip(bank.cmd_v[self.idx], -self.vlim, self.vlim)
+
+
+class _DirectChannel(DriveChannel):
+    """Drives whose actual value is derived from the setpoint (stepper, ideal drive)."""
+
+    def __init__(self, group: "SetpointDrives", member: int):
+        self.group, self.member = group, member
+        self.enabled = False
+
+    def set_enable(self, on: bool, t: float) -> None:
+        self.enabled = on
+
+    def ready(self, t: float) -> bool:
+        return self.enabled
+
+    def set_actual(self, bank: Any, value: float) -> None:
+        g, m = self.group, self.member
+        g.grid[m] = value
+        bank.act_p[g.idx[m]] = value
+
+    @property
+    def communication_ok(self) -> bool:
+        return not self.group.stepper
+
+
+class SetpointDrives(DriveGroup):
+    """Actual value = setpoint: rounded to whole pulses for a stepper on a PTO, exact for the ideal drive."""
+
+    def __init__(self, stepper: bool) -> None:
+        self.stepper = stepper
+        self.idx = np.zeros(0, dtype=np.intp)
+        self.pulse = np.zeros(0)
+        self.grid = np.zeros(0)
+
+    def add(self, index: int, cfg: Mapping[str, Any], servo_cycle: float, t: float) -> DriveChannel:
+        pulse = (cfg["Mechanics.LeadScrew"] / cfg["Actor.DriveParameter.PulsesPerDriveRevolution"]
+                 if self.stepper else 0.0)
+        self.idx = np.append(self.idx, index)
+        self.pulse = np.append(self.pulse, pulse)
+        self.grid = np.append(self.grid, 0.0)
+        return _DirectChannel(self, len(self.idx) - 1)
+
+    def read(self, bank: Any, t: float, dt: float) -> None:
+        pass
+
+    def write(self, bank: Any, t: float) -> None:
+        if not len(self.idx):
+            return
+        sp = bank.sp_p[self.idx]
+        if self.stepper:
+            sp = np.round((sp - self.grid) / self.pulse) * self.pulse + self.grid
+        bank.act_p[self.idx] = sp
+        bank.act_v[self.idx] = bank.sp_v[self.idx]

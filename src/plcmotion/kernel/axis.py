@@ -1,0 +1,645 @@
+"""Positioning axis technology object: enable state machine, jobs, alarms, homing, configuration.
+
+The axis owns one slot in the controller's array bank.  The servo cycle evaluates its active profile
+segment; the axis itself only runs when an event is due (segment end, milestone, timer) or when an
+instruction hands it a job.  Behaviour follows S7-1200 Motion Control V6 (section numbers in comments).
+"""
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any, Mapping
+
+from . import faults as F
+from . import parameters as P
+from .faults import Fault, Reaction
+from .jobs import MOTION_KINDS, POSITIONING_KINDS, Job, JobKind, JobState
+from .motion import DirectionFault, MotionPlanner, Plan, limits, modulo_target, wrap
+from .profiles import Planner, PlanningError, Profile
+from .tags import AxisTagsMixin
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .runtime import Controller
+
+DISABLED, ENABLING, ENABLED, DISABLING = "disabled", "enabling", "enabled", "disabling"
+_EPS_T = 1e-9
+
+#: §12.8 16#8202: simultaneously active commands per axis
+MAX_COMMANDS_PTO, MAX_COMMANDS_SERVO = 200, 100
+
+
+class ConfigurationError(ValueError):
+    """A technology object configuration with invalid values; ``issues`` lists every problem."""
+
+    def __init__(self, source: str, issues: list[P.Issue]):
+        self.source = source
+        self.issues = issues
+        lines = [f"{source}: {len(issues)} configuration problem{'s' if len(issues) != 1 else ''}"]
+        lines += ["  " + i.message() for i in issues]
+        super().__init__("\n".join(lines))
+
+
+class TagAccessError(AttributeError):
+    """Writing a tag the user program may not write (access R or WP, S7-1200 V6 §12.9 legends)."""
+
+
+class PositioningAxis(AxisTagsMixin):
+    """Positioning axis technology object (TO_PositioningAxis)."""
+
+    def __init__(self, ctl: "Controller", name: str, cfg: Mapping[str, Any]):
+        self.ctl = ctl
+        self.name = name
+        self.cfg: dict[str, Any] = dict(cfg)          # tag values (work memory)
+        self.load_cfg: dict[str, Any] = dict(cfg)     # start values (load memory), used by a restart
+        self.eff: dict[str, Any] = dict(cfg)          # values the motion currently uses
+        self.pto = cfg["Actor.Type"] == 2
+        self.sim = (not self.pto) and cfg["Simulation.Mode"] == 1
+        self.servo = not self.pto and not self.sim
+        self.index = ctl.bank.add()
+        t = ctl.time
+        group = ctl._drive_group("stepper" if self.pto else "ideal" if self.sim else "servo")
+        self.drive = group.add(self.index, cfg, ctl.servo_cycle, t)
+        self.motion = MotionPlanner(self)
+
+        self.state = DISABLED
+        self.homed = False
+        self.position_controlled = True
+        self.alarms: list[Fault] = []
+        self.job: Job | None = None                   # active motion job
+        self.passive_home: Job | None = None
+        self.power_owner: Any = None
+        self.stop_mode = 0
+        self.busy_commands: set[int] = set()          # id() of instructions with Busy = TRUE
+        self.max_commands = MAX_COMMANDS_PTO if self.pto else MAX_COMMANDS_SERVO
+        self._dirty: set[str] = set()
+        self._after_stop: str | None = None           # "disable" while a disabling stop runs
+        self._pm_job: Job | None = None               # job waiting for positioning monitoring
+        self._plan: Plan | None = None
+        self._interpolating = False                   # the profile of the active job has not ended yet
+        self.profile: Profile = Planner.hold(t, 0.0)
+        self._seg = 0
+        self._pending: dict[str, float] = {}
+        self._timers: dict[str, float] = {}
+        self.reference_mark = 0.0
+
+        b = ctl.bank
+        i = self.index
+        x0 = cfg["Plant.InitialPosition"] if self.servo else 0.0
+        b.act_p[i] = b.sp_p[i] = x0
+        b.servo[i] = self.servo
+        b.follow_act[i] = self.servo
+        self._apply_bank_config()
+        self._start_profile(Planner.hold(t, x0))
+
+    # ------------------------------------------------------------------------------------------------
+    # small helpers
+    def __repr__(self) -> str:
+        return f"<PositioningAxis {self.name} {self.state}>"
+
+    @property
+    def now(self) -> float:
+        return self.ctl.time
+
+    def _state_now(self) -> tuple[float, float, float]:
+        b, i = self.ctl.bank, self.index
+        return float(b.sp_p[i]), float(b.sp_v[i]), float(b.sp_a[i])
+
+    def sw_limits_effective(self) -> bool:
+        """SW limit switches act only on a homed, non-modulo axis (§2.3; modulo: see docs/decisions)."""
+        return self.eff["PositionLimits_SW.Active"] and self.homed and not self.eff["Modulo.Enable"]
+
+    def _wrap(self, value: float) -> float:
+        if self.eff["Modulo.Enable"]:
+            return wrap(value, self.eff["Modulo.StartValue"], self.eff["Modulo.Length"])
+        return value
+
+    def _apply_bank_config(self) -> None:
+        b, i, e = self.ctl.bank, self.index, self.eff
+        b.kv[i] = e["PositionControl.Kv"]
+        b.kpc[i] = e["PositionControl.Kpc"] / 100.0
+        fmin, fmax, vmin = e["FollowingError.MinValue"], e["FollowingError.MaxValue"], e["FollowingError.MinVelocity"]
+        vmax = e["DynamicLimits.MaxVelocity"]
+        b.fe_min[i] = fmin
+        b.fe_max[i] = max(fmax, fmin)
+        b.fe_vmin[i] = vmin
+        b.fe_slope[i] = (fmax - fmin) / (vmax - vmin) if vmax > vmin else 0.0
+        b.pm_window[i] = e["PositioningMonitoring.Window"]
+        b.pm_dwell[i] = e["PositioningMonitoring.MinDwellTime"]
+        b.ss_threshold[i] = e["StandstillSignal.VelocityThreshold"]
+        b.ss_dwell[i] = e["StandstillSignal.MinDwellTime"]
+        self._set_loop_flags()
+
+    def _set_loop_flags(self) -> None:
+        b, i = self.ctl.bank, self.index
+        on = self.state in (ENABLED, DISABLING) and self.servo
+        closed = on and self.position_controlled
+        b.closed_loop[i] = closed
+        b.follow_act[i] = self.servo and not closed
+        fe = closed and self.eff["FollowingError.EnableMonitoring"]
+        if fe != b.fe_on[i]:
+            b.fe_on[i] = fe
+            self.ctl._n_fe += 1 if fe else -1
+
+    # ------------------------------------------------------------------------------------------------
+    # profile and events
+    def _start_profile(self, profile: Profile, plan: Plan | None = None) -> None:
+        self.profile = profile
+        self._plan = plan
+        self._seg = 0
+        self._pending = dict(profile.milestones)
+        self._pending.pop("reached", None)
+        self._pending["end"] = profile.t_end
+        if plan is not None:
+            if plan.reach_time is not None and plan.reach_time < profile.t_end - _EPS_T:
+                self._pending["reached"] = plan.reach_time
+            if plan.cross_time is not None:
+                self._pending["cross"] = plan.cross_time
+        self._load_segment()
+        self._schedule()
+
+    def _load_segment(self) -> None:
+        seg = self.profile.segments[self._seg]
+        b, i = self.ctl.bank, self.index
+        b.seg_t[i], b.seg_p[i], b.seg_v[i], b.seg_a[i], b.seg_j[i] = seg.t, seg.p, seg.v, seg.a, seg.j
+
+    def _schedule(self) -> None:
+        nxt = self.profile.end_of(self._seg)
+        for tm in self._pending.values():
+            nxt = min(nxt, tm)
+        for tm in self._timers.values():
+            nxt = min(nxt, tm)
+        self.ctl.bank.next_event[self.index] = nxt
+
+    def _on_event(self, t: float) -> None:
+        """Something of this axis is due at servo time ``t`` (called before the setpoint is evaluated)."""
+        for _ in range(64):
+            prof = self.profile
+            while prof.end_of(self._seg) <= t + _EPS_T:
+                self._seg += 1
+            self._load_segment()
+            due = sorted((tm, name) for name, tm in self._pending.items() if tm <= t + _EPS_T)
+            timers = [name for name, tm in self._timers.items() if tm <= t + _EPS_T]
+            if not due and not timers:
+                break
+            for name in timers:
+                del self._timers[name]
+                self._on_timer(name, t)
+            for _tm, name in due:
+                if self.profile is prof and name in self._pending:
+                    del self._pending[name]
+                    self._on_milestone(name, t)
+        self._schedule()
+
+    def _on_timer(self, name: str, t: float) -> None:
+        if name == "ready" and self.state == ENABLING:
+            if self.drive.ready(t):
+                self._become_enabled(t)
+            else:
+                self._timers["ready"] = t + self.ctl.servo_cycle
+
+    def _on_milestone(self, name: str, t: float) -> None:
+        job = self.job
+        plan = self._plan
+        if name == "reached":
+            if job is not None and job.busy and job.kind in (JobKind.VELOCITY, JobKind.JOG):
+                job.in_velocity = job.reached_once = True
+            return
+        if name == "cross":
+            side = plan.limit_side if plan else "max"
+            reaction = Reaction.REMOVE_ENABLE if self.servo else Reaction.NONE
+            if not self.servo:
+                self._after_stop = "remove_enable"     # PTO: enable removed once the ramp has stopped
+            self.raise_alarm(F.alarm(F.SW_LIMIT_MAX if side == "max" else F.SW_LIMIT_MIN, "exceeded", reaction))
+            return
+        if name != "end":
+            return
+        self._interpolating = False
+        if plan is not None and plan.limit_side and plan.limit_detail != "exceeded":
+            kind = F.SW_LIMIT_MAX if plan.limit_side == "max" else F.SW_LIMIT_MIN
+            self.raise_alarm(F.alarm(kind, plan.limit_detail))
+        elif job is not None and job.busy:
+            if job.kind in (JobKind.VELOCITY, JobKind.JOG):
+                if job.velocity == 0.0 or job.jog_released:
+                    job.in_velocity = True
+                    self._finish_job(job, JobState.DONE, t)
+                else:
+                    job.in_velocity = job.reached_once = True
+            elif job.kind in (JobKind.ABSOLUTE, JobKind.RELATIVE, JobKind.HALT):
+                if self.servo and self.position_controlled:
+                    self._start_positioning_monitor(job, t)
+                else:
+                    self._finish_job(job, JobState.DONE, t)
+        if self._after_stop is not None and self.profile.final.v == 0.0:
+            self._remove_enable(t, by_power=self._after_stop == "disable")
+
+    def _finish_job(self, job: Job, state: JobState, t: float, fault: Fault | None = None) -> None:
+        job.finish(state, fault)
+        if job is self.job:
+            self.job = None
+        if self._pm_job is job:
+            self._stop_positioning_monitor()
+
+    # ------------------------------------------------------------------------------------------------
+    # positioning monitoring (§5.4.4.6), following error, from the vectorised monitors
+    def _start_positioning_monitor(self, job: Job, t: float) -> None:
+        b, i = self.ctl.bank, self.index
+        b.pm_target[i] = self.profile.final.p
+        b.pm_deadline[i] = t + self.eff["PositioningMonitoring.ToleranceTime"]
+        b.pm_in_since[i] = math.nan
+        if not b.pm_on[i]:
+            b.pm_on[i] = True
+            self.ctl._n_pm += 1
+        self._pm_job = job
+
+    def _stop_positioning_monitor(self) -> None:
+        b, i = self.ctl.bank, self.index
+        if b.pm_on[i]:
+            b.pm_on[i] = False
+            self.ctl._n_pm -= 1
+        self._pm_job = None
+
+    def _on_positioned(self, t: float) -> None:
+        job = self._pm_job
+        self._stop_positioning_monitor()
+        if job is not None and job.busy:
+            self._finish_job(job, JobState.DONE, t)
+
+    def _on_positioning_fault(self, t: float, detail: str) -> None:
+        job = self._pm_job
+        self._stop_positioning_monitor()
+        self.raise_alarm(F.alarm(F.POSITIONING, detail, Reaction.REMOVE_ENABLE), job=job)
+
+    def _on_following_error(self, t: float) -> None:
+        self.raise_alarm(F.alarm(F.FOLLOWING_ERROR, "", Reaction.REMOVE_ENABLE))
+
+    # ------------------------------------------------------------------------------------------------
+    # enable / disable (MC_Power, §11.1.1)
+    def power(self, owner: Any, enable: bool, start_mode: int, stop_mode: int) -> Fault | None:
+        """Called by the enabling instruction on every call; returns a rejection or None."""
+        if self.power_owner is not None and self.power_owner is not owner:
+            return F.reject(F.ALREADY_ENABLED) if enable else None
+        if enable:
+            self.power_owner = owner
+            self.stop_mode = stop_mode
+            if self.state == DISABLED and not self.alarms and self._after_stop is None:
+                self._enable(start_mode)
+        elif self.power_owner is owner:
+            if self.state in (ENABLING, ENABLED):
+                self._disable(stop_mode)
+            if self.state == DISABLED:
+                self.power_owner = None
+        return None
+
+    def _enable(self, start_mode: int) -> None:
+        t = self.now
+        if self._apply_dirty("enable") is not None:
+            return
+        bad = self._config_fault()
+        if bad is not None:
+            self.raise_alarm(bad)
+            return
+        self.position_controlled = start_mode == 1 or not self.servo
+        self.state = ENABLING
+        self.drive.set_enable(True, t)
+        if self.servo:
+            self._timers["ready"] = t
+            self._schedule()
+        else:
+            self._become_enabled(t)
+
+    def _become_enabled(self, t: float) -> None:
+        self.state = ENABLED
+        b, i = self.ctl.bank, self.index
+        if not self.homed:
+            # an axis that is not homed counts from the position at enable (§12.9.1)
+            self.drive.set_actual(b, 0.0)
+            b.act_p[i] = 0.0
+            b.sp_p[i] = 0.0
+        p = float(b.act_p[i])
+        b.sp_p[i], b.sp_v[i], b.sp_a[i] = p, 0.0, 0.0
+        self._set_loop_flags()
+        self._start_profile(Planner.hold(t, p))
+
+    def _disable(self, stop_mode: int) -> None:
+        t = self.now
+        self._abort_all(t)
+        if self.state == ENABLING:
+            self._remove_enable(t, by_power=True)
+            return
+        self.state = DISABLING
+        p, v, a = self._state_now()
+        self._after_stop = "disable"
+        if stop_mode == 1:
+            if self.pto:
+                # pulse output stopped within 30 ms (f >= 100 Hz) or up to 1.5 s at 2 Hz (§11.1.1)
+                f = abs(v) / P.pulse_length(self.eff)
+                duration = 0.03 if f >= 100.0 else (3.0 / f if f > 0 else 0.0)
+                plan = self.motion.ramp_out(t, p, v, duration)
+                self._start_profile(plan.profile, plan)
+            else:
+                self._remove_enable(t, by_power=True)
+                return
+        else:
+            plan = self.motion.stop(t, p, v, a, emergency=True, jerk=stop_mode == 2)
+            self._start_profile(plan.profile, plan)
+        if self.profile.t_end <= t + _EPS_T:
+            self._remove_enable(t, by_power=True)
+
+    def _remove_enable(self, t: float, by_power: bool = False) -> None:
+        """Setpoint zero and enable off; the drive stops by itself (§12.8 'Remove enable')."""
+        self._after_stop = None
+        self.drive.set_enable(False, t)
+        self.state = DISABLED
+        self._stop_positioning_monitor()
+        self._timers.pop("ready", None)
+        b, i = self.ctl.bank, self.index
+        self._set_loop_flags()
+        p = float(b.act_p[i]) if self.servo else float(b.sp_p[i])
+        b.sp_v[i] = b.sp_a[i] = 0.0
+        self._start_profile(Planner.hold(t, p))
+        if by_power and self.pto:
+            self.homed = False                     # §2.5: disabling a PTO axis resets "homed"
+
+    def _abort_all(self, t: float) -> None:
+        for job in (self.job, self.passive_home):
+            if job is not None and job.busy:
+                self._finish_job(job, JobState.ABORTED, t)
+        self.job = None
+        self.passive_home = None
+
+    # ------------------------------------------------------------------------------------------------
+    # alarms (§9.6, §12.8)
+    def raise_alarm(self, fault: Fault, job: Job | None = None) -> None:
+        t = self.now
+        if fault not in self.alarms:
+            self.alarms.append(fault)
+        victim = job if job is not None else self.job
+        if victim is not None and victim.busy:
+            self._finish_job(victim, JobState.ERROR, t, fault)
+        if fault.reaction in (Reaction.REMOVE_ENABLE, Reaction.EMERGENCY) and self.passive_home is not None:
+            self._finish_job(self.passive_home, JobState.ERROR, t, fault)
+            self.passive_home = None
+        if self.state not in (ENABLED, DISABLING, ENABLING):
+            return
+        if fault.reaction == Reaction.REMOVE_ENABLE:
+            self._remove_enable(t)
+        elif fault.reaction in (Reaction.STOP, Reaction.EMERGENCY):
+            if self.state == ENABLING:
+                self._remove_enable(t)
+                return
+            p, v, a = self._state_now()
+            plan = self.motion.stop(t, p, v, a, emergency=fault.reaction == Reaction.EMERGENCY,
+                                    jerk=fault.reaction == Reaction.STOP)
+            self._interpolating = False
+            self._start_profile(plan.profile, plan)
+            self._stop_positioning_monitor()
+
+    def acknowledge(self) -> Fault | None:
+        """MC_Reset (Restart = FALSE): clear alarms whose cause is gone; returns one that persists."""
+        remaining = []
+        for fault in self.alarms:
+            if fault.kind == F.CONFIG:
+                bad = self._config_fault(apply=True)
+                if bad is not None:
+                    remaining.append(bad)
+                continue
+            if fault.kind == F.DRIVE_NOT_READY and self.state == ENABLED and not self.drive.ready(self.now):
+                remaining.append(fault)
+                continue
+        self.alarms = remaining
+        return remaining[0] if remaining else None
+
+    def restart(self) -> Fault | None:
+        """MC_Reset (Restart = TRUE): reload the start values; only while disabled (§9.7, §11.1.2)."""
+        if self.power_owner is not None or self.state != DISABLED:
+            return F.reject(F.RESTART_IMPOSSIBLE, "enabled" if self.state != DISABLING else "not_disabled")
+        self.cfg = dict(self.load_cfg)
+        self.eff = dict(self.load_cfg)
+        self._dirty.clear()
+        self.alarms.clear()
+        if self.eff["Sensor[1].Type"] == 0 or self.pto:
+            self.homed = False                    # §9.7: restart resets "homed" for incremental values
+        self._apply_bank_config()
+        return None
+
+    # ------------------------------------------------------------------------------------------------
+    # configuration at runtime: effective codes of the §12.9 legends
+    def _moment_codes(self, moment: str) -> set[int]:
+        if not self.pto:
+            return {10, 1, 2, 5, 6, 7, 8} if moment == "servo" else set()
+        return {"enable": {1, 2}, "command": {5}, "jog_stop": {6}, "passive_homing": {7},
+                "active_homing": {8}, "disable": {1}}.get(moment, set())
+
+    def _apply_dirty(self, moment: str) -> Fault | None:
+        """Make written tag values effective at ``moment``; an invalid value becomes a config alarm."""
+        if not self._dirty:
+            return None
+        codes = self._moment_codes(moment)
+        due = [path for path in self._dirty if codes & set(P.SCHEMA[path].effective)]
+        if not due:
+            return None
+        candidate = dict(self.eff)
+        for path in due:
+            candidate[path] = self.cfg[path]
+        bad = self._validate(candidate, due)
+        if bad is not None:
+            self.raise_alarm(bad)
+            return bad
+        for path in due:
+            self._dirty.discard(path)
+        changed = any(candidate[p] != self.eff[p] for p in due)
+        self.eff = candidate
+        if changed:
+            self._apply_bank_config()
+            if moment == "servo":
+                self._replan()
+        return None
+
+    def _validate(self, cfg: Mapping[str, Any], paths: list[str] | None = None) -> Fault | None:
+        for path in paths if paths is not None else list(cfg):
+            param = P.SCHEMA.get(path)
+            if param is None:
+                continue
+            reason, _ = param.check(cfg[path])
+            if reason is not None:
+                return F.config_fault(path, reason, f"{path} = {cfg[path]!r}; allowed: {param.allowed()}")
+        for issue in P.rule_issues(cfg):
+            return F.config_fault(issue.path, issue.reason, issue.message())
+        return None
+
+    def _config_fault(self, apply: bool = False) -> Fault | None:
+        """Validate all tag values; with ``apply`` make them effective when valid."""
+        bad = self._validate(self.cfg)
+        if bad is None and apply and self._dirty:
+            self.eff = dict(self.cfg)
+            self._dirty.clear()
+            self._apply_bank_config()
+        return bad
+
+    def write_tag(self, path: str, value: Any, *, via_write_param: bool = False) -> None:
+        """Assign a configuration tag from the user program (direct access or MC_WriteParam)."""
+        path = P.canonical(path)
+        param = P.SCHEMA.get(path)
+        if param is None or param.access == P.P:
+            raise TagAccessError(f"{self.name}.{path} is not a writable tag of the positioning axis")
+        allowed = param.access == P.RW or (via_write_param and param.access == P.WP)
+        if not allowed:
+            raise TagAccessError(f"{self.name}.{path} is read-only in the user program (access {param.access}"
+                                 + (", write it with MC_WriteParam while the axis is disabled" if param.access == P.WP
+                                    else "") + ")")
+        reason, norm = param.check(value)
+        if reason == "type":
+            raise TypeError(f"{self.name}.{path}: {value!r} is not a {param.kind.upper()} value")
+        self.cfg[path] = norm if reason is None else (float(value) if param.kind == P.REAL else value)
+        self._dirty.add(path)
+        if not self.pto:
+            self.ctl._dirty_axes.add(self)
+
+    # ------------------------------------------------------------------------------------------------
+    # jobs
+    def check_start(self, job: Job) -> Fault | None:
+        """Conditions every motion job needs (§11.1 'Requirements', §12.8 16#82xx)."""
+        if self.state != ENABLED:
+            return F.reject(F.NOT_ENABLED)
+        if self.alarms:
+            return Fault(F.PENDING_ALARM, self.alarms[0].kind + "/" + self.alarms[0].detail, False,
+                         text=str(self.alarms[0]))
+        if len(self.busy_commands) >= self.max_commands:
+            return F.reject(F.TOO_MANY_COMMANDS)
+        if job.kind == JobKind.ABSOLUTE and not self.homed:
+            return F.reject(F.NOT_HOMED)
+        return None
+
+    def submit(self, job: Job) -> None:
+        """Start a motion job (MC_Halt, MC_MoveAbsolute, MC_MoveRelative, MC_MoveVelocity, MC_MoveJog)."""
+        fault = self.check_start(job)
+        if fault is not None:
+            job.finish(JobState.ERROR, fault)
+            return
+        t = self.now
+        if self.pto and self._apply_dirty("command") is not None:
+            job.finish(JobState.ERROR, self.alarms[-1])
+            return
+        p, v, a = self._state_now()
+        if job.kind == JobKind.RELATIVE:
+            job.target = p + job.position
+            if abs(job.target) > P.E12:
+                job.finish(JobState.ERROR, F.reject(F.REJECTED, "numeric_limit"))
+                return
+        elif job.kind == JobKind.ABSOLUTE:
+            job.target = self._absolute_target(job, p, v, a)
+        elif job.kind == JobKind.VELOCITY and job.current:
+            job.velocity = v
+        previous = self.job
+        if previous is not None and previous.busy:
+            self._finish_job(previous, JobState.ABORTED, t)
+        if job.kind == JobKind.HOME_ACTIVE and self.passive_home is not None:
+            self._finish_job(self.passive_home, JobState.ABORTED, t)
+            self.passive_home = None
+        self._stop_positioning_monitor()
+        self.job = job
+        if job.kind in POSITIONING_KINDS or job.kind == JobKind.HOME_ACTIVE:
+            self._set_position_control(True)
+        elif job.kind in (JobKind.VELOCITY, JobKind.JOG):
+            self._set_position_control(job.position_controlled)
+        self._plan_job(job, t)
+
+    def _absolute_target(self, job: Job, p: float, v: float, a: float) -> float:
+        if self.eff["Modulo.Enable"]:
+            lim = limits(self, job.velocity)
+            return modulo_target(self, job.position, job.direction, math.copysign(1.0, job.extra.get("sign", 1.0)),
+                                 p, v, a, lim, self.motion.planner)
+        return job.position
+
+    def _plan_job(self, job: Job, t: float) -> None:
+        p, v, a = self._state_now()
+        try:
+            plan = self.motion.plan(job, t, p, v, a)
+        except DirectionFault as exc:
+            self.raise_alarm(F.alarm(F.DIRECTION, exc.detail, Reaction.STOP), job=job)
+            return
+        except PlanningError as exc:
+            self.raise_alarm(F.alarm(F.INTERNAL, "planning", Reaction.EMERGENCY, str(exc)), job=job)
+            return
+        self._interpolating = True
+        self._start_profile(plan.profile, plan)
+        if self.profile.t_end <= t + _EPS_T and "end" in self._pending:
+            # nothing to move: completes in the next servo cycle like any other job
+            pass
+
+    def _set_position_control(self, on: bool) -> None:
+        if not self.servo or on == self.position_controlled:
+            return
+        self.position_controlled = on
+        self._set_loop_flags()
+
+    def _replan(self) -> None:
+        """Re-plan the running motion from the current state (parameter change, coordinate shift)."""
+        job = self.job
+        t = self.now
+        if job is not None and job.busy and job.kind in MOTION_KINDS and self._interpolating:
+            self._plan_job(job, t)
+        elif self.sw_limits_effective() and self.state in (ENABLED, DISABLING):
+            p, v, a = self._state_now()
+            if abs(v) > 1e-12:
+                plan = self.motion.stop(t, p, v, a, emergency=False, jerk=True)
+                self._start_profile(plan.profile, plan)
+
+    def release_jog(self, job: Job) -> None:
+        """Jog input released: brake with the configured deceleration (§11.1.8)."""
+        if job is not self.job or not job.busy or job.jog_released:
+            return
+        job.jog_released = True
+        job.in_velocity = False
+        if self.pto:
+            self._apply_dirty("jog_stop")
+            if not job.busy:
+                return
+        self._plan_job(job, self.now)
+
+    def change_jog_velocity(self, job: Job, velocity: float) -> None:
+        """MC_MoveJog takes a new Velocity while the jog input is TRUE (§9.3)."""
+        if job is not self.job or not job.busy or job.jog_released or velocity == job.velocity:
+            return
+        job.velocity = velocity
+        job.in_velocity = False
+        self._plan_job(job, self.now)
+
+    # ------------------------------------------------------------------------------------------------
+    # homing (§11.1.3): direct homing here; active and passive homing in homing.py
+    def home_direct(self, job: Job) -> None:
+        """Mode 0: position := Position; mode 1: position := position + Position."""
+        if self.state != ENABLED:
+            job.finish(JobState.ERROR, F.reject(F.NOT_ENABLED))
+            return
+        if self.job is not None and self.job.busy and self.job.kind == JobKind.HOME_ACTIVE:
+            job.finish(JobState.ERROR, F.reject(F.REJECTED, "homing_active"))
+            return
+        b, i = self.ctl.bank, self.index
+        ref = float(b.act_p[i]) if self.servo else float(b.sp_p[i])
+        if job.mode == 0:
+            new = self._wrap(job.position)
+            delta = new - ref
+        else:
+            delta = job.position
+            new = ref + delta
+        self._shift(delta)
+        self.homed = True
+        self.reference_mark = self._wrap(new)
+        job.reference_position = self.reference_mark
+        job.finish(JobState.DONE)
+        self._replan()
+
+    def _shift(self, delta: float) -> None:
+        """Move the coordinate system by ``delta`` (setpoint, actual value, profile, targets)."""
+        if delta == 0.0:
+            return
+        b, i = self.ctl.bank, self.index
+        for seg in self.profile.segments:
+            seg.p += delta
+        b.seg_p[i] += delta
+        b.sp_p[i] += delta
+        self.drive.set_actual(b, float(b.act_p[i]) + delta if self.servo else float(b.sp_p[i]))
+        b.pm_target[i] += delta
+        job = self.job
+        if job is not None and job.kind != JobKind.ABSOLUTE:
+            job.target += delta

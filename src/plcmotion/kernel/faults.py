@@ -1,0 +1,79 @@
+"""Faults the kernel reports, in a vocabulary of its own.
+
+The kernel says *what* went wrong (``Fault.kind`` and ``Fault.detail``) and *how the axis reacted*; each
+dialect maps that to the ErrorID/ErrorInfo codes of its manual.  Two families exist:
+
+* axis alarms (``ack=True``): stay pending on the axis until acknowledged (MC_Reset); shown at the
+  instruction that was active and at the enabling instruction (S7-1200 V6 §9.6 "with axis stop" and
+  configuration errors of the axis);
+* command rejections (``ack=False``): only the instruction that asked is told; the axis carries on.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import Enum
+
+
+class Reaction(Enum):
+    NONE = "none"                    # nothing beyond what the text of the fault says
+    STOP = "stop"                    # brake with the configured deceleration
+    EMERGENCY = "emergency"          # brake with the emergency deceleration, no jerk limit (§12.8)
+    REMOVE_ENABLE = "remove_enable"  # setpoint zero, drive enable removed, drive brakes by itself
+
+
+@dataclass(frozen=True)
+class Fault:
+    kind: str
+    detail: str = ""
+    ack: bool = False
+    reaction: Reaction = Reaction.NONE
+    text: str = ""
+
+    def __str__(self) -> str:
+        extra = f"/{self.detail}" if self.detail else ""
+        return f"{self.kind}{extra}" + (f": {self.text}" if self.text else "")
+
+
+# --- axis alarms (need acknowledgement) -------------------------------------------------------------
+DRIVE_NOT_READY = "drive_not_ready"
+SW_LIMIT_MIN = "sw_limit_min"            # details: reached, reached_emergency, exceeded
+SW_LIMIT_MAX = "sw_limit_max"
+HW_LIMIT_MIN = "hw_limit_min"
+HW_LIMIT_MAX = "hw_limit_max"
+HW_USED = "hw_used"
+DIRECTION = "direction"                  # details: not_permitted, reversal
+REFERENCE_NOT_FOUND = "reference_not_found"
+ENCODER = "encoder"
+POSITION_RANGE = "position_range"        # details: positive, negative, modulo_jump
+DRIVE_ALARM = "drive_alarm"
+FOLLOWING_ERROR = "following_error"
+HW_LIMIT_FREE = "hw_limit_free"          # details: wrong_direction, polarity, both
+POSITIONING = "positioning"              # details: not_reached, left
+SW_LIMIT_ORDER = "sw_limit_order"
+HOMING_APPROACH_ZERO = "homing_approach_zero"
+HOMING_REFERENCING_ZERO = "homing_referencing_zero"
+CONFIG = "config"                        # detail: "<tag path>:<reason>"
+INTERNAL = "internal"
+
+# --- rejections (no acknowledgement) ----------------------------------------------------------------
+NOT_ENABLED = "not_enabled"
+ALREADY_ENABLED = "already_enabled"      # another enabling instruction owns the axis
+TOO_MANY_COMMANDS = "too_many_commands"
+NOT_HOMED = "not_homed"
+REJECTED = "rejected"                    # details: homing_active, table_homing, homing_table, numeric_limit,
+#                                          starting_up, actual_invalid, position_control_required
+RESTART_IMPOSSIBLE = "restart_impossible"  # details: enabled, not_disabled
+PENDING_ALARM = "pending_alarm"          # a new command while an alarm waits for acknowledgement
+
+
+def alarm(kind: str, detail: str = "", reaction: Reaction = Reaction.NONE, text: str = "") -> Fault:
+    return Fault(kind, detail, True, reaction, text)
+
+
+def reject(kind: str, detail: str = "", text: str = "") -> Fault:
+    return Fault(kind, detail, False, Reaction.NONE, text)
+
+
+def config_fault(path: str, reason: str, text: str = "") -> Fault:
+    """Invalid configuration value discovered at runtime (§9.6: emergency stop, shown at MC_Power)."""
+    return Fault(CONFIG, f"{path}:{reason}", True, Reaction.EMERGENCY, text)

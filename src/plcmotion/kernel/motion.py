@@ -1,0 +1,242 @@
+"""Turning a job into a profile: targets, dynamics, permitted direction and software limit switches.
+
+Everything here runs when a job starts or has to be re-planned (parameter change, homing shifts the
+coordinates), never per cycle.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from . import faults as F
+from .jobs import Job, JobKind
+from .profiles import INF, Limits, Planner, Profile, ReversalRequired, first_time_at_velocity
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .axis import PositioningAxis
+
+_TOL = 1e-9
+
+
+@dataclass
+class Plan:
+    profile: Profile
+    limit_side: str | None = None        # "min" | "max" when the motion ends at a SW limit switch
+    limit_detail: str = ""               # reached | reached_emergency | exceeded
+    cross_time: float | None = None      # exceeded: when the setpoint passes the limit
+    reach_time: float | None = None      # velocity jobs: when the commanded velocity is reached
+
+
+class DirectionFault(Exception):
+    def __init__(self, detail: str):
+        super().__init__(detail)
+        self.detail = detail
+
+
+def jerk_limit(axis: "PositioningAxis") -> float:
+    """Jerk used for planning, INF when the jerk limit is disabled (S7-1200 V6 §5.4.4.4)."""
+    jerk = axis.eff["DynamicDefaults.Jerk"]
+    if axis.pto:
+        from .parameters import PTO_JERK_ENABLE, pulse_length
+        return jerk if jerk >= PTO_JERK_ENABLE * pulse_length(axis.eff) else INF
+    from .parameters import SERVO_JERK_ENABLE
+    return jerk if jerk > SERVO_JERK_ENABLE else INF
+
+
+def limits(axis: "PositioningAxis", velocity: float | None = None, *, emergency: bool = False,
+           jerk: bool = True) -> Limits:
+    e = axis.eff
+    vmax = e["DynamicLimits.MaxVelocity"] if velocity is None else min(abs(velocity), e["DynamicLimits.MaxVelocity"])
+    dec = e["DynamicDefaults.EmergencyDeceleration"] if emergency else e["DynamicDefaults.Deceleration"]
+    return Limits(velocity=vmax, acceleration=e["DynamicDefaults.Acceleration"], deceleration=dec,
+                  jerk=jerk_limit(axis) if jerk else INF,
+                  start_stop=e["DynamicLimits.MinVelocity"] if axis.pto else 0.0)
+
+
+def wrap(value: float, start: float, length: float) -> float:
+    """Value in the modulo range [start, start + length)."""
+    r = math.fmod(value - start, length)
+    if r < 0:
+        r += length
+    if r >= length:  # fmod rounding at the upper edge
+        r = 0.0
+    return start + r
+
+
+def modulo_target(axis: "PositioningAxis", position: float, direction: int, velocity_sign: float,
+                  p: float, v: float, a: float, lim: Limits, planner: Planner) -> float:
+    """Unwrapped target of MC_MoveAbsolute on a modulo axis (S7-1200 V6 §11.1.5, §5.4.4.2).
+
+    ``direction``: 0 sign of the velocity, 1 positive, 2 negative, 3 shortest distance.  While the axis
+    already moves in the requested direction the target is never placed behind its stop point, so that
+    it is approached without reversing.
+    """
+    start, length = axis.eff["Modulo.StartValue"], axis.eff["Modulo.Length"]
+    goal = wrap(position, start, length)
+    here = wrap(p, start, length)
+    ahead = math.fmod(goal - here, length)
+    if ahead < 0:
+        ahead += length
+    if direction == 0:
+        direction = 1 if velocity_sign >= 0 else 2
+    if direction == 1:
+        d = ahead
+        if v > 0:
+            ref = planner.stop_position(p, v, a, lim)
+            while p + d < ref - _TOL:
+                d += length
+        return p + d
+    if direction == 2:
+        d = -math.fmod(length - ahead, length) if ahead else 0.0
+        if v < 0:
+            ref = planner.stop_position(p, v, a, lim)
+            while p + d > ref + _TOL:
+                d -= length
+        return p + d
+    return p + (ahead if ahead <= length / 2 else ahead - length)
+
+
+def _extremes(profile: Profile) -> tuple[float, float]:
+    ps = [s.p for s in profile.segments]
+    return min(ps), max(ps)
+
+
+class MotionPlanner:
+    """Plans the jobs of one axis."""
+
+    def __init__(self, axis: "PositioningAxis"):
+        self.axis = axis
+        self.planner = Planner()
+
+    # --- direction permitted by Actor.DirectionMode (PTO, §5.4.4.1) -------------------------------------
+    def _permitted(self, sign: float) -> bool:
+        mode = self.axis.eff["Actor.DirectionMode"] if self.axis.pto else 0
+        return mode == 0 or (mode == 1 and sign > 0) or (mode == 2 and sign < 0)
+
+    def _check_direction(self, profile: Profile, p: float) -> None:
+        lo, hi = _extremes(profile)
+        going_up = hi > p + _TOL or profile.final.v > 0
+        going_down = lo < p - _TOL or profile.final.v < 0
+        if going_up and not self._permitted(1.0) or going_down and not self._permitted(-1.0):
+            if going_up and going_down:
+                raise DirectionFault("reversal")
+            raise DirectionFault("not_permitted")
+
+    # --- job plans --------------------------------------------------------------------------------------
+    def plan(self, job: Job, t: float, p: float, v: float, a: float) -> Plan:
+        ax = self.axis
+        kind = job.kind
+        pl = self.planner
+        if kind in (JobKind.ABSOLUTE, JobKind.RELATIVE):
+            lim = limits(ax, job.velocity)
+            target = job.target
+            try:
+                profile = pl.position(t, p, v, a, target, lim, allow_reverse=self._permitted(-1) and self._permitted(1))
+            except ReversalRequired:
+                raise DirectionFault("reversal") from None
+            self._check_direction(profile, p)
+            return self._guard(Plan(profile), t, p, v, a, lim, cruise=abs(job.velocity))
+        if kind in (JobKind.VELOCITY, JobKind.JOG):
+            target_v = 0.0 if job.jog_released else job.velocity
+            lim = limits(ax, None)
+            profile = pl.velocity(t, p, v, a, target_v, lim)
+            if target_v != 0.0:
+                self._check_direction(profile, p)
+            plan = self._guard(Plan(profile, reach_time=profile.t_end), t, p, v, a, lim, cruise=abs(target_v))
+            return plan
+        if kind == JobKind.HALT:
+            lim = limits(ax, None)
+            return self._guard(Plan(pl.stop(t, p, v, a, lim)), t, p, v, a, lim, cruise=abs(v))
+        raise ValueError(f"no motion plan for {kind}")
+
+    def stop(self, t: float, p: float, v: float, a: float, *, emergency: bool, jerk: bool) -> Plan:
+        """Internal stop (error reaction, disabling)."""
+        ax = self.axis
+        if emergency and not jerk:
+            dec = ax.eff["DynamicDefaults.EmergencyDeceleration"]
+            vss = ax.eff["DynamicLimits.MinVelocity"] if ax.pto else 0.0
+            profile = _ramp_stop(t, p, v, dec, vss)
+            lim = limits(ax, None, emergency=True, jerk=False)
+        else:
+            lim = limits(ax, None, emergency=emergency, jerk=jerk)
+            profile = self.planner.stop(t, p, v, a, lim)
+        return self._guard(Plan(profile), t, p, v, a, lim, cruise=abs(v))
+
+    def ramp_out(self, t: float, p: float, v: float, duration: float) -> Plan:
+        """Linear velocity ramp to zero in ``duration`` (PTO immediate stop, §11.1.1)."""
+        if abs(v) <= 1e-12 or duration <= 0:
+            return Plan(Planner.hold(t, p))
+        return Plan(Planner.ramp_stop(t, p, v, abs(v) / duration))
+
+    # --- software limit switches (§2.3, §5.4.4.3, §12.4) -------------------------------------------
+    def _guard(self, plan: Plan, t: float, p: float, v: float, a: float, lim: Limits, cruise: float) -> Plan:
+        ax = self.axis
+        if not ax.sw_limits_effective():
+            return plan
+        lo_lim = ax.eff["PositionLimits_SW.MinPosition"]
+        hi_lim = ax.eff["PositionLimits_SW.MaxPosition"]
+        profile = plan.profile
+        side = None
+        for seg in profile.segments:          # the limit met first in time decides
+            if seg.p > hi_lim + _TOL:
+                side = "max"
+                break
+            if seg.p < lo_lim - _TOL:
+                side = "min"
+                break
+        if side is None:
+            fv = profile.final.v
+            side = "max" if fv > 0 else "min" if fv < 0 else None
+        if side is None:
+            return plan
+        sign = 1.0 if side == "max" else -1.0
+        limit = hi_lim if side == "max" else lo_lim
+        pl = self.planner
+        # already at or beyond the limit and the motion heads further
+        if (p - limit) * sign > _TOL:
+            return Plan(_ramp_stop(t, p, v if v * sign > 0 else 0.0, ax.eff["DynamicDefaults.EmergencyDeceleration"],
+                                   lim.start_stop), side, "exceeded", cross_time=t)
+        moving_out = v * sign > 1e-12
+        if moving_out:
+            stop = pl.stop_position(p, v, a, limits(ax, None))
+        else:
+            stop = p
+        if (stop - limit) * sign <= _TOL:
+            speed = max(min(cruise, ax.eff["DynamicLimits.MaxVelocity"]), lim.start_stop, 1e-12)
+            lim2 = limits(ax, speed)
+            try:
+                profile = pl.position(t, p, v, a, limit, lim2)
+            except ReversalRequired:  # pragma: no cover - position() reverses when allowed
+                raise DirectionFault("reversal") from None
+            reach = first_time_at_velocity(profile, sign * speed) if plan.reach_time is not None else None
+            return Plan(profile, side, "reached", reach_time=reach)
+        # the configured deceleration is not enough any more (§12.4): emergency deceleration without jerk
+        emerg = ax.eff["DynamicDefaults.EmergencyDeceleration"]
+        need = v * v / (2 * emerg)
+        if need <= abs(limit - p) + _TOL:
+            return Plan(Planner.ramp_stop_at(t, p, v, emerg, limit), side, "reached_emergency")
+        profile = _ramp_stop(t, p, v, emerg, lim.start_stop)
+        # time at which the setpoint passes the limit: p + v*tau - sign*emerg*tau^2/2 = limit
+        d = abs(limit - p)
+        disc = v * v - 2 * emerg * d
+        tau = (abs(v) - math.sqrt(max(disc, 0.0))) / emerg
+        return Plan(profile, side, "exceeded", cross_time=t + tau)
+
+
+def _ramp_stop(t: float, p: float, v: float, dec: float, vss: float) -> Profile:
+    """Emergency ramp without jerk; a stepper ramps to its start/stop velocity and then stops."""
+    if vss and abs(v) > vss:
+        prof = Planner.ramp_stop(t, p, v, dec)
+        # stop at the start/stop velocity instead of zero
+        seg = prof.segments[0]
+        dur = (abs(v) - vss) / dec
+        end_p = seg.p + v * dur + seg.a * dur * dur / 2
+        prof.segments[-1].t = t + dur
+        prof.segments[-1].p = end_p
+        prof.t_end = t + dur
+        prof.milestones["reached"] = t + dur
+        return prof
+    if vss:
+        return Planner.hold(t, p)
+    return Planner.ramp_stop(t, p, v, dec)

@@ -1,0 +1,368 @@
+"""Configuration schema of the positioning axis technology object.
+
+Every configurable tag of the axis is declared here once, by the path the technology data block uses
+(S7-1200 Motion Control V6 §12.9), with its data type, start value, access right, the moments at which a
+change takes effect (effective codes of the §12.9 legends) and its admissible range.  The project loader,
+``Controller.add_positioning_axis``, direct tag writes and MC_WriteParam all validate against this table.
+
+Ranges come from the configuration dialogs (§5.4) and, where V6 prints none, from the V7 manual's tables.
+``Plant.*`` entries are not tags of the technology object: they describe the simulated machine (drive
+dynamics, pulse output hardware) and are only set by configuration.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any, Iterable, Mapping
+
+BOOL, INT, REAL = "bool", "int", "real"
+
+#: access rights (§12.9 legend): R read, RW read/write, WP write with MC_WriteParam while disabled,
+#: P plant/simulation parameter (configuration only)
+R, RW, WP, P = "R", "RW", "WP", "P"
+
+
+@dataclass(frozen=True)
+class Param:
+    path: str
+    kind: str
+    start: Any
+    access: str = R
+    effective: tuple[int, ...] = ()
+    lo: float | None = None
+    hi: float | None = None
+    lo_open: bool = False           # lo itself is not allowed
+    choices: tuple | None = None
+    doc: str = ""
+
+    def check(self, value: Any) -> tuple[str, Any] | None:
+        """Return ``(reason, normalised)``: reason None when valid.
+
+        Reasons: ``type`` (wrong data type), ``format`` (NaN/inf), ``too_low``, ``too_high``,
+        ``selection`` (not one of the allowed values).
+        """
+        if self.kind == BOOL:
+            if isinstance(value, bool):
+                return None, value
+            if isinstance(value, int) and value in (0, 1):
+                return None, bool(value)
+            return "type", value
+        if self.kind == INT:
+            if isinstance(value, bool) or not isinstance(value, (int, float)):
+                return "type", value
+            if isinstance(value, float):
+                if not math.isfinite(value) or value != int(value):
+                    return "type", value
+                value = int(value)
+        else:  # REAL
+            if isinstance(value, bool) or not isinstance(value, (int, float)):
+                try:  # numpy scalars
+                    value = float(value)  # type: ignore[arg-type]
+                except (TypeError, ValueError):
+                    return "type", value
+            value = float(value)
+            if not math.isfinite(value):
+                return "format", value
+        if self.choices is not None and value not in self.choices:
+            return "selection", value
+        if self.lo is not None and (value < self.lo or (self.lo_open and value == self.lo)):
+            return "too_low", value
+        if self.hi is not None and value > self.hi:
+            return "too_high", value
+        return None, value
+
+    def allowed(self) -> str:
+        """Human-readable admissible range, used in configuration error messages."""
+        if self.kind == BOOL:
+            return "true or false"
+        if self.choices is not None:
+            return "one of " + ", ".join(str(c) for c in self.choices)
+        lo = "-inf" if self.lo is None else repr(self.lo)
+        hi = "+inf" if self.hi is None else repr(self.hi)
+        left = "(" if self.lo_open else "["
+        return f"{'integer' if self.kind == INT else 'real'} in {left}{lo}, {hi}]"
+
+
+E12 = 1.0e12
+_S = "Sensor[1]"
+
+# fmt: off
+_PARAMS: list[Param] = [
+    # --- Actor (drive) §12.9.5 -------------------------------------------------------------------
+    Param("Actor.Type", INT, 2, R, (), choices=(0, 1, 2), doc="0 analog output, 1 PROFIdrive, 2 PTO"),
+    Param("Actor.InverseDirection", BOOL, False, WP, (2,)),
+    Param("Actor.DirectionMode", INT, 0, WP, (2,), choices=(0, 1, 2),
+          doc="permitted direction (PTO): 0 both, 1 positive, 2 negative"),
+    Param("Actor.DataAdaption", INT, 0, R, (), choices=(0, 1)),
+    Param("Actor.DriveParameter.ReferenceSpeed", REAL, 3000.0, R, (), 0.0, E12, lo_open=True,
+          doc="motor speed [1/min] that corresponds to 100 % of the speed setpoint"),
+    Param("Actor.DriveParameter.MaxSpeed", REAL, 3000.0, R, (), 0.0, E12, lo_open=True,
+          doc="maximum motor speed [1/min]; <= 2 x ReferenceSpeed (PROFIdrive), <= 1.17 x (analog)"),
+    Param("Actor.DriveParameter.PulsesPerDriveRevolution", INT, 1000, WP, (2,), 1, 2147483647),
+    # --- Sensor[1] §12.9.6 --------------------------------------------------------------------------
+    Param(f"{_S}.Type", INT, 0, R, (), choices=(0, 1), doc="0 incremental, 1 absolute"),
+    Param(f"{_S}.InverseDirection", BOOL, False, R),
+    Param(f"{_S}.System", INT, 1, R, (), choices=(0, 1), doc="0 linear, 1 rotary (§12.9.6.1)"),
+    Param(f"{_S}.MountingMode", INT, 0, R, (), choices=(0, 2), doc="0 motor shaft, 2 external"),
+    Param(f"{_S}.DataAdaption", INT, 0, R, (), choices=(0, 1)),
+    Param(f"{_S}.Interface.Type", INT, 4, R, (), choices=(0, 1, 2, 4),
+          doc="0 PROFIdrive encoder, 1 technology module, 2 encoder on drive, 4 HSC"),
+    Param(f"{_S}.Interface.Number", INT, 1, R, (), 1, 2),
+    Param(f"{_S}.Parameter.Resolution", REAL, 0.001, R, (), 0.0, E12, lo_open=True,
+          doc="linear encoder: distance between two increments"),
+    Param(f"{_S}.Parameter.StepsPerRevolution", INT, 2048, R, (), 1, 8388608),
+    Param(f"{_S}.Parameter.FineResolutionXist1", INT, 11, R, (), 0, 31),
+    Param(f"{_S}.Parameter.FineResolutionXist2", INT, 9, R, (), 0, 31),
+    Param(f"{_S}.Parameter.DeterminableRevolutions", INT, 1, R, (), 0, 8388608),
+    Param(f"{_S}.Parameter.DistancePerRevolution", REAL, 100.0, R, (), 0.0, E12, lo_open=True),
+    Param(f"{_S}.ActiveHoming.Mode", INT, 2, WP, (2,), choices=(0, 1, 2)),
+    Param(f"{_S}.ActiveHoming.SideInput", BOOL, False, RW, (1, 8, 10)),
+    Param(f"{_S}.ActiveHoming.HomePositionOffset", REAL, 0.0, RW, (1, 8, 10), -E12, E12),
+    Param(f"{_S}.ActiveHoming.SwitchLevel", BOOL, True, RW, (1, 8, 10)),
+    Param(f"{_S}.PassiveHoming.Mode", INT, 2, WP, (2,), choices=(0, 1, 2)),
+    Param(f"{_S}.PassiveHoming.SideInput", BOOL, False, RW, (1, 7, 10)),
+    Param(f"{_S}.PassiveHoming.SwitchLevel", BOOL, True, RW, (1, 7, 10)),
+    # --- Units, mechanics, modulo §12.9.7-§12.9.9 ---------------------------------------------------
+    Param("Units.LengthUnit", INT, 1013, WP, (2,), choices=(-1, 1005, 1010, 1013, 1018, 1019),
+          doc="-1 pulse, 1005 degree, 1010 m, 1013 mm, 1018 ft, 1019 in"),
+    Param("Mechanics.LeadScrew", REAL, 10.0, WP, (2,), 0.0, E12, lo_open=True,
+          doc="load distance per motor revolution"),
+    Param("Modulo.Enable", BOOL, False, R),
+    Param("Modulo.Length", REAL, 360.0, R, (), 0.001, E12),
+    Param("Modulo.StartValue", REAL, 0.0, R, (), -E12, E12),
+    # --- Dynamics §12.9.10, §12.9.11 ----------------------------------------------------------------
+    Param("DynamicLimits.MaxVelocity", REAL, 250.0, WP, (2,), 0.0, E12, lo_open=True),
+    Param("DynamicLimits.MinVelocity", REAL, 10.0, WP, (2,), 0.0, E12,
+          doc="start/stop velocity (PTO only; fixed at 0 for PROFIdrive/analog)"),
+    Param("DynamicDefaults.Acceleration", REAL, 48.0, RW, (1, 5, 6, 10), 0.0, E12, lo_open=True),
+    Param("DynamicDefaults.Deceleration", REAL, 48.0, RW, (1, 5, 6, 10), 0.0, E12, lo_open=True),
+    Param("DynamicDefaults.EmergencyDeceleration", REAL, 120.0, RW, (1, 5, 6, 10), 0.0, E12, lo_open=True),
+    Param("DynamicDefaults.Jerk", REAL, 192.0, RW, (1, 5, 10), 0.0, E12,
+          doc="0 (PTO: below 0.004 pulses/s^3) disables the jerk limit"),
+    # --- Position limits §12.9.12, §12.9.13 ---------------------------------------------------------
+    Param("PositionLimits_SW.Active", BOOL, False, RW, (1, 5, 6, 10)),
+    Param("PositionLimits_SW.MinPosition", REAL, -10000.0, RW, (1, 5, 6, 10), -E12, E12),
+    Param("PositionLimits_SW.MaxPosition", REAL, 10000.0, RW, (1, 5, 6, 10), -E12, E12),
+    Param("PositionLimits_HW.Active", BOOL, False, RW, (1, 5, 6, 10)),
+    Param("PositionLimits_HW.MinSwitchLevel", BOOL, False, WP, (2,)),
+    Param("PositionLimits_HW.MaxSwitchLevel", BOOL, False, WP, (2,)),
+    # --- Homing §12.9.14 ----------------------------------------------------------------------------
+    Param("Homing.AutoReversal", BOOL, False, RW, (1, 8, 10)),
+    Param("Homing.ApproachDirection", BOOL, True, RW, (1, 8, 10)),
+    Param("Homing.ApproachVelocity", REAL, 200.0, RW, (1, 8, 10), 0.0, E12),
+    Param("Homing.ReferencingVelocity", REAL, 40.0, RW, (1, 8, 10), 0.0, E12),
+    # --- Closed loop and monitoring §12.9.15-§12.9.18 -----------------------------------------------
+    Param("PositionControl.Kv", REAL, 10.0, WP, (10,), 0.0, 2147480.0, lo_open=True),
+    Param("PositionControl.Kpc", REAL, 100.0, WP, (10,), 0.0, 150.0),
+    Param("FollowingError.EnableMonitoring", BOOL, True, R),
+    Param("FollowingError.MinValue", REAL, 10.0, WP, (10,), 0.0, E12),
+    Param("FollowingError.MaxValue", REAL, 100.0, WP, (10,), 0.0, E12),
+    Param("FollowingError.MinVelocity", REAL, 10.0, WP, (10,), 0.0, E12),
+    Param("PositioningMonitoring.ToleranceTime", REAL, 1.0, WP, (10,), 0.0, E12),
+    Param("PositioningMonitoring.MinDwellTime", REAL, 0.1, WP, (10,), 0.0, E12),
+    Param("PositioningMonitoring.Window", REAL, 1.0, WP, (10,), 0.001, E12),
+    Param("StandstillSignal.VelocityThreshold", REAL, 5.0, WP, (10,), 0.0, E12),
+    Param("StandstillSignal.MinDwellTime", REAL, 0.01, WP, (10,), 0.0, E12),
+    Param("Simulation.Mode", INT, 0, WP, (2, 9), choices=(0, 1)),
+    # --- Simulated plant (not tags of the technology object) ----------------------------------------
+    Param("Plant.SpeedTimeConstant", REAL, 0.002, P, (), 0.0, 10.0,
+          doc="first-order time constant [s] of the simulated drive's closed speed loop"),
+    Param("Plant.ReadyDelay", REAL, 0.0, P, (), 0.0, 60.0,
+          doc="time [s] the simulated drive needs from enable until it reports 'Drive ready'"),
+    Param("Plant.OffRampTime", REAL, 0.1, P, (), 0.0, 600.0,
+          doc="time [s] the simulated drive ramps from maximum speed to zero when its enable is removed"),
+    Param("Plant.PTOLimitFrequency", REAL, 100000.0, P, (), choices=(20000.0, 100000.0, 200000.0, 1000000.0),
+          doc="limit frequency [Hz] of the pulse output (§2.1.1: 20 kHz, 100 kHz, 200 kHz or 1 MHz)"),
+    Param("Plant.InitialPosition", REAL, 0.0, P, (), -E12, E12,
+          doc="load position [user unit] of the simulated mechanics at controller start"),
+]
+# fmt: on
+
+SCHEMA: dict[str, Param] = {p.path: p for p in _PARAMS}
+
+# Alternative spellings found in the manuals (catalog §11 item 8, §7.15) mapped to the canonical path.
+_PREFIX_ALIASES = (
+    ("Sensor.Sensor[1].", "Sensor[1]."),
+    ("PositionMonitoring.", "PositioningMonitoring."),
+    ("PositionLimitsSW.", "PositionLimits_SW."),
+    ("PositionLimitsHW.", "PositionLimits_HW."),
+    ("StandStillSignal.", "StandstillSignal."),
+)
+_WORD_ALIASES = {"SidelInput": "SideInput"}
+
+
+def canonical(path: str) -> str:
+    """Canonical tag path for any of the spellings the manuals use."""
+    for old, new in _PREFIX_ALIASES:
+        if path.startswith(old):
+            path = new + path[len(old):]
+            break
+    if "SidelInput" in path:
+        path = path.replace("SidelInput", _WORD_ALIASES["SidelInput"])
+    return path
+
+
+def flatten(tree: Mapping[str, Any], prefix: str = "") -> dict[str, Any]:
+    """Flatten nested dicts keyed by tag path components into ``{"A.B.C": value}``."""
+    flat: dict[str, Any] = {}
+    for key, value in tree.items():
+        path = f"{prefix}.{key}" if prefix else str(key)
+        if isinstance(value, Mapping):
+            flat.update(flatten(value, path))
+        else:
+            flat[path] = value
+    return flat
+
+
+@dataclass(frozen=True)
+class Issue:
+    """One configuration problem: which tag, why, which value, what is allowed."""
+
+    path: str
+    reason: str            # type | format | too_low | too_high | selection | unknown | rule:<name>
+    value: Any
+    allowed: str
+
+    def message(self) -> str:
+        if self.reason == "unknown":
+            return f"{self.path}: unknown parameter (value {self.value!r}); {self.allowed}"
+        return f"{self.path} = {self.value!r}: {self.allowed}"
+
+
+def _suggest(path: str) -> str:
+    import difflib
+
+    near = difflib.get_close_matches(path, SCHEMA.keys(), n=3, cutoff=0.6)
+    return "did you mean " + " or ".join(near) + "?" if near else "not a tag of the positioning axis"
+
+
+def defaults() -> dict[str, Any]:
+    return {p.path: p.start for p in _PARAMS}
+
+
+def check_values(values: Mapping[str, Any]) -> tuple[dict[str, Any], list[Issue]]:
+    """Normalise and check single values; returns (normalised values, issues)."""
+    out: dict[str, Any] = {}
+    issues: list[Issue] = []
+    for raw_path, value in values.items():
+        path = canonical(raw_path)
+        param = SCHEMA.get(path)
+        if param is None:
+            issues.append(Issue(raw_path, "unknown", value, _suggest(path)))
+            continue
+        reason, norm = param.check(value)
+        if reason is not None:
+            issues.append(Issue(path, reason, value, "allowed: " + param.allowed()))
+        else:
+            out[path] = norm
+    return out, issues
+
+
+# Conversion to pulses for the PTO limits of §2.1.1 (limits are given in pulses/s, pulses/s^2, pulses/s^3).
+PTO_MIN_FREQUENCY = 1.0
+PTO_ACCEL_LIMITS = (5.0e-3, 9.5e9)
+PTO_JERK_LIMITS = (4.0e-3, 1.0e10)
+PTO_JERK_ENABLE = 4.0e-3          # §5.4.4.4: jerk below this value (pulses/s^3) disables the jerk limit
+SERVO_JERK_ENABLE = 1.0e-9        # §5.4.4.4: position-controlled axes: jerk > 1e-9 enables the jerk limit
+ANALOG_OVERDRIVE = 1.17           # §5.4.3.2: +-117 % on an analog output
+PROFIDRIVE_OVERDRIVE = 2.0        # §5.4.3.2: +-200 % on the bus
+
+
+def pulse_length(cfg: Mapping[str, Any]) -> float:
+    """Load distance of one pulse of a PTO axis [user unit]."""
+    return cfg["Mechanics.LeadScrew"] / cfg["Actor.DriveParameter.PulsesPerDriveRevolution"]
+
+
+def rule_issues(cfg: Mapping[str, Any]) -> list[Issue]:
+    """Checks that involve more than one tag (valid single values assumed)."""
+    issues: list[Issue] = []
+    pto = cfg["Actor.Type"] == 2
+    vmax = cfg["DynamicLimits.MaxVelocity"]
+    vmin = cfg["DynamicLimits.MinVelocity"]
+
+    def add(path: str, rule: str, allowed: str) -> None:
+        issues.append(Issue(path, "rule:" + rule, cfg[path], allowed))
+
+    if pto:
+        pulse = pulse_length(cfg)
+        f_lim = cfg["Plant.PTOLimitFrequency"]
+        for path in ("DynamicLimits.MaxVelocity", "DynamicLimits.MinVelocity"):
+            f = cfg[path] / pulse
+            if f > f_lim * (1 + 1e-12):
+                add(path, "above_hw_limit", f"at most {f_lim:g} pulses/s = {f_lim * pulse:g} user units/s "
+                                            f"with this pulse output")
+            elif f < PTO_MIN_FREQUENCY * (1 - 1e-12):
+                add(path, "below_hw_limit", f"at least {PTO_MIN_FREQUENCY:g} pulse/s = {pulse:g} user units/s")
+        lo, hi = PTO_ACCEL_LIMITS
+        for path in ("DynamicDefaults.Acceleration", "DynamicDefaults.Deceleration",
+                     "DynamicDefaults.EmergencyDeceleration"):
+            a = cfg[path] / pulse
+            if a > hi:
+                add(path, "above_hw_limit", f"at most {hi:g} pulses/s^2 = {hi * pulse:g} user units/s^2")
+            elif a < lo:
+                add(path, "below_hw_limit", f"at least {lo:g} pulses/s^2 = {lo * pulse:g} user units/s^2")
+        j = cfg["DynamicDefaults.Jerk"] / pulse
+        if j >= PTO_JERK_ENABLE and j > PTO_JERK_LIMITS[1]:
+            add("DynamicDefaults.Jerk", "above_max_jerk",
+                f"at most {PTO_JERK_LIMITS[1]:g} pulses/s^3 = {PTO_JERK_LIMITS[1] * pulse:g} user units/s^3")
+        if cfg["Modulo.Enable"]:
+            add("Modulo.Enable", "pto_modulo", "modulo is only available with PROFIdrive/analog drives (§5.4.4.2)")
+        if cfg["Simulation.Mode"] == 1:
+            add("Simulation.Mode", "pto_simulation", "simulation is not supported for PTO axes (16#8647)")
+    else:
+        if cfg["DynamicDefaults.Jerk"] > E12:
+            add("DynamicDefaults.Jerk", "above_max_jerk", f"at most {E12:g}")
+        ref = cfg["Actor.DriveParameter.ReferenceSpeed"]
+        nmax = cfg["Actor.DriveParameter.MaxSpeed"]
+        factor = PROFIDRIVE_OVERDRIVE if cfg["Actor.Type"] == 1 else ANALOG_OVERDRIVE
+        if nmax > factor * ref * (1 + 1e-12):
+            add("Actor.DriveParameter.MaxSpeed", "above_reference",
+                f"at most {factor:g} x ReferenceSpeed = {factor * ref:g} 1/min")
+        # §12.8 16#8645: the configured maximum velocity must be reachable with MaxSpeed
+        if vmax > max_load_velocity(cfg) * (1 + 1e-9):
+            add("DynamicLimits.MaxVelocity", "unreachable",
+                f"at most {max_load_velocity(cfg):g} user units/s with MaxSpeed "
+                f"{nmax:g} 1/min and {cfg['Mechanics.LeadScrew']:g} user units per motor revolution")
+    if vmin > vmax:
+        add("DynamicLimits.MinVelocity", "min_above_max", f"at most DynamicLimits.MaxVelocity = {vmax:g}")
+    if (not cfg["Modulo.Enable"]
+            and cfg["PositionLimits_SW.MinPosition"] > cfg["PositionLimits_SW.MaxPosition"]):
+        add("PositionLimits_SW.MinPosition", "low_above_high",
+            f"at most PositionLimits_SW.MaxPosition = {cfg['PositionLimits_SW.MaxPosition']:g}")
+    return issues
+
+
+def max_load_velocity(cfg: Mapping[str, Any]) -> float:
+    """Load velocity [user unit/s] at the drive's maximum speed (PROFIdrive/analog)."""
+    return cfg["Actor.DriveParameter.MaxSpeed"] / 60.0 * cfg["Mechanics.LeadScrew"]
+
+
+def validate(values: Mapping[str, Any], base: Mapping[str, Any] | None = None) -> tuple[dict[str, Any], list[Issue]]:
+    """Merge ``values`` over ``base`` (default: start values), check all, return (config, issues)."""
+    cfg = dict(defaults() if base is None else base)
+    norm, issues = check_values(values)
+    cfg.update(norm)
+    if not any(i.path in ("Actor.Type",) for i in issues):
+        if cfg["Actor.Type"] != 2 and "DynamicLimits.MinVelocity" not in norm:
+            cfg["DynamicLimits.MinVelocity"] = 0.0       # §5.4.4.4: fixed at zero for PROFIdrive/analog
+        bad = {i.path for i in issues}
+        if not bad & {"Mechanics.LeadScrew", "Actor.DriveParameter.PulsesPerDriveRevolution",
+                      "DynamicLimits.MaxVelocity", "DynamicLimits.MinVelocity", "Actor.DriveParameter.MaxSpeed",
+                      "Actor.DriveParameter.ReferenceSpeed"}:
+            issues.extend(i for i in rule_issues(cfg) if i.path not in bad)
+    if cfg["Actor.Type"] != 2 and cfg["DynamicLimits.MinVelocity"] != 0.0:
+        issues.append(Issue("DynamicLimits.MinVelocity", "rule:servo_min_velocity", cfg["DynamicLimits.MinVelocity"],
+                            "fixed at 0.0 for PROFIdrive/analog drives (§5.4.4.4)"))
+    return cfg, issues
+
+
+def groups(paths: Iterable[str]) -> dict[str, Any]:
+    """Nested dict of path components (used to build attribute views)."""
+    tree: dict[str, Any] = {}
+    for path in paths:
+        node = tree
+        parts = path.split(".")
+        for part in parts[:-1]:
+            node = node.setdefault(part, {})
+        node[parts[-1]] = path
+    return tree

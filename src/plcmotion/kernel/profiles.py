@@ -1,0 +1,285 @@
+"""Motion profiles: planned once per command or parameter change, evaluated every servo cycle.
+
+A profile is a list of segments of constant jerk (piecewise cubic position).  Jerk-limited segments come
+from ruckig's time-optimal solution from the current position, velocity and acceleration; with the jerk
+limit disabled ruckig is asked for the acceleration-limited (trapezoidal) solution (``max_jerk = inf``).
+
+Acceleration and deceleration limits of a PLC axis refer to the magnitude of the velocity (speeding up /
+slowing down), not to the sign of the acceleration.  ruckig has one signed pair of limits, so a motion that
+changes direction is planned in two stages: brake to standstill with the deceleration, then travel the rest
+in the other direction with the acceleration.  Within one direction the signed limits map exactly.
+
+Stepper (PTO) profiles start and end with a velocity step between 0 and the start/stop velocity
+(S7-1200 V6 §5.4.4.4, §12.6): the ramp is planned from and to the start/stop velocity.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import ruckig
+
+INF = math.inf
+_EPS_V = 1e-9
+
+
+class PlanningError(RuntimeError):
+    """The trajectory generator could not produce a profile for the requested motion."""
+
+
+@dataclass(slots=True)
+class Segment:
+    t: float        # absolute start time
+    p: float
+    v: float
+    a: float
+    j: float
+
+    def at(self, t: float) -> tuple[float, float, float]:
+        tau = t - self.t
+        return (self.p + tau * (self.v + tau * (self.a / 2 + tau * self.j / 6)),
+                self.v + tau * (self.a + tau * self.j / 2),
+                self.a + tau * self.j)
+
+
+@dataclass(slots=True)
+class Profile:
+    """Segments in time order; the last segment lasts forever (hold or constant velocity)."""
+
+    segments: list[Segment]
+    t_end: float                      # end of the motion part (start of the final segment)
+    milestones: dict[str, float] = field(default_factory=dict)
+
+    @property
+    def final(self) -> Segment:
+        return self.segments[-1]
+
+    def end_of(self, index: int) -> float:
+        return self.segments[index + 1].t if index + 1 < len(self.segments) else INF
+
+    def at(self, t: float) -> tuple[float, float, float]:
+        seg = self.segments[0]
+        for s in self.segments:
+            if s.t > t:
+                break
+            seg = s
+        return seg.at(t)
+
+    @property
+    def duration(self) -> float:
+        return self.t_end - self.segments[0].t
+
+
+@dataclass(slots=True)
+class Limits:
+    """Dynamics a motion is planned with (user units)."""
+
+    velocity: float
+    acceleration: float
+    deceleration: float
+    jerk: float = INF               # INF: jerk limit disabled (trapezoid)
+    start_stop: float = 0.0         # PTO start/stop velocity
+
+
+class _Builder:
+    """Collects segments back to back starting at ``t``."""
+
+    def __init__(self, t: float, p: float, v: float, a: float):
+        self.t, self.p, self.v, self.a = t, p, v, a
+        self.segments: list[Segment] = []
+
+    def add(self, duration: float, p: float, v: float, a: float, j: float) -> None:
+        if duration <= 0.0:
+            return
+        self.segments.append(Segment(self.t, p, v, a, j))
+        self.t += duration
+        tau = duration
+        self.p = p + tau * (v + tau * (a / 2 + tau * j / 6))
+        self.v = v + tau * (a + tau * j / 2)
+        self.a = a + tau * j
+
+    def jump(self, v: float) -> None:
+        """Velocity step (stepper start/stop velocity); takes no time."""
+        self.v, self.a = v, 0.0
+
+    def finish(self, p: float, v: float, milestones: dict[str, float] | None = None) -> Profile:
+        t_end = self.t
+        self.segments.append(Segment(t_end, p, v, 0.0, 0.0))
+        return Profile(self.segments, t_end, milestones or {})
+
+
+class Planner:
+    """Reusable ruckig instance (one degree of freedom)."""
+
+    def __init__(self) -> None:
+        self._otg = ruckig.Ruckig(1)
+        self._inp = ruckig.InputParameter(1)
+        self._traj = ruckig.Trajectory(1)
+
+    # --- ruckig -------------------------------------------------------------------------------------
+    def _solve(self, b: _Builder, *, target_p: float | None, target_v: float, vmax: float,
+               amax: float, amin: float, jerk: float) -> None:
+        """Append the time-optimal segments from the builder's state to the target."""
+        inp = self._inp
+        inp.current_position = [b.p]
+        inp.current_velocity = [b.v]
+        inp.current_acceleration = [b.a if jerk < INF else 0.0]
+        inp.target_velocity = [target_v]
+        inp.target_acceleration = [0.0]
+        inp.max_acceleration = [amax]
+        inp.min_acceleration = [amin]
+        inp.max_jerk = [jerk]
+        if target_p is None:
+            inp.control_interface = ruckig.ControlInterface.Velocity
+            inp.target_position = [b.p]
+            inp.max_velocity = [max(vmax, abs(b.v), abs(target_v))]
+        else:
+            inp.control_interface = ruckig.ControlInterface.Position
+            inp.target_position = [target_p]
+            inp.max_velocity = [vmax]
+        result = self._otg.calculate(inp, self._traj)
+        if result not in (ruckig.Result.Working, ruckig.Result.Finished):
+            raise PlanningError(f"ruckig: {result!r} for p={b.p!r} v={b.v!r} a={b.a!r} -> "
+                                f"p={target_p!r} v={target_v!r} (vmax={vmax}, a=[{amin}, {amax}], j={jerk})")
+        prof = self._traj.profiles[0][0]
+        brake = prof.brake
+        if brake.duration > 0.0:
+            for i in range(2):
+                b.add(brake.t[i], brake.p[i], brake.v[i], brake.a[i], brake.j[i])
+        for i in range(7):
+            b.add(prof.t[i], prof.p[i], prof.v[i], prof.a[i], prof.j[i])
+        post = prof.accel
+        if post.duration > 0.0:
+            for i in range(2):
+                b.add(post.t[i], post.p[i], post.v[i], post.a[i], post.j[i])
+        # remove numerical residue at the end of the solution
+        if target_p is not None:
+            b.p = target_p
+        b.v, b.a = target_v, 0.0
+
+    @staticmethod
+    def _signed_limits(direction: float, lim: Limits) -> tuple[float, float]:
+        """(max_acc, min_acc) for motion in ``direction``: speeding up uses Acceleration, slowing Deceleration."""
+        if direction >= 0:
+            return lim.acceleration, -lim.deceleration
+        return lim.deceleration, -lim.acceleration
+
+    # --- building blocks ----------------------------------------------------------------------------
+    def _brake_to_standstill(self, b: _Builder, lim: Limits) -> None:
+        """Slow down to zero velocity (stepper: to the start/stop velocity, then step to zero)."""
+        vss = lim.start_stop
+        still = abs(b.v) <= max(_EPS_V, vss)
+        if still and (lim.jerk == INF or abs(b.a) <= 1e-12 or vss):
+            b.jump(0.0)
+            return
+        sign = math.copysign(1.0, b.v if abs(b.v) > _EPS_V else b.a)
+        amax, amin = self._signed_limits(sign, lim)
+        self._solve(b, target_p=None, target_v=sign * vss if abs(b.v) > vss else 0.0, vmax=abs(b.v),
+                    amax=amax, amin=amin, jerk=lim.jerk)
+        b.jump(0.0)
+
+    def stop_position(self, p: float, v: float, a: float, lim: Limits) -> float:
+        """Where the axis comes to rest when it starts braking now."""
+        b = _Builder(0.0, p, v, a)
+        self._brake_to_standstill(b, lim)
+        return b.p
+
+    # --- public plans -------------------------------------------------------------------------------
+    def position(self, t: float, p: float, v: float, a: float, target: float, lim: Limits,
+                 *, allow_reverse: bool = True) -> Profile:
+        """Time-optimal move to ``target`` with standstill there.
+
+        Raises ``ReversalRequired`` when the motion would have to change direction and
+        ``allow_reverse`` is False (permitted-direction check of §5.4.4.1).
+        """
+        b = _Builder(t, p, v, a)
+        moving = abs(v) > _EPS_V or (lim.jerk < INF and abs(a) > 1e-12)
+        if moving:
+            sign = math.copysign(1.0, v if abs(v) > _EPS_V else a)
+            stop = self.stop_position(p, v, a, lim)
+            if (target - stop) * sign < -1e-9:          # target lies behind the stop point: reverse
+                if not allow_reverse:
+                    raise ReversalRequired()
+                self._brake_to_standstill(b, lim)
+                moving = False
+        if not moving:
+            b.a = 0.0 if abs(b.v) <= _EPS_V else b.a
+            if abs(target - b.p) <= 1e-12:
+                b.jump(0.0)
+                return b.finish(target, 0.0)
+            sign = 1.0 if target > b.p else -1.0
+            if lim.start_stop:
+                b.jump(sign * lim.start_stop)
+        else:
+            sign = math.copysign(1.0, b.v if abs(b.v) > _EPS_V else b.a)
+        amax, amin = self._signed_limits(sign, lim)
+        v_end = sign * lim.start_stop
+        vmax = max(lim.velocity, lim.start_stop)
+        self._solve(b, target_p=target, target_v=v_end, vmax=vmax, amax=amax, amin=amin, jerk=lim.jerk)
+        return b.finish(target, 0.0)
+
+    def velocity(self, t: float, p: float, v: float, a: float, target_v: float, lim: Limits) -> Profile:
+        """Ramp to ``target_v`` and keep it; milestone ``reached`` when the velocity is reached."""
+        b = _Builder(t, p, v, a)
+        if target_v == 0.0:
+            self._brake_to_standstill(b, lim)
+            return b.finish(b.p, 0.0, {"reached": b.t})
+        moving = abs(v) > _EPS_V
+        if moving and (v > 0) != (target_v > 0):
+            self._brake_to_standstill(b, lim)
+            moving = False
+        if not moving:
+            b.a = 0.0 if lim.jerk == INF else b.a
+            if lim.start_stop:
+                b.jump(math.copysign(lim.start_stop, target_v))
+        sign = 1.0 if target_v > 0 else -1.0
+        amax, amin = self._signed_limits(sign, lim)
+        if abs(b.v - target_v) > 1e-12 or (lim.jerk < INF and abs(b.a) > 1e-12):
+            self._solve(b, target_p=None, target_v=target_v, vmax=abs(target_v), amax=amax, amin=amin,
+                        jerk=lim.jerk)
+        return b.finish(b.p, target_v, {"reached": b.t})
+
+    def stop(self, t: float, p: float, v: float, a: float, lim: Limits) -> Profile:
+        """Brake to standstill with the deceleration (and jerk) of ``lim``."""
+        return self.velocity(t, p, v, a, 0.0, lim)
+
+    @staticmethod
+    def ramp_stop(t: float, p: float, v: float, deceleration: float) -> Profile:
+        """Brake at constant deceleration without jerk limit (emergency stop ramp, §12.8)."""
+        b = _Builder(t, p, v, 0.0)
+        if abs(v) > _EPS_V:
+            a = -math.copysign(deceleration, v)
+            b.add(abs(v) / deceleration, p, v, a, 0.0)
+        return b.finish(b.p, 0.0, {"reached": b.t})
+
+    @staticmethod
+    def ramp_stop_at(t: float, p: float, v: float, deceleration: float, stop_at: float) -> Profile:
+        """Keep the velocity, then brake at ``deceleration`` without jerk to stand exactly at ``stop_at``."""
+        b = _Builder(t, p, v, 0.0)
+        brake = v * v / (2 * deceleration)
+        cruise = abs(stop_at - p) - brake
+        if abs(v) > _EPS_V:
+            if cruise > 0:
+                b.add(cruise / abs(v), p, v, 0.0, 0.0)
+            b.add(abs(v) / deceleration, b.p, v, -math.copysign(deceleration, v), 0.0)
+        return b.finish(stop_at, 0.0, {"reached": b.t})
+
+    @staticmethod
+    def hold(t: float, p: float) -> Profile:
+        return Profile([Segment(t, p, 0.0, 0.0, 0.0)], t)
+
+    @staticmethod
+    def cruise(t: float, p: float, v: float) -> Profile:
+        return Profile([Segment(t, p, v, 0.0, 0.0)], t, {"reached": t})
+
+
+class ReversalRequired(Exception):
+    """The requested motion needs a change of direction."""
+
+
+def first_time_at_velocity(profile: Profile, v: float, tol: float = 1e-9) -> float | None:
+    """Start of the first segment that cruises at ``v`` (used for InVelocity)."""
+    for seg in profile.segments:
+        if abs(seg.v - v) <= tol * max(1.0, abs(v)) and seg.a == 0.0 and seg.j == 0.0:
+            return seg.t
+    return None

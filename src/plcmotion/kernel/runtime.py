@@ -1,0 +1,258 @@
+"""The controller: virtual clock, user programs and the fixed servo-cycle pipeline.
+
+Each servo cycle (S7-1200 V6 §2.2.7, LinuxCNC-style fixed order):
+read drives and encoders -> pre-servo hooks -> interpolator (due events of each axis, then all setpoints)
+-> position control and monitoring -> write drives -> post-servo hooks (trace).
+Every application cycle the user programs run first (like OB1), then the servo cycles of that period.
+Time is virtual: ``servo cycles x servo_cycle``; the same program gives the same trace bit for bit.
+"""
+from __future__ import annotations
+
+import math
+import re
+import traceback
+from typing import Any, Callable, Mapping
+
+import numpy as np
+
+from ..drives.base import DriveGroup
+from ..drives.simulated import ServoDrives, SetpointDrives
+from . import monitoring
+from . import parameters as P
+from .axis import ConfigurationError, PositioningAxis
+from .bank import AxisBank
+
+RUN, STOP = "RUN", "STOP"
+_EPS_T = 1e-9
+_NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
+
+
+class ControllerStopped(RuntimeError):
+    """The controller went to STOP (a program raised, or ``stop()`` was called)."""
+
+
+class RunTimeout(TimeoutError):
+    """``run_until`` did not see its condition within the timeout."""
+
+
+class Controller:
+    """A motion controller in virtual time.
+
+    ``servo_cycle``: period of position control and interpolation [s] (default 1 ms).
+    ``app_cycle``: period of the user programs [s], a whole multiple of ``servo_cycle`` (default 4 ms).
+    """
+
+    def __init__(self, servo_cycle: float = 0.001, app_cycle: float = 0.004):
+        for name, value in (("servo_cycle", servo_cycle), ("app_cycle", app_cycle)):
+            if not isinstance(value, (int, float)) or isinstance(value, bool) or not math.isfinite(value) or value <= 0:
+                raise ValueError(f"{name} must be a positive number of seconds, got {value!r}")
+        ratio = app_cycle / servo_cycle
+        if abs(ratio - round(ratio)) > 1e-9 * ratio or round(ratio) < 1:
+            raise ValueError(f"app_cycle ({app_cycle} s) must be a whole multiple of servo_cycle ({servo_cycle} s)")
+        self.servo_cycle = float(servo_cycle)
+        self.app_cycle = round(ratio) * self.servo_cycle
+        self._ratio = int(round(ratio))
+        self.bank = AxisBank()
+        self.axes: dict[str, PositioningAxis] = {}
+        self._by_index: list[PositioningAxis] = []
+        self._groups: dict[str, DriveGroup] = {}
+        self._group_list: list[DriveGroup] = []
+        self._programs: list[tuple[str, Callable[[], Any]]] = []
+        self._pre_servo: list[Callable[[float], None]] = []
+        self._post_servo: list[Callable[[float], None]] = []
+        self._instances: dict[int, Any] = {}        # instruction instances used on this controller
+        self._k = 0                                 # servo cycles done
+        self.app_cycles = 0
+        self.mode = RUN
+        self.stop_reason: str | None = None
+        self._n_fe = 0                              # axes with following error monitoring on
+        self._n_pm = 0                              # axes in positioning monitoring
+        self._dirty_axes: set[PositioningAxis] = set()
+        self._servo_defect = False
+
+    # --- time ------------------------------------------------------------------------------------------
+    @property
+    def time(self) -> float:
+        """Virtual time [s]."""
+        return self._k * self.servo_cycle
+
+    @property
+    def servo_cycles(self) -> int:
+        return self._k
+
+    # --- configuration ---------------------------------------------------------------------------------
+    def add_positioning_axis(self, name: str, params: Mapping[str, Any] | None = None, *,
+                             source: str | None = None) -> PositioningAxis:
+        """Create a positioning axis; ``params`` are nested dicts or dotted paths of the TO tags (§12.9)."""
+        if not isinstance(name, str) or not _NAME.match(name):
+            raise ValueError(f"axis name {name!r} must be an identifier (letters, digits, underscore)")
+        if name in self.axes:
+            raise ValueError(f"axis {name!r} exists already")
+        flat = P.flatten(params or {})
+        cfg, issues = P.validate(flat)
+        if issues:
+            raise ConfigurationError(source or f"axis {name}", issues)
+        axis = PositioningAxis(self, name, cfg)
+        self.axes[name] = axis
+        self._by_index.append(axis)
+        return axis
+
+    def _drive_group(self, kind: str) -> DriveGroup:
+        group = self._groups.get(kind)
+        if group is None:
+            group = ServoDrives() if kind == "servo" else SetpointDrives(stepper=kind == "stepper")
+            self._groups[kind] = group
+            self._group_list.append(group)
+        return group
+
+    def _axis_at(self, index: int) -> PositioningAxis:
+        return self._by_index[index]
+
+    def __getitem__(self, name: str) -> PositioningAxis:
+        return self.axes[name]
+
+    # --- programs and hooks ----------------------------------------------------------------------------
+    def program(self, fn: Callable[[], Any] | None = None, *, name: str | None = None):
+        """Register a function called once per application cycle (decorator)."""
+        def register(f: Callable[[], Any]) -> Callable[[], Any]:
+            self._programs.append((name or getattr(f, "__name__", "program"), f))
+            return f
+        return register(fn) if fn is not None else register
+
+    def on_pre_servo(self, fn: Callable[[float], None]) -> Callable[[float], None]:
+        self._pre_servo.append(fn)
+        return fn
+
+    def on_post_servo(self, fn: Callable[[float], None]) -> Callable[[float], None]:
+        """Register ``fn(t)`` called at the end of every servo cycle (traces)."""
+        self._post_servo.append(fn)
+        return fn
+
+    def remove_hook(self, fn: Callable[[float], None]) -> None:
+        for hooks in (self._pre_servo, self._post_servo):
+            if fn in hooks:
+                hooks.remove(fn)
+
+    # --- operating mode --------------------------------------------------------------------------------
+    def stop(self, reason: str = "STOP requested") -> None:
+        """RUN -> STOP: programs no longer run; all axes disabled with 'remove enable' (§2.2.7.4, §9.4)."""
+        if self.mode == STOP:
+            return
+        self.mode = STOP
+        self.stop_reason = reason
+        for axis in self._by_index:
+            try:
+                axis._abort_all(self.time)
+                if axis.state != "disabled":
+                    axis._remove_enable(self.time, by_power=True)
+                axis.power_owner = None
+            except Exception:  # pragma: no cover - keep stopping the others
+                pass
+
+    def start(self) -> None:
+        """STOP -> STARTUP -> RUN: technology objects and instructions start from their start values."""
+        if self.mode == RUN:
+            return
+        for axis in self._by_index:
+            axis.cfg = dict(axis.load_cfg)
+            axis.eff = dict(axis.load_cfg)
+            axis._dirty.clear()
+            axis.alarms.clear()
+            if axis.pto:
+                axis.homed = False                    # §11.1.3.1: CPU restart resets "homed" of PTO axes
+            axis.busy_commands.clear()
+            axis._apply_bank_config()
+        for inst in self._instances.values():
+            inst._reinit()
+        self.mode = RUN
+        self.stop_reason = None
+
+    # --- running ---------------------------------------------------------------------------------------
+    def step(self) -> None:
+        """One application cycle: user programs, then the servo cycles of that period."""
+        if self.mode == RUN:
+            for name, fn in self._programs:
+                try:
+                    fn()
+                except Exception as exc:
+                    self.stop(f"program {name!r} raised {type(exc).__name__}: {exc}\n"
+                              + "".join(traceback.format_exception(exc)))
+                    break
+        self.app_cycles += 1
+        for _ in range(self._ratio):
+            self._servo()
+
+    def run(self, seconds: float) -> None:
+        """Advance the virtual time by ``seconds`` (whole application cycles, rounded up)."""
+        n = max(0, math.ceil(seconds / self.app_cycle - 1e-9))
+        for _ in range(n):
+            self.step()
+
+    def run_until(self, predicate: Callable[[], bool], timeout: float = 10.0) -> float:
+        """Step until ``predicate()`` is true; returns the virtual time. Raises RunTimeout, ControllerStopped."""
+        deadline = self.time + timeout
+        while not predicate():
+            if self.mode == STOP:
+                raise ControllerStopped(self.stop_reason or "controller in STOP")
+            if self.time >= deadline - _EPS_T:
+                raise RunTimeout(f"condition not met within {timeout} s of virtual time (now t = {self.time:.6g} s)")
+            self.step()
+        return self.time
+
+    # --- the servo cycle -------------------------------------------------------------------------------
+    def _servo(self) -> None:
+        self._k += 1
+        t = self._k * self.servo_cycle
+        if self._servo_defect:
+            return
+        try:
+            self._servo_pipeline(t)
+        except Exception as exc:  # a defect in the kernel: stop in a defined state, keep the reason
+            self._servo_defect = True
+            self.stop(f"internal error in the servo cycle at t = {t:.6g} s: {type(exc).__name__}: {exc}\n"
+                      + "".join(traceback.format_exception(exc)))
+
+    def _servo_pipeline(self, t: float) -> None:
+        b = self.bank
+        dt = self.servo_cycle
+        for g in self._group_list:
+            g.read(b, t, dt)
+        for hook in self._pre_servo:
+            hook(t)
+        if b.n:
+            if self._dirty_axes:
+                dirty = sorted(self._dirty_axes, key=lambda ax: ax.index)
+                self._dirty_axes.clear()
+                for axis in dirty:
+                    axis._apply_dirty("servo")
+            due = b.next_event <= t + _EPS_T
+            if due.any():
+                for i in np.flatnonzero(due):
+                    self._by_index[i]._on_event(t)
+            # interpolator: evaluate the active segment of every axis
+            tau = t - b.seg_t
+            j = b.seg_j
+            a = b.seg_a
+            b.sp_p = b.seg_p + tau * (b.seg_v + tau * (0.5 * a + tau * (j * (1.0 / 6.0))))
+            b.sp_v = b.seg_v + tau * (a + (0.5 * tau) * j)
+            b.sp_a = a + tau * j
+            b.sp_j = j
+            if "servo" in self._groups:
+                # position control of the closed-loop axes; others follow their actual value
+                b.sp_p = np.where(b.follow_act, b.act_p, b.sp_p)
+                err = b.sp_p - b.act_p
+                b.fe = err
+                b.cmd_v = np.where(b.closed_loop, b.kpc * b.sp_v + b.kv * err, b.sp_v)
+                if self._n_fe:
+                    monitoring.following_error(self, t)
+                if self._n_pm:
+                    monitoring.positioning(self, t)
+                monitoring.standstill(self, t)
+        for g in self._group_list:
+            g.write(b, t)
+        for hook in self._post_servo:
+            hook(t)
+
+
+__all__ = ["Controller", "ControllerStopped", "RunTimeout", "ConfigurationError", "RUN", "STOP"]
+

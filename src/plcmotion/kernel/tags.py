@@ -1,0 +1,305 @@
+"""Tags of the positioning axis as attributes and as string paths (S7-1200 V6 §12.9).
+
+``axis.StatusBits.Enable``, ``axis.DynamicDefaults.Jerk`` and ``axis.Sensor[1].ActiveHoming.Mode`` read the
+same values as ``axis.tag("StatusBits.Enable")`` etc.  Status tags are computed when read (nothing is copied
+per cycle); configuration tags are the values in the technology data block, which the user program may
+assign where the manual grants write access (RW).
+"""
+from __future__ import annotations
+
+import difflib
+from typing import TYPE_CHECKING, Any, Callable
+
+from . import faults as F
+from . import parameters as P
+from .jobs import JobKind
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .axis import PositioningAxis
+
+_CONFIG_TREE = P.groups(P.SCHEMA)
+
+
+def _b(ax: "PositioningAxis"):
+    return ax.ctl.bank
+
+
+def _job_kind(ax: "PositioningAxis") -> JobKind | None:
+    job = ax.job
+    return job.kind if job is not None and job.busy else None
+
+
+def _alarm_kinds(ax: "PositioningAxis") -> set[str]:
+    return {a.kind for a in ax.alarms}
+
+
+def _sw_active(ax: "PositioningAxis", side: str) -> bool:
+    if not ax.sw_limits_effective():
+        return False
+    p = float(_b(ax).sp_p[ax.index])
+    if side == "min":
+        return p <= ax.eff["PositionLimits_SW.MinPosition"]
+    return p >= ax.eff["PositionLimits_SW.MaxPosition"]
+
+
+def _accel_state(ax: "PositioningAxis") -> int:
+    """+1 accelerating, -1 decelerating, 0 constant velocity or standstill (setpoint)."""
+    b, i = _b(ax), ax.index
+    v, a = float(b.sp_v[i]), float(b.sp_a[i])
+    if abs(a) <= 1e-9 * max(1.0, ax.eff["DynamicDefaults.Acceleration"]) or v == 0.0 and a == 0.0:
+        return 0
+    return 1 if a * v > 0 or v == 0.0 else -1
+
+
+def _constant_velocity(ax: "PositioningAxis") -> bool:
+    b, i = _b(ax), ax.index
+    if _accel_state(ax) != 0:
+        return False
+    if float(b.sp_v[i]) != 0.0:
+        return True
+    # §11.1.7: MC_MoveVelocity with Velocity 0 reports ConstantVelocity at standstill
+    job = ax.job
+    return job is not None and job.kind == JobKind.VELOCITY and job.velocity == 0.0 and job.in_velocity
+
+
+def _standstill(ax: "PositioningAxis") -> bool:
+    b, i = _b(ax), ax.index
+    if ax.servo:
+        return bool(b.standstill[i])
+    return float(b.sp_v[i]) == 0.0
+
+
+def _distance(ax: "PositioningAxis") -> float:
+    job = ax.job
+    if job is None or not job.busy or job.kind not in (JobKind.ABSOLUTE, JobKind.RELATIVE):
+        return 0.0
+    return abs(job.target - float(_b(ax).sp_p[ax.index]))
+
+
+def _target(ax: "PositioningAxis") -> float:
+    job = ax.job
+    if job is None or not job.busy or job.kind not in (JobKind.ABSOLUTE, JobKind.RELATIVE):
+        return 0.0
+    return ax._wrap(job.target)
+
+
+#: status tags: path -> getter
+DYNAMIC: dict[str, Callable[["PositioningAxis"], Any]] = {
+    "Position": lambda ax: ax._wrap(float(_b(ax).sp_p[ax.index])),
+    "Velocity": lambda ax: float(_b(ax).sp_v[ax.index]),
+    "Acceleration": lambda ax: float(_b(ax).sp_a[ax.index]),
+    "ActualPosition": lambda ax: ax._wrap(float(_b(ax).act_p[ax.index])),
+    "ActualVelocity": lambda ax: float(_b(ax).act_v[ax.index]),
+    "StatusPositioning.Distance": _distance,
+    "StatusPositioning.TargetPosition": _target,
+    "StatusPositioning.FollowingError": lambda ax: float(_b(ax).fe[ax.index]) if ax.servo else 0.0,
+    "StatusDrive.InOperation": lambda ax: ax.state in ("enabled", "disabling") and ax.drive.ready(ax.now),
+    "StatusDrive.CommunicationOK": lambda ax: ax.drive.communication_ok and not ax.pto,
+    "StatusDrive.AdaptionState": lambda ax: 3,
+    "StatusSensor.State": lambda ax: 0 if ax.pto else 2,
+    "StatusSensor.CommunicationOK": lambda ax: not ax.pto,
+    "StatusSensor.AbsEncoderOffset": lambda ax: 0.0,
+    "StatusSensor.AdaptionState": lambda ax: 3,
+    "StatusBits.Activated": lambda ax: True,
+    "StatusBits.Enable": lambda ax: ax.state in ("enabled", "disabling"),
+    "StatusBits.HomingDone": lambda ax: ax.homed,
+    "StatusBits.Done": lambda ax: _job_kind(ax) is None,
+    "StatusBits.Error": lambda ax: bool(ax.alarms),
+    "StatusBits.StandStill": _standstill,
+    "StatusBits.PositioningCommand": lambda ax: _job_kind(ax) in (JobKind.ABSOLUTE, JobKind.RELATIVE),
+    "StatusBits.VelocityCommand": lambda ax: _job_kind(ax) in (JobKind.VELOCITY, JobKind.JOG),
+    "StatusBits.HomingCommand": lambda ax: _job_kind(ax) in (JobKind.HOME_ACTIVE,) or (
+        ax.passive_home is not None and ax.passive_home.busy),
+    "StatusBits.CommandTableActive": lambda ax: _job_kind(ax) == JobKind.TABLE,
+    "StatusBits.ConstantVelocity": _constant_velocity,
+    "StatusBits.Accelerating": lambda ax: _accel_state(ax) > 0,
+    "StatusBits.Decelerating": lambda ax: _accel_state(ax) < 0,
+    "StatusBits.ControlPanelActive": lambda ax: False,
+    "StatusBits.DriveReady": lambda ax: ax.state in ("enabled", "disabling") and ax.drive.ready(ax.now),
+    "StatusBits.RestartRequired": lambda ax: False,
+    "StatusBits.SWLimitMinActive": lambda ax: _sw_active(ax, "min"),
+    "StatusBits.SWLimitMaxActive": lambda ax: _sw_active(ax, "max"),
+    "StatusBits.HWLimitMinActive": lambda ax: False,
+    "StatusBits.HWLimitMaxActive": lambda ax: False,
+    "StatusBits.AxisSimulation": lambda ax: ax.sim,
+    "StatusBits.NonPositionControlled": lambda ax: ax.servo and ax.state in ("enabled", "disabling")
+    and not ax.position_controlled,
+    "ErrorBits.SystemFault": lambda ax: F.INTERNAL in _alarm_kinds(ax),
+    "ErrorBits.ConfigFault": lambda ax: bool(_alarm_kinds(ax) & {F.CONFIG, F.HOMING_APPROACH_ZERO,
+                                                                 F.HOMING_REFERENCING_ZERO}),
+    "ErrorBits.DriveFault": lambda ax: bool(_alarm_kinds(ax) & {F.DRIVE_NOT_READY, F.DRIVE_ALARM}),
+    "ErrorBits.SWLimit": lambda ax: bool(_alarm_kinds(ax) & {F.SW_LIMIT_MIN, F.SW_LIMIT_MAX, F.SW_LIMIT_ORDER}),
+    "ErrorBits.HWLimit": lambda ax: bool(_alarm_kinds(ax) & {F.HW_LIMIT_MIN, F.HW_LIMIT_MAX, F.HW_LIMIT_FREE}),
+    "ErrorBits.DirectionFault": lambda ax: F.DIRECTION in _alarm_kinds(ax),
+    "ErrorBits.HWUsed": lambda ax: F.HW_USED in _alarm_kinds(ax),
+    "ErrorBits.SensorFault": lambda ax: F.ENCODER in _alarm_kinds(ax),
+    "ErrorBits.CommunicationFault": lambda ax: any(a.kind == F.DRIVE_ALARM and a.detail in ("station", "sign_of_life")
+                                                   for a in ax.alarms),
+    "ErrorBits.FollowingErrorFault": lambda ax: F.FOLLOWING_ERROR in _alarm_kinds(ax),
+    "ErrorBits.PositioningFault": lambda ax: F.POSITIONING in _alarm_kinds(ax),
+}
+_DYNAMIC_ALIASES = {
+    "StatusSensor[1].AdaptionState": "StatusSensor.AdaptionState",
+    "ErrorBits.FollowingError": "ErrorBits.FollowingErrorFault",      # V7 table spelling
+}
+_STATUS_GROUPS = ("StatusBits", "ErrorBits", "StatusPositioning", "StatusDrive", "StatusSensor")
+
+
+class _StatusView:
+    """Read-only view of a status structure (StatusBits, ErrorBits, ...)."""
+
+    __slots__ = ("_axis", "_prefix")
+
+    def __init__(self, axis: "PositioningAxis", prefix: str):
+        object.__setattr__(self, "_axis", axis)
+        object.__setattr__(self, "_prefix", prefix)
+
+    def __getattr__(self, name: str) -> Any:
+        getter = DYNAMIC.get(f"{self._prefix}.{name}")
+        if getter is None:
+            raise AttributeError(_unknown(self._axis, f"{self._prefix}.{name}"))
+        return getter(self._axis)
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        from .axis import TagAccessError
+
+        raise TagAccessError(f"{self._axis.name}.{self._prefix}.{name} is a status tag and cannot be written")
+
+    def __dir__(self) -> list[str]:
+        n = len(self._prefix) + 1
+        return [k[n:] for k in DYNAMIC if k.startswith(self._prefix + ".")]
+
+    def as_dict(self) -> dict[str, Any]:
+        return {name: getattr(self, name) for name in self.__dir__()}
+
+    def __repr__(self) -> str:
+        return f"{self._axis.name}.{self._prefix}({self.as_dict()})"
+
+
+class _ConfigView:
+    """View of a configuration structure; assignment goes through the access rules."""
+
+    __slots__ = ("_axis", "_prefix", "_tree")
+
+    def __init__(self, axis: "PositioningAxis", prefix: str, tree: dict):
+        object.__setattr__(self, "_axis", axis)
+        object.__setattr__(self, "_prefix", prefix)
+        object.__setattr__(self, "_tree", tree)
+
+    def __getattr__(self, name: str) -> Any:
+        node = self._tree.get(name)
+        if node is None:
+            raise AttributeError(_unknown(self._axis, f"{self._prefix}.{name}"))
+        if isinstance(node, dict):
+            return _ConfigView(self._axis, f"{self._prefix}.{name}", node)
+        return self._axis.cfg[node]
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        node = self._tree.get(name)
+        if node is None or isinstance(node, dict):
+            raise AttributeError(_unknown(self._axis, f"{self._prefix}.{name}"))
+        self._axis.write_tag(node, value)
+
+    def __getitem__(self, key: int) -> "_ConfigView":
+        name = f"{self._prefix.rsplit('.', 1)[-1]}[{key}]"
+        if self._prefix == "Sensor" or self._prefix == "Sensor.Sensor":
+            return getattr(self._axis, "_sensor_view")(key)
+        raise TypeError(f"{self._prefix} is not an array ({name})")
+
+    def __dir__(self) -> list[str]:
+        return list(self._tree)
+
+    def __repr__(self) -> str:
+        return f"{self._axis.name}.{self._prefix}"
+
+
+class _SensorArray:
+    """``axis.Sensor[1]`` and the V6 table spelling ``axis.Sensor.Sensor[1]``."""
+
+    __slots__ = ("_axis",)
+
+    def __init__(self, axis: "PositioningAxis"):
+        self._axis = axis
+
+    def __getitem__(self, key: int) -> _ConfigView:
+        node = _CONFIG_TREE.get(f"Sensor[{key}]")
+        if node is None:
+            raise IndexError(f"{self._axis.name}.Sensor[{key}]: the positioning axis has one encoder, Sensor[1]")
+        return _ConfigView(self._axis, f"Sensor[{key}]", node)
+
+    @property
+    def Sensor(self) -> "_SensorArray":  # noqa: N802 - tag name
+        return self
+
+
+def _unknown(axis: "PositioningAxis", path: str) -> str:
+    candidates = list(DYNAMIC) + list(P.SCHEMA)
+    near = difflib.get_close_matches(path, candidates, n=3, cutoff=0.6)
+    hint = f"; did you mean {' or '.join(near)}?" if near else ""
+    return f"{axis.name}.{path} is not a tag of the positioning axis{hint}"
+
+
+class AxisTagsMixin:
+    """Attribute and string-path access to the tags of the technology object."""
+
+    @property
+    def Position(self) -> float:  # noqa: N802 - manual tag names
+        return DYNAMIC["Position"](self)
+
+    @property
+    def Velocity(self) -> float:  # noqa: N802
+        return DYNAMIC["Velocity"](self)
+
+    @property
+    def Acceleration(self) -> float:  # noqa: N802
+        """Setpoint acceleration (not a tag of the S7-1200 TO; the S7-1500 name, for traces)."""
+        return DYNAMIC["Acceleration"](self)
+
+    @property
+    def ActualPosition(self) -> float:  # noqa: N802
+        return DYNAMIC["ActualPosition"](self)
+
+    @property
+    def ActualVelocity(self) -> float:  # noqa: N802
+        return DYNAMIC["ActualVelocity"](self)
+
+    @property
+    def Sensor(self) -> _SensorArray:  # noqa: N802
+        return _SensorArray(self)  # type: ignore[arg-type]
+
+    def _sensor_view(self, key: int) -> _ConfigView:
+        return _SensorArray(self)[key]  # type: ignore[arg-type]
+
+    def __getattr__(self, name: str) -> Any:
+        # only called for names not found normally: status and configuration structures
+        if name in _STATUS_GROUPS:
+            return _StatusView(self, name)  # type: ignore[arg-type]
+        node = _CONFIG_TREE.get(name)
+        if isinstance(node, dict) and not name.startswith("Sensor"):
+            return _ConfigView(self, name, node)  # type: ignore[arg-type]
+        raise AttributeError(f"{type(self).__name__} has no attribute {name!r}")
+
+    # --- string paths ----------------------------------------------------------------------------------
+    def tag(self, path: str) -> Any:
+        """Value of the tag at ``path`` (e.g. ``"StatusBits.Enable"``, ``"Sensor[1].ActiveHoming.Mode"``)."""
+        return self.tag_getter(path)()
+
+    def tag_getter(self, path: str) -> Callable[[], Any]:
+        """A function returning the current value of the tag at ``path`` (fast repeated reads)."""
+        canon = _DYNAMIC_ALIASES.get(path, path)
+        getter = DYNAMIC.get(canon)
+        if getter is not None:
+            return lambda: getter(self)  # type: ignore[arg-type]
+        canon = P.canonical(path)
+        if canon in P.SCHEMA:
+            return lambda: self.cfg[canon]  # type: ignore[attr-defined]
+        raise KeyError(_unknown(self, path))  # type: ignore[arg-type]
+
+    def set_tag(self, path: str, value: Any) -> None:
+        """Assign a tag by path with the access rules of direct assignment in the user program."""
+        self.write_tag(path, value)  # type: ignore[attr-defined]
+
+    @staticmethod
+    def tag_paths() -> list[str]:
+        """All tag paths of the positioning axis (status and configuration)."""
+        return list(DYNAMIC) + [p for p, prm in P.SCHEMA.items() if prm.access != P.P]

@@ -80,6 +80,8 @@ class PositioningAxis(AxisTagsMixin):
         self._pending: dict[str, float] = {}
         self._timers: dict[str, float] = {}
         self.reference_mark = 0.0
+        self.last_internal_error: str | None = None
+        self.holding_zero_velocity = False            # standstill reached by MC_MoveVelocity(Velocity=0)
 
         b = ctl.bank
         i = self.index
@@ -220,6 +222,8 @@ class PositioningAxis(AxisTagsMixin):
             if job.kind in (JobKind.VELOCITY, JobKind.JOG):
                 if job.velocity == 0.0 or job.jog_released:
                     job.in_velocity = True
+                    # §11.1.7: after MC_MoveVelocity(0) ConstantVelocity is shown at standstill
+                    self.holding_zero_velocity = job.kind == JobKind.VELOCITY
                     self._finish_job(job, JobState.DONE, t)
                 else:
                     job.in_velocity = job.reached_once = True
@@ -267,6 +271,13 @@ class PositioningAxis(AxisTagsMixin):
         job = self._pm_job
         self._stop_positioning_monitor()
         self.raise_alarm(F.alarm(F.POSITIONING, detail, Reaction.REMOVE_ENABLE), job=job)
+
+    def _internal_error(self, exc: BaseException) -> None:
+        """A defect in the kernel while handling this axis: stop it (16#8FFF) and keep the details."""
+        import traceback
+
+        self.last_internal_error = "".join(traceback.format_exception(exc))
+        self.raise_alarm(F.alarm(F.INTERNAL, "", Reaction.REMOVE_ENABLE, f"{type(exc).__name__}: {exc}"))
 
     def _on_following_error(self, t: float) -> None:
         self.raise_alarm(F.alarm(F.FOLLOWING_ERROR, "", Reaction.REMOVE_ENABLE))
@@ -347,6 +358,7 @@ class PositioningAxis(AxisTagsMixin):
     def _remove_enable(self, t: float, by_power: bool = False) -> None:
         """Setpoint zero and enable off; the drive stops by itself (§12.8 'Remove enable')."""
         self._after_stop = None
+        self.holding_zero_velocity = False
         self.drive.set_enable(False, t)
         self.state = DISABLED
         self._stop_positioning_monitor()
@@ -532,6 +544,7 @@ class PositioningAxis(AxisTagsMixin):
         previous = self.job
         if previous is not None and previous.busy:
             self._finish_job(previous, JobState.ABORTED, t)
+        self.holding_zero_velocity = False
         if job.kind == JobKind.HOME_ACTIVE and self.passive_home is not None:
             self._finish_job(self.passive_home, JobState.ABORTED, t)
             self.passive_home = None
@@ -615,7 +628,7 @@ class PositioningAxis(AxisTagsMixin):
             job.finish(JobState.ERROR, F.reject(F.REJECTED, "homing_active"))
             return
         b, i = self.ctl.bank, self.index
-        ref = float(b.act_p[i]) if self.servo else float(b.sp_p[i])
+        ref = float(b.sp_p[i])          # "the current axis position": the Position tag (setpoint, §12.9.1)
         if job.mode == 0:
             new = self._wrap(job.position)
             delta = new - ref

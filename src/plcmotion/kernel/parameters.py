@@ -12,8 +12,11 @@ dynamics, pulse output hardware) and are only set by configuration.
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass
 from typing import Any, Iterable, Mapping
+
+import numpy as np
 
 BOOL, INT, REAL = "bool", "int", "real"
 
@@ -44,22 +47,21 @@ class Param:
         if self.kind == BOOL:
             if isinstance(value, bool):
                 return None, value
-            if isinstance(value, int) and value in (0, 1):
+            if isinstance(value, np.bool_):
+                return None, bool(value)
+            if isinstance(value, numbers.Integral) and value in (0, 1):
                 return None, bool(value)
             return "type", value
         if self.kind == INT:
-            if isinstance(value, bool) or not isinstance(value, (int, float)):
+            if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
                 return "type", value
-            if isinstance(value, float):
+            if not isinstance(value, numbers.Integral):
                 if not math.isfinite(value) or value != int(value):
                     return "type", value
                 value = int(value)
-        else:  # REAL
-            if isinstance(value, bool) or not isinstance(value, (int, float)):
-                try:  # numpy scalars
-                    value = float(value)  # type: ignore[arg-type]
-                except (TypeError, ValueError):
-                    return "type", value
+        else:  # REAL: numbers only (numpy scalars included), never strings or booleans
+            if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+                return "type", value
             value = float(value)
             if not math.isfinite(value):
                 return "format", value
@@ -302,13 +304,16 @@ def rule_issues(cfg: Mapping[str, Any]) -> list[Issue]:
             elif a < lo:
                 add(path, "below_hw_limit", f"at least {lo:g} pulses/s^2 = {lo * pulse:g} user units/s^2")
         j = cfg["DynamicDefaults.Jerk"] / pulse
-        if j >= PTO_JERK_ENABLE and j > PTO_JERK_LIMITS[1]:
+        if j > PTO_JERK_LIMITS[1]:
             add("DynamicDefaults.Jerk", "above_max_jerk",
                 f"at most {PTO_JERK_LIMITS[1]:g} pulses/s^3 = {PTO_JERK_LIMITS[1] * pulse:g} user units/s^3")
         if cfg["Modulo.Enable"]:
             add("Modulo.Enable", "pto_modulo", "modulo is only available with PROFIdrive/analog drives (§5.4.4.2)")
         if cfg["Simulation.Mode"] == 1:
             add("Simulation.Mode", "pto_simulation", "simulation is not supported for PTO axes (16#8647)")
+        for path in ("Sensor[1].ActiveHoming.Mode", "Sensor[1].PassiveHoming.Mode"):
+            if cfg[path] != 2:
+                add(path, "pto_homing_mode", "2 (homing via digital input) for PTO axes (16#8617/16#8618)")
     else:
         if cfg["DynamicDefaults.Jerk"] > E12:
             add("DynamicDefaults.Jerk", "above_max_jerk", f"at most {E12:g}")

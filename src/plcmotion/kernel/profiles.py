@@ -137,8 +137,13 @@ class Planner:
             inp.control_interface = ruckig.ControlInterface.Position
             inp.target_position = [target_p]
             inp.max_velocity = [vmax]
-        result = self._otg.calculate(inp, self._traj)
+        try:
+            result = self._otg.calculate(inp, self._traj)
+        except Exception as exc:          # ruckig raises for inputs beyond its numerical range
+            result = exc
         if result not in (ruckig.Result.Working, ruckig.Result.Finished):
+            if target_p is not None and self._solve_long(b, target_p, target_v, vmax, amax, amin, jerk):
+                return
             raise PlanningError(f"ruckig: {result!r} for p={b.p!r} v={b.v!r} a={b.a!r} -> "
                                 f"p={target_p!r} v={target_v!r} (vmax={vmax}, a=[{amin}, {amax}], j={jerk})")
         prof = self._traj.profiles[0][0]
@@ -156,6 +161,34 @@ class Planner:
         if target_p is not None:
             b.p = target_p
         b.v, b.a = target_v, 0.0
+
+    def _solve_long(self, b: _Builder, target_p: float, target_v: float, vmax: float, amax: float, amin: float,
+                    jerk: float) -> bool:
+        """Long moves beyond ruckig's numerical range: ramp to the maximum velocity, cruise, ramp down.
+
+        Exact whenever the move has a constant-velocity phase, which is always the case for the distances
+        where ruckig gives up (about 1e9 times the velocity limit).
+        """
+        sign = 1.0 if target_p > b.p else -1.0
+        up = _Builder(b.t, b.p, b.v, b.a)
+        down = _Builder(0.0, 0.0, sign * vmax, 0.0)
+        try:
+            self._solve(up, target_p=None, target_v=sign * vmax, vmax=vmax, amax=amax, amin=amin, jerk=jerk)
+            self._solve(down, target_p=None, target_v=target_v, vmax=vmax, amax=amax, amin=amin, jerk=jerk)
+        except PlanningError:
+            return False
+        cruise = (target_p - up.p - down.p) * sign
+        if cruise < 0 or vmax <= 0:
+            return False
+        for seg in up.segments:
+            b.segments.append(seg)
+        b.t, b.p, b.v, b.a = up.t, up.p, up.v, up.a
+        b.add(cruise / vmax, b.p, sign * vmax, 0.0, 0.0)
+        t0, p0 = b.t, b.p
+        for seg in down.segments:
+            b.segments.append(Segment(t0 + seg.t, p0 + seg.p, seg.v, seg.a, seg.j))
+        b.t, b.p, b.v, b.a = t0 + down.t, target_p, target_v, 0.0
+        return True
 
     @staticmethod
     def _signed_limits(direction: float, lim: Limits) -> tuple[float, float]:

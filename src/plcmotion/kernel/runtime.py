@@ -9,6 +9,7 @@ Time is virtual: ``servo cycles x servo_cycle``; the same program gives the same
 from __future__ import annotations
 
 import math
+import numbers
 import re
 import traceback
 from typing import Any, Callable, Mapping
@@ -44,13 +45,17 @@ class Controller:
 
     def __init__(self, servo_cycle: float = 0.001, app_cycle: float = 0.004):
         for name, value in (("servo_cycle", servo_cycle), ("app_cycle", app_cycle)):
-            if not isinstance(value, (int, float)) or isinstance(value, bool) or not math.isfinite(value) or value <= 0:
+            if (not isinstance(value, numbers.Real) or isinstance(value, bool) or not math.isfinite(value)
+                    or value <= 0):
                 raise ValueError(f"{name} must be a positive number of seconds, got {value!r}")
         ratio = app_cycle / servo_cycle
         if abs(ratio - round(ratio)) > 1e-9 * ratio or round(ratio) < 1:
             raise ValueError(f"app_cycle ({app_cycle} s) must be a whole multiple of servo_cycle ({servo_cycle} s)")
         self.servo_cycle = float(servo_cycle)
         self.app_cycle = round(ratio) * self.servo_cycle
+        # time = k / rate when the servo frequency is a whole number: 1.001 instead of 1.0010000000000001
+        rate = 1.0 / self.servo_cycle
+        self._rate = float(round(rate)) if abs(rate - round(rate)) < 1e-9 * rate else None
         self._ratio = int(round(ratio))
         self.bank = AxisBank()
         self.axes: dict[str, PositioningAxis] = {}
@@ -74,7 +79,10 @@ class Controller:
     @property
     def time(self) -> float:
         """Virtual time [s]."""
-        return self._k * self.servo_cycle
+        return self._time_of(self._k)
+
+    def _time_of(self, k: int) -> float:
+        return k / self._rate if self._rate is not None else k * self.servo_cycle
 
     @property
     def servo_cycles(self) -> int:
@@ -166,6 +174,7 @@ class Controller:
             inst._reinit()
         self.mode = RUN
         self.stop_reason = None
+        self._servo_defect = False
 
     # --- running ---------------------------------------------------------------------------------------
     def step(self) -> None:
@@ -202,7 +211,7 @@ class Controller:
     # --- the servo cycle -------------------------------------------------------------------------------
     def _servo(self) -> None:
         self._k += 1
-        t = self._k * self.servo_cycle
+        t = self._time_of(self._k)
         if self._servo_defect:
             return
         try:
@@ -217,8 +226,7 @@ class Controller:
         dt = self.servo_cycle
         for g in self._group_list:
             g.read(b, t, dt)
-        for hook in self._pre_servo:
-            hook(t)
+        self._run_hooks(self._pre_servo, t)
         if b.n:
             if self._dirty_axes:
                 dirty = sorted(self._dirty_axes, key=lambda ax: ax.index)
@@ -228,7 +236,11 @@ class Controller:
             due = b.next_event <= t + _EPS_T
             if due.any():
                 for i in np.flatnonzero(due):
-                    self._by_index[i]._on_event(t)
+                    axis = self._by_index[i]
+                    try:
+                        axis._on_event(t)
+                    except Exception as exc:      # isolate a defect to its axis (16#8FFF, axis stopped)
+                        axis._internal_error(exc)
             # interpolator: evaluate the active segment of every axis
             tau = t - b.seg_t
             j = b.seg_j
@@ -250,8 +262,18 @@ class Controller:
                 monitoring.standstill(self, t)
         for g in self._group_list:
             g.write(b, t)
-        for hook in self._post_servo:
-            hook(t)
+        self._run_hooks(self._post_servo, t)
+
+    def _run_hooks(self, hooks: list[Callable[[float], None]], t: float) -> None:
+        """Hooks are user code: one that raises stops the controller (like a faulty OB), not the kernel."""
+        for hook in tuple(hooks):
+            try:
+                hook(t)
+            except Exception as exc:
+                if hook in hooks:
+                    hooks.remove(hook)
+                self.stop(f"servo hook {getattr(hook, '__qualname__', hook)!r} raised {type(exc).__name__}: "
+                          f"{exc}\n" + "".join(traceback.format_exception(exc)))
 
 
 __all__ = ["Controller", "ControllerStopped", "RunTimeout", "ConfigurationError", "RUN", "STOP"]

@@ -46,7 +46,7 @@ def _accel_state(ax: "PositioningAxis") -> int:
     """+1 accelerating, -1 decelerating, 0 constant velocity or standstill (setpoint)."""
     b, i = _b(ax), ax.index
     v, a = float(b.sp_v[i]), float(b.sp_a[i])
-    if abs(a) <= 1e-9 * max(1.0, ax.eff["DynamicDefaults.Acceleration"]) or v == 0.0 and a == 0.0:
+    if abs(a) <= 1e-9 * max(1.0, ax.eff["DynamicDefaults.Acceleration"]):
         return 0
     return 1 if a * v > 0 or v == 0.0 else -1
 
@@ -58,8 +58,7 @@ def _constant_velocity(ax: "PositioningAxis") -> bool:
     if float(b.sp_v[i]) != 0.0:
         return True
     # §11.1.7: MC_MoveVelocity with Velocity 0 reports ConstantVelocity at standstill
-    job = ax.job
-    return job is not None and job.kind == JobKind.VELOCITY and job.velocity == 0.0 and job.in_velocity
+    return ax.holding_zero_velocity
 
 
 def _standstill(ax: "PositioningAxis") -> bool:
@@ -107,7 +106,9 @@ DYNAMIC: dict[str, Callable[["PositioningAxis"], Any]] = {
     "StatusBits.Error": lambda ax: bool(ax.alarms),
     "StatusBits.StandStill": _standstill,
     "StatusBits.PositioningCommand": lambda ax: _job_kind(ax) in (JobKind.ABSOLUTE, JobKind.RELATIVE),
-    "StatusBits.VelocityCommand": lambda ax: _job_kind(ax) in (JobKind.VELOCITY, JobKind.JOG),
+    # §11.1.7: after MC_MoveVelocity(0) reached standstill both bits stay until the next motion command
+    "StatusBits.VelocityCommand": lambda ax: _job_kind(ax) in (JobKind.VELOCITY, JobKind.JOG)
+    or ax.holding_zero_velocity,
     "StatusBits.HomingCommand": lambda ax: _job_kind(ax) in (JobKind.HOME_ACTIVE,) or (
         ax.passive_home is not None and ax.passive_home.busy),
     "StatusBits.CommandTableActive": lambda ax: _job_kind(ax) == JobKind.TABLE,
@@ -291,7 +292,7 @@ class AxisTagsMixin:
         if getter is not None:
             return lambda: getter(self)  # type: ignore[arg-type]
         canon = P.canonical(path)
-        if canon in P.SCHEMA:
+        if canon in P.SCHEMA and P.SCHEMA[canon].access != P.P:
             return lambda: self.cfg[canon]  # type: ignore[attr-defined]
         raise KeyError(_unknown(self, path))  # type: ignore[arg-type]
 

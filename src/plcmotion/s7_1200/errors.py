@@ -151,6 +151,8 @@ _CONFIG_RULES: dict[tuple[str, str], tuple[int, int]] = {
     ("DynamicLimits.MinVelocity", "rule:min_above_max"): (0x8606, 0x0007),
     ("Homing.AutoReversal", "rule:no_hw_limits"): (0x8613, 0x0001),
     ("Actor.DirectionMode", "rule:both_without_direction_output"): (0x861A, 0x002D),
+    ("Sensor[1].ActiveHoming.Mode", "rule:pto_homing_mode"): (0x8617, 0x0011),
+    ("Sensor[1].PassiveHoming.Mode", "rule:pto_homing_mode"): (0x8618, 0x0011),
 }
 _VELOCITY_FAMILY = {0x8606, 0x8607, 0x8608, 0x8609, 0x860A}
 _POSITION_FAMILY = {0x8605, 0x860B, 0x860C, 0x860F}

@@ -1,0 +1,375 @@
+"""Project files: a controller and its axes described in TOML.
+
+A project file has up to three sections::
+
+    [controller]                  # optional
+    servo_cycle = 0.001           # s, default 0.001
+    app_cycle = 0.004             # s, a whole multiple of servo_cycle, default 0.004
+
+    [axes.Axis_1]                 # one table per positioning axis, created in file order
+    type = "positioning"          # optional; the only axis type so far
+    "Actor.Type" = 2              # a tag as a quoted dotted key ...
+    [axes.Axis_1.DynamicLimits]   # ... or as a nested table
+    MaxVelocity = 500.0
+    [axes.Axis_1."Sensor[1]".ActiveHoming]
+    Mode = 2
+
+    [trace]                       # optional: what ``plcmotion run`` records by default
+    signals = ["Axis_1.Position", "Axis_1.Velocity"]
+    every = 1                     # record every n-th servo cycle
+
+Axis names are identifiers (letters, digits, underscore; not starting with a digit).  Inside an axis
+table the keys are the tag paths of the positioning axis (``plcmotion.kernel.parameters.SCHEMA``,
+S7-1200 Motion Control V6 §12.9, plus the ``Plant.*`` parameters of the simulated machine); the
+alternative spellings of the manuals (``Sensor.Sensor[1].``, ``PositionLimitsSW.``, ...) are accepted.
+Tags the file does not set keep their start values.  A trace signal is ``"<axis>.<tag>"`` with any tag
+``PositioningAxis.tag`` can read (status or configuration).
+
+API:
+
+* ``load_project(path)`` returns a ready :class:`~plcmotion.kernel.runtime.Controller` with the axes
+  created, or raises :class:`ProjectError` listing every problem of the file.
+* ``check_project(path)`` returns the same problems as a list of strings (empty when the file is valid).
+* The trace settings travel on the returned controller as
+  ``ctl.project = {"path": "<the path as given>", "trace": {"signals": [...], "every": n}}``;
+  without a ``[trace]`` section the signal list is empty and ``every`` is 1.
+
+Every problem is one line of the form ``<file>: <key path> = <value>: <what is allowed>``, where the key
+path is the full path in the file (``axes.Axis_1.DynamicLimits.MaxVelocity``) and the value is shown in
+TOML spelling.  Problems of the tag values come from the same checks ``Controller.add_positioning_axis``
+runs (``parameters.validate``), so a file that passes here also passes there.
+"""
+from __future__ import annotations
+
+import difflib
+import json
+import math
+import os
+import re
+import tomllib
+from collections.abc import Iterator, Mapping
+from dataclasses import replace
+from pathlib import Path
+from typing import Any
+
+from .kernel import parameters as P
+from .kernel.axis import ConfigurationError
+from .kernel.runtime import Controller
+
+SECTIONS = ("controller", "axes", "trace")
+CONTROLLER_DEFAULTS: dict[str, float] = {"servo_cycle": 0.001, "app_cycle": 0.004}
+TRACE_KEYS = ("signals", "every")
+AXIS_TYPES = ("positioning",)
+
+_NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")       # the rule Controller.add_positioning_axis applies
+_POSITION = re.compile(r"line (\d+), column (\d+)")
+_MAX_SHOWN = 80
+
+
+class ProjectError(ValueError):
+    """A project file that cannot be loaded; ``problems`` holds one message per problem."""
+
+    def __init__(self, path: str | os.PathLike, problems: list[str]):
+        self.path = os.fspath(path)
+        self.problems = list(problems)
+        n = len(self.problems)
+        head = f"{self.path}: {n} problem{'s' if n != 1 else ''} in the project file"
+        super().__init__("\n".join([head] + ["  " + p for p in self.problems]))
+
+
+def load_project(path: str | os.PathLike) -> Controller:
+    """Read the project file at ``path`` and return a controller with its axes created."""
+    ctl, problems = _Loader(path).load()
+    if problems:
+        raise ProjectError(path, problems)
+    assert ctl is not None
+    return ctl
+
+
+def check_project(path: str | os.PathLike) -> list[str]:
+    """All problems of the project file at ``path``; an empty list when it loads."""
+    return _Loader(path).load()[1]
+
+
+# --------------------------------------------------------------------------------------------------------
+# showing values and keys as they are spelled in TOML
+
+def toml_value(value: Any) -> str:
+    """``value`` in TOML spelling (``true``, ``"text"``, ``[1, 2]``), shortened when it is long."""
+    text = _toml(value)
+    return text if len(text) <= _MAX_SHOWN else text[:_MAX_SHOWN - 3] + "..."
+
+
+def _toml(value: Any) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, str):
+        return json.dumps(value, ensure_ascii=False)
+    if isinstance(value, float):
+        if math.isnan(value):
+            return "nan"
+        if math.isinf(value):
+            return "inf" if value > 0 else "-inf"
+        return repr(value)
+    if isinstance(value, list):
+        return "[" + ", ".join(_toml(v) for v in value) + "]"
+    if isinstance(value, Mapping):
+        if not value:
+            return "{}"
+        return "{ " + ", ".join(f"{_key(k)} = {_toml(v)}" for k, v in value.items()) + " }"
+    if hasattr(value, "isoformat"):          # TOML dates and times
+        return value.isoformat()
+    return str(value)
+
+
+def _key(key: str) -> str:
+    """A key of a key path: bare when it is an identifier-like name, quoted otherwise."""
+    return key if re.fullmatch(r"[A-Za-z0-9_\-\[\]]+", key) else json.dumps(key, ensure_ascii=False)
+
+
+class _Shown:
+    """A value whose ``repr`` is its TOML spelling, so ``Issue.message`` shows what the file says."""
+
+    def __init__(self, value: Any):
+        self.value = value
+
+    def __repr__(self) -> str:
+        return toml_value(self.value)
+
+
+def _leaves(table: Mapping[str, Any], prefix: str = "") -> Iterator[tuple[str, Any]]:
+    """``(dotted path, value)`` of every value that is not a table, and of every empty table, in file
+    order (duplicates kept)."""
+    for key, value in table.items():
+        path = f"{prefix}.{key}" if prefix else str(key)
+        if isinstance(value, Mapping) and value:
+            yield from _leaves(value, path)
+        else:
+            yield path, value
+
+
+def _near(word: str, known: list[str] | tuple[str, ...]) -> str:
+    close = difflib.get_close_matches(word, known, n=3, cutoff=0.6)
+    return "did you mean " + " or ".join(close) + "?" if close else "allowed: " + ", ".join(known)
+
+
+# --------------------------------------------------------------------------------------------------------
+
+class _Loader:
+    """Reads one project file, collecting every problem instead of stopping at the first."""
+
+    def __init__(self, path: str | os.PathLike):
+        self.path = Path(path)
+        self.label = os.fspath(path)
+        self.problems: list[str] = []
+
+    # --- messages -----------------------------------------------------------------------------------
+    def note(self, text: str) -> None:
+        self.problems.append(f"{self.label}: {text}")
+
+    def bad(self, key: str, value: Any, allowed: str) -> None:
+        self.note(f"{key} = {toml_value(value)}: allowed: {allowed}")
+
+    def unknown(self, key: str, value: Any, what: str, known: list[str] | tuple[str, ...]) -> None:
+        self.note(f"{key}: unknown {what} (value {toml_value(value)}); {_near(key.rsplit('.', 1)[-1], known)}")
+
+    def issue(self, axis_key: str, issue: P.Issue, written: Mapping[str, str]) -> None:
+        """A problem found by the parameter checks, named by the key path the file uses."""
+        suffix = ""
+        if issue.reason == "unknown":
+            path = issue.path                         # already the spelling of the file
+        elif issue.path in written:
+            path = written[issue.path]
+        else:
+            path, suffix = issue.path, " (start value; the file does not set this tag)"
+        shown = replace(issue, path=f"{axis_key}.{path}", value=_Shown(issue.value))
+        self.note(shown.message() + suffix)
+
+    # --- the whole file -----------------------------------------------------------------------------
+    def load(self) -> tuple[Controller | None, list[str]]:
+        doc = self.read()
+        if doc is None:
+            return None, self.problems
+        for key, value in doc.items():
+            if key not in SECTIONS:
+                self.unknown(key, value, "section", SECTIONS)
+        ctl = self.controller(doc.get("controller"))
+        declared = self.axes(ctl, doc.get("axes"))
+        trace = self.trace(ctl, doc.get("trace"), declared)
+        ctl.project = {"path": self.label, "trace": trace}  # type: ignore[attr-defined]
+        return (None if self.problems else ctl), self.problems
+
+    def read(self) -> dict[str, Any] | None:
+        try:
+            data = self.path.read_bytes()
+        except FileNotFoundError:
+            self.note("file not found")
+            return None
+        except IsADirectoryError:
+            self.note("is a directory, not a project file")
+            return None
+        except OSError as exc:
+            self.note(f"cannot read the file: {exc.strerror or exc}")
+            return None
+        try:
+            text = data.decode("utf-8")
+        except UnicodeDecodeError as exc:
+            self.note(f"not UTF-8 text (invalid byte at offset {exc.start}); TOML files are UTF-8")
+            return None
+        try:
+            return tomllib.loads(text)
+        except tomllib.TOMLDecodeError as exc:
+            message = str(exc)
+            where = _POSITION.search(message)
+            if where:
+                lines = text.splitlines()
+                row = int(where.group(1))
+                if 1 <= row <= len(lines):
+                    message += f"; line {row} reads: {lines[row - 1].strip()}"
+            self.note(f"TOML syntax error: {message}")
+            return None
+
+    # --- [controller] -------------------------------------------------------------------------------
+    def controller(self, section: Any) -> Controller:
+        """The controller of the file; a default one (to go on checking the axes) when the section is bad."""
+        if section is None:
+            section = {}
+        if not isinstance(section, dict):
+            self.bad("controller", section, "a table [controller] with servo_cycle and app_cycle")
+            return Controller()
+        before = len(self.problems)
+        for key, value in section.items():
+            if key not in CONTROLLER_DEFAULTS:
+                self.unknown(f"controller.{key}", value, "key", list(CONTROLLER_DEFAULTS))
+        cycles: dict[str, float] = {}
+        for key, default in CONTROLLER_DEFAULTS.items():
+            value = section.get(key, default)
+            if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) \
+                    or value <= 0:
+                self.bad(f"controller.{key}", value, "a positive number of seconds, e.g. 0.001")
+            else:
+                cycles[key] = float(value)
+        if len(cycles) == 2:
+            servo, app = cycles["servo_cycle"], cycles["app_cycle"]
+            ratio = app / servo
+            if abs(ratio - round(ratio)) > 1e-9 * ratio or round(ratio) < 1:
+                given = "" if "app_cycle" in section else " (default)"
+                lower, upper = max(1, math.floor(ratio)) * servo, max(1, math.ceil(ratio)) * servo
+                self.note(f"controller.app_cycle = {toml_value(app)}{given}: allowed: a whole multiple "
+                          f"of servo_cycle = {toml_value(servo)} s, e.g. {lower:g} or {upper:g}")
+        if len(self.problems) > before:
+            return Controller()
+        try:
+            return Controller(cycles["servo_cycle"], cycles["app_cycle"])
+        except ValueError as exc:               # a rule of the runtime this loader does not know
+            self.note(f"controller: {exc}")
+            return Controller()
+
+    # --- [axes.<name>] ------------------------------------------------------------------------------
+    def axes(self, ctl: Controller, section: Any) -> list[str]:
+        """Create the axes on ``ctl``; returns the names of all axis tables (valid or not)."""
+        if section is None:
+            return []
+        if not isinstance(section, dict):
+            self.bad("axes", section, "one table [axes.<name>] per axis")
+            return []
+        for name, table in section.items():
+            key = f"axes.{_key(name)}"
+            valid_name = bool(_NAME.match(name))
+            if not valid_name:
+                self.note(f"{key}: the axis name {json.dumps(name, ensure_ascii=False)} is not an identifier; "
+                          f"allowed: letters, digits and underscores, not starting with a digit")
+            if not isinstance(table, dict):
+                self.bad(key, table, f"a table of axis tags, e.g. [{key}] with \"Actor.Type\" = 2")
+                continue
+            self.axis(ctl, name, key, table, create=valid_name)
+        return list(section)
+
+    def axis(self, ctl: Controller, name: str, key: str, table: dict[str, Any], *, create: bool) -> None:
+        values = dict(table)
+        kind = values.pop("type", AXIS_TYPES[0])
+        if kind not in AXIS_TYPES:
+            self.bad(f"{key}.type", kind, "one of " + ", ".join(json.dumps(t) for t in AXIS_TYPES))
+            create = False
+        flat: dict[str, Any] = {}
+        written: dict[str, str] = {}                # canonical tag path -> spelling in the file
+        for path, value in _leaves(values):
+            canon = P.canonical(path)
+            if isinstance(value, Mapping) and any(tag.startswith(canon + ".") for tag in P.SCHEMA):
+                continue                            # an empty group of tags, e.g. [axes.A.Homing]
+            if canon in written:
+                first = written[canon]
+                self.note(f"{key}.{path} = {toml_value(value)}: the tag is already set by "
+                          f"{key}.{first} = {toml_value(flat[first])}; set each tag once")
+                create = False
+                continue
+            written[canon] = path
+            flat[path] = value
+        _cfg, issues = P.validate(flat)
+        for issue in issues:
+            self.issue(key, issue, written)
+        if issues or not create:
+            return
+        try:
+            ctl.add_positioning_axis(name, flat, source=f"{self.label}: {key}")
+        except ConfigurationError as exc:
+            for issue in exc.issues:
+                self.issue(key, issue, written)
+        except Exception as exc:  # noqa: BLE001 - report, never a traceback out of a project file
+            self.note(f"{key}: the axis could not be created: {type(exc).__name__}: {exc}")
+
+    # --- [trace] ------------------------------------------------------------------------------------
+    def trace(self, ctl: Controller, section: Any, declared: list[str]) -> dict[str, Any]:
+        settings: dict[str, Any] = {"signals": [], "every": 1}
+        if section is None:
+            return settings
+        if not isinstance(section, dict):
+            self.bad("trace", section, "a table [trace] with signals and every")
+            return settings
+        for key, value in section.items():
+            if key not in TRACE_KEYS:
+                self.unknown(f"trace.{key}", value, "key", TRACE_KEYS)
+        signals = section.get("signals", [])
+        if not isinstance(signals, list):
+            self.bad("trace.signals", signals, 'a list of strings "<axis>.<tag>", e.g. ["Axis_1.Position"]')
+        else:
+            settings["signals"] = [s for i, s in enumerate(signals)
+                                   if self.signal(ctl, f"trace.signals[{i}]", s, declared)]
+        every = section.get("every", 1)
+        if isinstance(every, bool) or not isinstance(every, int) or every < 1:
+            self.bad("trace.every", every, "an integer >= 1 (record every n-th servo cycle)")
+        else:
+            settings["every"] = every
+        return settings
+
+    def signal(self, ctl: Controller, key: str, signal: Any, declared: list[str]) -> bool:
+        if not isinstance(signal, str):
+            self.bad(key, signal, 'a string "<axis>.<tag>", e.g. "Axis_1.Position"')
+            return False
+        name, dot, tag = signal.partition(".")
+        if not dot or not name or not tag:
+            self.bad(key, signal, '"<axis>.<tag>", e.g. "Axis_1.Position"')
+            return False
+        if name not in declared:
+            axes = ", ".join(declared) if declared else "none, the file has no [axes.<name>] table"
+            close = difflib.get_close_matches(name, declared, n=1, cutoff=0.6)
+            hint = f" (did you mean {close[0]}?)" if close else ""
+            self.note(f"{key} = {toml_value(signal)}: unknown axis {name}{hint}; "
+                      f"allowed: \"<axis>.<tag>\" with an axis of this file: {axes}")
+            return False
+        axis = ctl.axes.get(name)
+        if axis is None:                            # the axis has problems of its own, reported above
+            return False
+        try:
+            axis.tag_getter(tag)
+        except KeyError as exc:
+            reason = str(exc.args[0])
+            if "did you mean" not in reason:
+                reason += "; allowed: a status or configuration tag such as Position, ActualVelocity, " \
+                          "StatusBits.Enable (PositioningAxis.tag_paths() lists them)"
+            self.note(f"{key} = {toml_value(signal)}: {reason}")
+            return False
+        return True
+
+
+__all__ = ["AXIS_TYPES", "SECTIONS", "ProjectError", "check_project", "load_project", "toml_value"]

@@ -5,6 +5,8 @@ Only what the S7-1200 Motion Control V6 manual (seeds/000_a03aa7b7d80586ce.txt) 
 * §5.4.4.4 dynamics: the setpoint velocity never exceeds DynamicLimits.MaxVelocity; while no axis
   error is pending (no emergency stop) the setpoint acceleration never exceeds
   max(Acceleration, Deceleration);
+* §5.4.4.4: on a PTO axis the setpoint velocity is 0 or at least the start/stop velocity ("the
+  minimum permissible velocity of the axis");
 * §12.9.1 / §12.9.2: Position, Velocity, ActualPosition are numbers (no NaN / infinity);
 * §9.5.2 - §9.5.4: Busy / Done / CommandAborted / Error are mutually exclusive at every call; when
   Busy of an instruction with Done output falls, exactly one of Done, CommandAborted, Error is TRUE;
@@ -22,7 +24,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 from plcmotion import Controller
@@ -86,8 +88,8 @@ class Rec:
 class ServoCheck:
     """Per servo cycle invariants, collected (an exception inside a hook would stop the controller)."""
 
-    def __init__(self, ctl, axis, cfg: Axis, limits=None):
-        self.axis, self.cfg, self.limits = axis, cfg, limits
+    def __init__(self, ctl, axis, cfg: Axis, limits=None, check_vmin=False):
+        self.axis, self.cfg, self.limits, self.check_vmin = axis, cfg, limits, check_vmin
         self.violations: list[str] = []
         self.amax = max(cfg.acc, cfg.dec)
         ctl.on_post_servo(self)
@@ -100,7 +102,11 @@ class ServoCheck:
             return
         if abs(v) > self.cfg.vmax * (1 + 1e-9) + 1e-9:
             self.violations.append(f"t={t:.3f}: |v|={abs(v)} > MaxVelocity {self.cfg.vmax}")
-        if not ax.StatusBits.Error and abs(a) > self.amax * (1 + 1e-9) + 1e-9:
+        # §5.4.4.4: "The start/stop velocity is the minimum permissible velocity of the axis" (PTO)
+        if self.check_vmin and self.cfg.kind == "pto" and 0.0 < abs(v) < self.cfg.vmin * (1 - 1e-6):
+            self.violations.append(f"t={t:.3f}: 0 < |v|={abs(v)} < start/stop velocity {self.cfg.vmin}")
+        # ruckig's solutions meet the limits to about 1e-8 relative (floating point root finding)
+        if not ax.StatusBits.Error and abs(a) > self.amax * (1 + 1e-8) + 1e-9:
             self.violations.append(f"t={t:.3f}: |a|={abs(a)} > max(acc, dec) {self.amax}")
         if self.limits is not None and not self.limits[0] - 1e-6 <= p <= self.limits[1] + 1e-6:
             self.violations.append(f"t={t:.3f}: setpoint {p} outside the SW limits {self.limits}")
@@ -145,7 +151,7 @@ def _check_call(rec: Rec, axis, cfg: Axis, errors: list[str], label: str, allowe
     rec.prev_busy = fb.Busy
 
 
-def run_scenario(cfg: Axis, cmds, finish: bool = False, limits=None) -> list[str]:
+def run_scenario(cfg: Axis, cmds, finish: bool = False, limits=None, check_vmin=False) -> list[str]:
     """Run the commands; with ``finish`` keep going until the last command has ended (Done).
     ``limits``: (MinPosition, MaxPosition) of active SW limit switches; then only the SW limit errors
     16#8001/16#8002 ErrorInfo 16#000E (reached with the configured deceleration) are allowed."""
@@ -168,7 +174,7 @@ def run_scenario(cfg: Axis, cmds, finish: bool = False, limits=None) -> list[str
     home(Axis=axis, Execute=True, Mode=0, Position=0.0)
     ctl.run_until(lambda: home().Done, timeout=1.0)
 
-    check = ServoCheck(ctl, axis, cfg, limits)
+    check = ServoCheck(ctl, axis, cfg, limits, check_vmin)
     errors: list[str] = []
     starts: dict[int, list] = {}
     k = 0
@@ -275,6 +281,11 @@ limit_commands = st.one_of(commands, st.tuples(st.just("reset"), gap, held))
 @settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(cfg=axes(), cmds=st.lists(limit_commands, min_size=1, max_size=10),
        lo=st.floats(-150.0, -5.0), hi=st.floats(5.0, 150.0))
+# found by this property: a slower MC_MoveAbsolute to the limit position overriding the limit braking
+# of a PTO axis passes the limit (see test_override_during_limit_braking_never_passes_limit_5_4_4_3)
+@example(cfg=Axis(kind="pto", vmax=20.0, vmin=2.0, acc=103.0, dec=17.0, jerk=0.0),
+         cmds=[("vel", 0, False, 1.0, 1, 0, False), ("abs", 25, False, 0.0, 0.0), ("abs", 0, False, 5.0, 0.0)],
+         lo=-5.0, hi=5.0)
 def test_random_commands_with_sw_limits(cfg, cmds, lo, hi):
     """§5.4.4.3 / §12.8 / §12.4: with active SW limit switches on a homed axis and unchanged dynamics,
     every motion is stopped at the latest at the limit with the configured deceleration: the setpoint
@@ -282,4 +293,18 @@ def test_random_commands_with_sw_limits(cfg, cmds, lo, hi):
     (never 16#000F/16#0010, which need a coordinate jump or a lower deceleration), the axis stays
     enabled, and all other invariants of the first property hold.  MC_Reset commands are interleaved."""
     errors = run_scenario(cfg, cmds, limits=(lo, hi))
+    assert not errors, "\n".join(errors[:10])
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(cfg=axes().filter(lambda c: c.kind == "pto"), cmds=st.lists(commands, min_size=1, max_size=8))
+# found by this property: MC_MoveRelative(Distance = 0.0) while moving at the start/stop velocity with
+# the jerk limit on overshoots and returns at velocities below the start/stop velocity
+@example(cfg=Axis(kind="pto", vmax=20.0, vmin=1.0, acc=10.0, dec=10.0, jerk=50.0),
+         cmds=[("vel", 0, True, 0.0, 1, 0, False), ("rel", 30, True, 0.0, 0.0)])
+def test_pto_velocity_zero_or_at_least_start_stop(cfg, cmds):
+    """§5.4.4.4: "The start/stop velocity is the minimum permissible velocity of the axis" -- the
+    setpoint velocity of a PTO axis is 0 or at least DynamicLimits.MinVelocity in every servo cycle,
+    for any sequence of valid commands (and all invariants of the first property hold)."""
+    errors = run_scenario(cfg, cmds, check_vmin=True)
     assert not errors, "\n".join(errors[:10])

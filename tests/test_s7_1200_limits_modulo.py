@@ -512,7 +512,6 @@ def test_sw_limit_error_pulsed_execute_one_cycle_9_5_2(kind):
             break
     settle(ctl, mr, cycles=3)
     assert shown.count(True) == 1
-    i = shown.index(True)
     assert not mr.Error
     assert power.ErrorID == 0x8002
 
@@ -547,3 +546,28 @@ def test_sw_limit_error_after_jog_release_one_cycle_9_5_4():
     assert max(tr.p) <= LIMIT + 1e-6
     assert axis.Position == pytest.approx(LIMIT, abs=1e-6)
     assert max(-a for a in tr.a) == pytest.approx(EMERGENCY, rel=1e-6)
+
+
+@pytest.mark.parametrize("kind", ["pd", "pto"])
+@pytest.mark.parametrize("jerk", [0.0, JERK], ids=["trapezoidal", "jerk"])
+@pytest.mark.parametrize("target,velocity", [(100.0, 10.0), (100.0, 60.0), (95.0, 10.0)])
+def test_override_during_limit_braking_never_passes_limit_5_4_4_3(kind, jerk, target, velocity):
+    """§5.4.4.3: "an active motion is stopped at the position of the software limit switch"; §12.4 /
+    §12.8: passing the limit is only possible when even the emergency deceleration is insufficient
+    (16#0010).  A MC_MoveVelocity is already braking for the high limit when a MC_MoveAbsolute with a
+    lower Velocity overrides it; the configured deceleration (and certainly the emergency deceleration)
+    still suffices to stop at the limit, so the setpoint must never pass the limit position."""
+    ctl, axis, power = make(kind, DynamicDefaults={"Acceleration": ACC, "Deceleration": DEC, "Jerk": jerk,
+                                                   "EmergencyDeceleration": EMERGENCY})
+    home(ctl, axis, 0.0)
+    mv = MC_MoveVelocity()
+    mv(Axis=axis, Execute=True, Velocity=60.0)
+    ctl.run_until(lambda: mv() and axis.Position > 30.0 and axis.Acceleration < -1.0, timeout=5.0)
+    ma = MC_MoveAbsolute()
+    ma(Axis=axis, Execute=True, Position=target, Velocity=velocity)
+    tr = Trace(ctl, axis)
+    ctl.run_until(lambda: ma().Done or ma.Error, timeout=10.0)
+    tr.close()
+    assert max(tr.p) <= LIMIT + 1e-6, f"setpoint passed the SW limit: {max(tr.p)}"
+    if ma.Error:
+        assert ma.ErrorID == 0x8002 and ma.ErrorInfo in (0x000E, 0x000F)

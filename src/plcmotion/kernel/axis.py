@@ -109,6 +109,16 @@ class PositioningAxis(AxisTagsMixin):
         """SW limit switches act only on a homed, non-modulo axis (§2.3; modulo: see docs/decisions)."""
         return self.eff["PositionLimits_SW.Active"] and self.homed and not self.eff["Modulo.Enable"]
 
+    def position_resolution(self) -> float:
+        """Smallest position step of the axis: one pulse (PTO), one encoder increment (servo)."""
+        if self.pto:
+            return P.pulse_length(self.eff)
+        if self.servo:
+            from ..drives.simulated import encoder_increment
+            return encoder_increment(self.eff)
+        return 1e-9 * max(1.0, abs(self.eff["PositionLimits_SW.MaxPosition"]),
+                          abs(self.eff["PositionLimits_SW.MinPosition"]))
+
     def _wrap(self, value: float) -> float:
         if self.eff["Modulo.Enable"]:
             return wrap(value, self.eff["Modulo.StartValue"], self.eff["Modulo.Length"])

@@ -177,14 +177,20 @@ class MotionPlanner:
         lo_lim = ax.eff["PositionLimits_SW.MinPosition"]
         hi_lim = ax.eff["PositionLimits_SW.MaxPosition"]
         profile = plan.profile
+        # a stop point within half a position increment of the limit counts as at the limit: plans made
+        # from different states of the same braking differ in the last digits
+        tol = ax.position_resolution() / 2
         side = None
         for seg in profile.segments:          # the limit met first in time decides
-            if seg.p > hi_lim + _TOL:
+            if seg.p > hi_lim + tol:
                 side = "max"
                 break
-            if seg.p < lo_lim - _TOL:
+            if seg.p < lo_lim - tol:
                 side = "min"
                 break
+        if side is None and profile.final.v == 0.0:
+            final = profile.final
+            final.p = min(max(final.p, lo_lim), hi_lim)
         if side is None:
             fv = profile.final.v
             side = "max" if fv > 0 else "min" if fv < 0 else None

@@ -120,6 +120,12 @@ class Planner:
     def _solve(self, b: _Builder, *, target_p: float | None, target_v: float, vmax: float,
                amax: float, amin: float, jerk: float) -> None:
         """Append the time-optimal segments from the builder's state to the target."""
+        if jerk == INF:
+            if target_p is None:
+                self._ramp(b, target_v, amax, amin)
+            else:
+                self._trapezoid(b, target_p, target_v, vmax, amax, amin)
+            return
         inp = self._inp
         inp.current_position = [b.p]
         inp.current_velocity = [b.v]
@@ -161,6 +167,50 @@ class Planner:
         if target_p is not None:
             b.p = target_p
         b.v, b.a = target_v, 0.0
+
+    @staticmethod
+    def _ramp(b: _Builder, target_v: float, amax: float, amin: float) -> None:
+        """Velocity change at constant acceleration (no jerk limit)."""
+        dv = target_v - b.v
+        if abs(dv) > 0.0:
+            a = amax if dv > 0 else amin
+            b.add(dv / a, b.p, b.v, a, 0.0)
+        b.v, b.a = target_v, 0.0
+
+    @staticmethod
+    def _trapezoid(b: _Builder, target_p: float, target_v: float, vmax: float, amax: float, amin: float) -> None:
+        """Time-optimal positioning without jerk limit, in closed form.
+
+        Travels in one direction from the builder's state to ``target_p``, arriving with ``target_v``
+        (zero, or the start/stop velocity of a stepper): speed change to the peak speed, cruise, brake.
+        The caller guarantees that the target is not behind the stop point.
+        """
+        sign = 1.0 if target_p >= b.p else -1.0
+        acc, dec = (amax, -amin) if sign > 0 else (-amin, amax)
+        dist = (target_p - b.p) * sign
+        u0 = max(b.v * sign, 0.0)
+        ue = abs(target_v)
+        if u0 > vmax:
+            peak = vmax                          # braking to the new limit first never passes the target
+        else:
+            tri = math.sqrt(max((dist + u0 * u0 / (2 * acc) + ue * ue / (2 * dec)) / (1 / (2 * acc) + 1 / (2 * dec)),
+                                0.0))
+            peak = max(min(vmax, tri), u0, ue)
+        d1 = (peak * peak - u0 * u0) / (2 * acc) if peak >= u0 else (u0 * u0 - peak * peak) / (2 * dec)
+        d3 = (peak * peak - ue * ue) / (2 * dec)
+        cruise = dist - d1 - d3
+        if cruise < -1e-9 * max(1.0, dist):
+            raise PlanningError(f"trapezoid: target {target_p!r} behind the stop point (p={b.p!r}, v={b.v!r})")
+        p, v = b.p, sign * u0
+        if peak > u0:
+            b.add((peak - u0) / acc, p, v, sign * acc, 0.0)
+        elif peak < u0:
+            b.add((u0 - peak) / dec, p, v, -sign * dec, 0.0)
+        if cruise > 1e-12 * max(1.0, dist) and peak > 0.0:
+            b.add(cruise / peak, b.p, sign * peak, 0.0, 0.0)
+        if peak > ue:
+            b.add((peak - ue) / dec, b.p, sign * peak, -sign * dec, 0.0)
+        b.p, b.v, b.a = target_p, target_v, 0.0
 
     def _solve_long(self, b: _Builder, target_p: float, target_v: float, vmax: float, amax: float, amin: float,
                     jerk: float) -> bool:
@@ -226,10 +276,13 @@ class Planner:
         ``allow_reverse`` is False (permitted-direction check of §5.4.4.1).
         """
         b = _Builder(t, p, v, a)
-        moving = abs(v) > _EPS_V or (lim.jerk < INF and abs(a) > 1e-12)
+        vss = lim.start_stop
+        if vss and abs(v) <= vss * (1 + 1e-9):
+            b.jump(0.0)                     # a stepper at its start/stop velocity stops at once
+        moving = abs(b.v) > _EPS_V or (lim.jerk < INF and abs(b.a) > 1e-12)
         if moving:
-            sign = math.copysign(1.0, v if abs(v) > _EPS_V else a)
-            stop = self.stop_position(p, v, a, lim)
+            sign = math.copysign(1.0, b.v if abs(b.v) > _EPS_V else b.a)
+            stop = self.stop_position(b.p, b.v, b.a, lim)
             if (target - stop) * sign < -1e-9:          # target lies behind the stop point: reverse
                 if not allow_reverse:
                     raise ReversalRequired()
@@ -241,15 +294,76 @@ class Planner:
                 b.jump(0.0)
                 return b.finish(target, 0.0)
             sign = 1.0 if target > b.p else -1.0
-            if lim.start_stop:
-                b.jump(sign * lim.start_stop)
+            if vss:
+                b.jump(sign * vss)
         else:
             sign = math.copysign(1.0, b.v if abs(b.v) > _EPS_V else b.a)
+        self._approach(b, target, sign, lim)
+        return b.finish(target, 0.0)
+
+    def _approach(self, b: _Builder, target: float, sign: float, lim: Limits) -> None:
+        """Final stage of a positioning: travel in direction ``sign`` and stop at ``target``.
+
+        When the axis is faster than the new velocity limit and close to the target, slowing down to the
+        limit first would carry it past the target; then the lowest velocity limit that still arrives
+        without passing the target is used (found by bisection, the profile family is monotonic in it).
+        The same search keeps a stepper from dropping below its start/stop velocity before the end.
+        """
         amax, amin = self._signed_limits(sign, lim)
         v_end = sign * lim.start_stop
         vmax = max(lim.velocity, lim.start_stop)
-        self._solve(b, target_p=target, target_v=v_end, vmax=vmax, amax=amax, amin=amin, jerk=lim.jerk)
-        return b.finish(target, 0.0)
+        state = (b.t, b.p, b.v, b.a, len(b.segments))
+
+        def attempt(limit: float) -> bool:
+            b.t, b.p, b.v, b.a = state[:4]
+            del b.segments[state[4]:]
+            self._solve(b, target_p=target, target_v=v_end, vmax=limit, amax=amax, amin=amin, jerk=lim.jerk)
+            return self._passes(b.segments[state[4]:], b.t, target, sign, lim.start_stop)
+
+        if not attempt(vmax):
+            return
+        lo, hi = vmax, max(vmax, abs(state[2])) * (1 + 1e-9) + 1e-9
+        if attempt(hi):
+            # the target is (numerically) at the stop point: brake to standstill, which ends at or before
+            # the target, and creep the rest of the way from standstill
+            b.t, b.p, b.v, b.a = state[:4]
+            del b.segments[state[4]:]
+            self._brake_to_standstill(b, lim)
+            if (target - b.p) * sign > 1e-12 * max(1.0, abs(target)):
+                if lim.start_stop:
+                    b.jump(sign * lim.start_stop)
+                self._solve(b, target_p=target, target_v=v_end, vmax=vmax, amax=amax, amin=amin, jerk=lim.jerk)
+            b.p, b.v, b.a = target, v_end, 0.0
+            return
+        for _ in range(48):
+            mid = 0.5 * (lo + hi)
+            if attempt(mid):
+                lo = mid
+            else:
+                hi = mid
+            if hi - lo <= 1e-9 * hi:
+                break
+        attempt(hi)
+
+    @staticmethod
+    def _passes(segments: list[Segment], t_end: float, target: float, sign: float, vss: float) -> bool:
+        """Does a stage pass ``target``, turn back, or (stepper) run below the start/stop velocity?"""
+        tol_p = 1e-9 * max(1.0, abs(target))
+        for k, seg in enumerate(segments):
+            end = segments[k + 1].t if k + 1 < len(segments) else t_end
+            dur = end - seg.t
+            if (seg.p - target) * sign > tol_p:
+                return True
+            # smallest velocity in the direction of travel over the segment
+            cands = [0.0, dur]
+            if seg.j != 0.0:
+                tau = -seg.a / seg.j
+                if 0.0 < tau < dur:
+                    cands.append(tau)
+            v_min = min(sign * (seg.v + x * (seg.a + x * seg.j / 2)) for x in cands)
+            if v_min < vss - 1e-9 * max(1.0, vss) - 1e-12:
+                return True
+        return False
 
     def velocity(self, t: float, p: float, v: float, a: float, target_v: float, lim: Limits) -> Profile:
         """Ramp to ``target_v`` and keep it; milestone ``reached`` when the velocity is reached."""

@@ -585,9 +585,6 @@ class PositioningAxis(AxisTagsMixin):
             return
         self._interpolating = True
         self._start_profile(plan.profile, plan)
-        if self.profile.t_end <= t + _EPS_T and "end" in self._pending:
-            # nothing to move: completes in the next servo cycle like any other job
-            pass
 
     def _set_position_control(self, on: bool) -> None:
         if not self.servo or on == self.position_controlled:

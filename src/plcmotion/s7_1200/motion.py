@@ -116,7 +116,9 @@ class MC_MoveVelocity(ExecuteInstruction):  # noqa: N801
     def _final_for(self, job: Job):
         if job.state == JobState.DONE:                      # Velocity = 0.0 reached standstill
             return ("InVelocity", 0, 0)
-        if job.reached_once and not self._prev_execute:     # §9.5.3 exceptions
+        # §9.5.3 exceptions: velocity reached (InVelocity was shown) and Execute FALSE -> no
+        # CommandAborted / Error here (the error shows at MC_Power)
+        if self.InVelocity and not self._prev_execute:
             return None
         return super()._final_for(job)
 

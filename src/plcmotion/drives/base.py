@@ -28,9 +28,24 @@ class DriveChannel(ABC):
     def set_actual(self, bank: Any, value: float) -> None:
         """Re-reference the actual position so that it reads ``value`` now (homing)."""
 
+    @abstractmethod
+    def mechanical_position(self) -> float:
+        """Where the load really is, in machine coordinates (what switches and zero marks see)."""
+
     @property
     def communication_ok(self) -> bool:
         return True
+
+    # encoder zero marks (reference mark search of a PROFIdrive encoder); drives without them ignore it
+    def arm_zero_mark(self, direction: float) -> None:
+        """Latch the actual value at the next zero mark passed in ``direction`` (+1 / -1)."""
+
+    def disarm_zero_mark(self) -> None:
+        """Stop a zero mark search."""
+
+    def zero_mark_latched(self) -> float | None:
+        """The actual value latched at a zero mark since arming (once), or None."""
+        return None
 
 
 class DriveGroup(ABC):

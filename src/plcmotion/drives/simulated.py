@@ -51,6 +51,26 @@ class _ServoChannel(DriveChannel):
         g, m = self.group, self.member
         return bool(g.en[m]) and t >= g.ready_at[m] - 1e-12
 
+    def mechanical_position(self) -> float:
+        return float(self.group.x[self.member])
+
+    def arm_zero_mark(self, direction: float) -> None:
+        g, m = self.group, self.member
+        g.zm_dir[m] = 1.0 if direction > 0 else -1.0
+        g.zm_hit[m] = math.nan
+
+    def disarm_zero_mark(self) -> None:
+        self.group.zm_dir[self.member] = 0.0
+
+    def zero_mark_latched(self) -> float | None:
+        g, m = self.group, self.member
+        hit = g.zm_hit[m]
+        if math.isnan(hit):
+            return None
+        g.zm_hit[m] = math.nan
+        g.zm_dir[m] = 0.0
+        return float(hit)
+
     def set_actual(self, bank: Any, value: float) -> None:
         g, m = self.group, self.member
         counted = math.floor(g.x[m] / g.q[m]) * g.q[m]
@@ -63,7 +83,8 @@ class _ServoChannel(DriveChannel):
 class ServoDrives(DriveGroup):
     """Closed-loop drives (PROFIdrive telegram or analog speed setpoint) with incremental encoders."""
 
-    _FIELDS = ("x", "v", "cmd", "e", "tfac", "vlim", "off_dec", "ready_at", "ready_delay", "q", "off", "last")
+    _FIELDS = ("x", "v", "cmd", "e", "tfac", "vlim", "off_dec", "ready_at", "ready_delay", "q", "off", "last",
+               "zm_dir", "zm_dist", "zm_off", "zm_hit")
 
     def __init__(self) -> None:
         self.idx = np.zeros(0, dtype=np.intp)
@@ -78,9 +99,16 @@ class ServoDrives(DriveGroup):
         off_time = cfg["Plant.OffRampTime"]
         q = encoder_increment(cfg)
         x0 = cfg["Plant.InitialPosition"]
+        zm_dist = cfg["Plant.ZeroMarkDistance"]
+        if zm_dist is None:
+            # one zero mark per encoder revolution; a linear encoder has a single one
+            rotary = cfg["Sensor[1].System"] == 1
+            zm_dist = ((cfg["Mechanics.LeadScrew"] if cfg["Sensor[1].MountingMode"] == 0
+                        else cfg["Sensor[1].Parameter.DistancePerRevolution"]) if rotary else math.inf)
         values = dict(x=x0, v=0.0, cmd=0.0, e=e, tfac=tc * (1 - e), vlim=vlim,
                       off_dec=(vlim / off_time) if off_time > 0 else math.inf, ready_at=math.inf,
-                      ready_delay=cfg["Plant.ReadyDelay"], q=q, off=0.0, last=math.floor(x0 / q) * q)
+                      ready_delay=cfg["Plant.ReadyDelay"], q=q, off=0.0, last=math.floor(x0 / q) * q,
+                      zm_dir=0.0, zm_dist=zm_dist, zm_off=cfg["Plant.ZeroMarkOffset"], zm_hit=math.nan)
         for name in self._FIELDS:
             setattr(self, name, np.append(getattr(self, name), values[name]))
         self.idx = np.append(self.idx, index)
@@ -102,7 +130,10 @@ class ServoDrives(DriveGroup):
         with np.errstate(invalid="ignore", divide="ignore"):
             x_off = np.where(speed > dv, (v0 + v_off) * (0.5 * dt), v0 * speed / (2 * self.off_dec))
         self.v = np.where(on, v_on, v_off)
+        x_prev = self.x
         self.x = self.x + np.where(on, x_on, x_off)
+        if self.zm_dir.any():
+            self._zero_marks(x_prev)
         act = np.floor(self.x / self.q) * self.q + self.off
         bank.act_v[self.idx] = (act - self.last) / dt
         bank.act_p[self.idx] = act
@@ -111,6 +142,27 @@ class ServoDrives(DriveGroup):
     def write(self, bank: Any, t: float) -> None:
         if len(self.idx):
             self.cmd = np.clip(bank.cmd_v[self.idx], -self.vlim, self.vlim)
+
+    def _zero_marks(self, x_prev: np.ndarray) -> None:
+        """Latch the exact encoder value at a zero mark crossed in the armed direction (hardware latch)."""
+        for m in np.flatnonzero(self.zm_dir):
+            a, b, d = float(x_prev[m]), float(self.x[m]), float(self.zm_dir[m])
+            if (b - a) * d <= 0.0:
+                continue
+            dist, off = float(self.zm_dist[m]), float(self.zm_off[m])
+            if math.isinf(dist):
+                mark = off if (off - a) * d > 0 and (b - off) * d >= 0 else None
+            else:
+                k = math.floor((a - off) / dist) + (1 if d > 0 else 0)
+                mark = off + k * dist
+                if d < 0 and mark >= a:
+                    mark -= dist
+                if not ((mark - a) * d > 0 and (b - mark) * d >= 0):
+                    mark = None
+            if mark is not None:
+                q = float(self.q[m])
+                self.zm_hit[m] = math.floor(mark / q) * q + float(self.off[m])
+                self.zm_dir[m] = 0.0
 
 
 class _DirectChannel(DriveChannel):
@@ -128,8 +180,15 @@ class _DirectChannel(DriveChannel):
 
     def set_actual(self, bank: Any, value: float) -> None:
         g, m = self.group, self.member
+        i = g.idx[m]
+        # the load does not move when the coordinates change: keep the machine position continuous
+        g.mech_offset[m] += float(bank.act_p[i]) - value
         g.grid[m] = value
-        bank.act_p[g.idx[m]] = value
+        bank.act_p[i] = value
+
+    def mechanical_position(self) -> float:
+        g, m = self.group, self.member
+        return float(g.bank.act_p[g.idx[m]]) + float(g.mech_offset[m])
 
     @property
     def communication_ok(self) -> bool:
@@ -139,11 +198,13 @@ class _DirectChannel(DriveChannel):
 class SetpointDrives(DriveGroup):
     """Actual value = setpoint: rounded to whole pulses for a stepper on a PTO, exact for the ideal drive."""
 
-    def __init__(self, stepper: bool) -> None:
+    def __init__(self, stepper: bool, bank: Any) -> None:
         self.stepper = stepper
         self.idx = np.zeros(0, dtype=np.intp)
         self.pulse = np.zeros(0)
         self.grid = np.zeros(0)
+        self.mech_offset = np.zeros(0)          # machine position = actual value + offset
+        self.bank = bank
 
     def add(self, index: int, cfg: Mapping[str, Any], servo_cycle: float, t: float) -> DriveChannel:
         pulse = (cfg["Mechanics.LeadScrew"] / cfg["Actor.DriveParameter.PulsesPerDriveRevolution"]
@@ -151,6 +212,7 @@ class SetpointDrives(DriveGroup):
         self.idx = np.append(self.idx, index)
         self.pulse = np.append(self.pulse, pulse)
         self.grid = np.append(self.grid, 0.0)
+        self.mech_offset = np.append(self.mech_offset, cfg["Plant.InitialPosition"])
         return _DirectChannel(self, len(self.idx) - 1)
 
     def read(self, bank: Any, t: float, dt: float) -> None:

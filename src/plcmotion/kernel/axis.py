@@ -15,6 +15,9 @@ from .faults import Fault, Reaction
 from .jobs import MOTION_KINDS, POSITIONING_KINDS, Job, JobKind, JobState
 from .motion import DirectionFault, MotionPlanner, Plan, limits, modulo_target, wrap
 from .profiles import Planner, PlanningError, Profile
+from .config import ConfigMixin, TagAccessError
+from .homing import HomingMixin
+from .switches import SwitchesMixin
 from .tags import AxisTagsMixin
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -38,11 +41,7 @@ class ConfigurationError(ValueError):
         super().__init__("\n".join(lines))
 
 
-class TagAccessError(AttributeError):
-    """Writing a tag the user program may not write (access R or WP, S7-1200 V6 §12.9 legends)."""
-
-
-class PositioningAxis(AxisTagsMixin):
+class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, AxisTagsMixin):
     """Positioning axis technology object (TO_PositioningAxis)."""
 
     def __init__(self, ctl: "Controller", name: str, cfg: Mapping[str, Any]):
@@ -82,6 +81,7 @@ class PositioningAxis(AxisTagsMixin):
         self.reference_mark = 0.0
         self.last_internal_error: str | None = None
         self.holding_zero_velocity = False            # standstill reached by MC_MoveVelocity(Velocity=0)
+        self.abs_offset = 0.0                         # StatusSensor.AbsEncoderOffset (retentive)
 
         b = ctl.bank
         i = self.index
@@ -90,7 +90,17 @@ class PositioningAxis(AxisTagsMixin):
         b.servo[i] = self.servo
         b.follow_act[i] = self.servo
         self._apply_bank_config()
-        self._start_profile(Planner.hold(t, x0))
+        if self.absolute_encoder():
+            # an absolute encoder gives its position at once; the adjustment (modes 6/7) is retentive
+            kept = ctl.retain.get(name, {})
+            self.abs_offset = float(kept.get("AbsEncoderOffset", 0.0))
+            self.homed = bool(kept.get("HomingDone", False))
+            self.drive.set_actual(b, float(b.act_p[i]) + self.abs_offset)
+            b.sp_p[i] = b.act_p[i]
+        self._setup_io()
+        if not self.sim:
+            ctl.plant.wire_axis(self.cfg, self.drive, t)
+        self._start_profile(Planner.hold(t, float(b.sp_p[i])))
 
     # ------------------------------------------------------------------------------------------------
     # small helpers
@@ -203,7 +213,7 @@ class PositioningAxis(AxisTagsMixin):
 
     def _on_timer(self, name: str, t: float) -> None:
         if name == "ready" and self.state == ENABLING:
-            if self.drive.ready(t):
+            if self.drive.ready(t) and self.drive_ready_signal():
                 self._become_enabled(t)
             else:
                 self._timers["ready"] = t + self.ctl.servo_cycle
@@ -223,6 +233,9 @@ class PositioningAxis(AxisTagsMixin):
             self.raise_alarm(F.alarm(F.SW_LIMIT_MAX if side == "max" else F.SW_LIMIT_MIN, "exceeded", reaction))
             return
         if name != "end":
+            return
+        if job is not None and job.busy and job.kind == JobKind.HOME_ACTIVE:
+            self._homing_end(job, t)
             return
         self._interpolating = False
         if plan is not None and plan.limit_side and plan.limit_detail != "exceeded":
@@ -321,16 +334,17 @@ class PositioningAxis(AxisTagsMixin):
         self.position_controlled = start_mode == 1 or not self.servo
         self.state = ENABLING
         self.drive.set_enable(True, t)
-        if self.servo:
+        self._set_enable_output(True)
+        if self.sim or (not self.servo and self.drive_ready_signal()):
+            self._become_enabled(t)          # no drive feedback to wait for (§11.1.1, §5.4.3.1)
+        else:
             self._timers["ready"] = t
             self._schedule()
-        else:
-            self._become_enabled(t)
 
     def _become_enabled(self, t: float) -> None:
         self.state = ENABLED
         b, i = self.ctl.bank, self.index
-        if not self.homed:
+        if not self.homed and not self.absolute_encoder():
             # an axis that is not homed counts from the position at enable (§12.9.1)
             self.drive.set_actual(b, 0.0)
             b.act_p[i] = 0.0
@@ -370,6 +384,7 @@ class PositioningAxis(AxisTagsMixin):
         self._after_stop = None
         self.holding_zero_velocity = False
         self.drive.set_enable(False, t)
+        self._set_enable_output(False)
         self.state = DISABLED
         self._stop_positioning_monitor()
         self._timers.pop("ready", None)
@@ -444,79 +459,6 @@ class PositioningAxis(AxisTagsMixin):
         return None
 
     # ------------------------------------------------------------------------------------------------
-    # configuration at runtime: effective codes of the §12.9 legends
-    def _moment_codes(self, moment: str) -> set[int]:
-        if not self.pto:
-            return {10, 1, 2, 5, 6, 7, 8} if moment == "servo" else set()
-        return {"enable": {1, 2}, "command": {5}, "jog_stop": {6}, "passive_homing": {7},
-                "active_homing": {8}, "disable": {1}}.get(moment, set())
-
-    def _apply_dirty(self, moment: str) -> Fault | None:
-        """Make written tag values effective at ``moment``; an invalid value becomes a config alarm."""
-        if not self._dirty:
-            return None
-        codes = self._moment_codes(moment)
-        due = [path for path in self._dirty if codes & set(P.SCHEMA[path].effective)]
-        if not due:
-            return None
-        candidate = dict(self.eff)
-        for path in due:
-            candidate[path] = self.cfg[path]
-        bad = self._validate(candidate, due)
-        if bad is not None:
-            self.raise_alarm(bad)
-            return bad
-        for path in due:
-            self._dirty.discard(path)
-        changed = any(candidate[p] != self.eff[p] for p in due)
-        self.eff = candidate
-        if changed:
-            self._apply_bank_config()
-            if moment == "servo":
-                self._replan()
-        return None
-
-    def _validate(self, cfg: Mapping[str, Any], paths: list[str] | None = None) -> Fault | None:
-        for path in paths if paths is not None else list(cfg):
-            param = P.SCHEMA.get(path)
-            if param is None:
-                continue
-            reason, _ = param.check(cfg[path])
-            if reason is not None:
-                return F.config_fault(path, reason, f"{path} = {cfg[path]!r}; allowed: {param.allowed()}")
-        for issue in P.rule_issues(cfg):
-            return F.config_fault(issue.path, issue.reason, issue.message())
-        return None
-
-    def _config_fault(self, apply: bool = False) -> Fault | None:
-        """Validate all tag values; with ``apply`` make them effective when valid."""
-        bad = self._validate(self.cfg)
-        if bad is None and apply and self._dirty:
-            self.eff = dict(self.cfg)
-            self._dirty.clear()
-            self._apply_bank_config()
-        return bad
-
-    def write_tag(self, path: str, value: Any, *, via_write_param: bool = False) -> None:
-        """Assign a configuration tag from the user program (direct access or MC_WriteParam)."""
-        path = P.canonical(path)
-        param = P.SCHEMA.get(path)
-        if param is None or param.access == P.P:
-            raise TagAccessError(f"{self.name}.{path} is not a writable tag of the positioning axis")
-        allowed = param.access == P.RW or (via_write_param and param.access == P.WP)
-        if not allowed:
-            raise TagAccessError(f"{self.name}.{path} is read-only in the user program (access {param.access}"
-                                 + (", write it with MC_WriteParam while the axis is disabled" if param.access == P.WP
-                                    else "") + ")")
-        reason, norm = param.check(value)
-        if reason == "type":
-            raise TypeError(f"{self.name}.{path}: {value!r} is not a {param.kind.upper()} value")
-        self.cfg[path] = norm if reason is None else (float(value) if param.kind == P.REAL else value)
-        self._dirty.add(path)
-        if not self.pto:
-            self.ctl._dirty_axes.add(self)
-
-    # ------------------------------------------------------------------------------------------------
     # jobs
     def check_start(self, job: Job) -> Fault | None:
         """Conditions every motion job needs (§11.1 'Requirements', §12.8 16#82xx)."""
@@ -564,6 +506,11 @@ class PositioningAxis(AxisTagsMixin):
             self._set_position_control(True)
         elif job.kind in (JobKind.VELOCITY, JobKind.JOG):
             self._set_position_control(job.position_controlled)
+        if job.kind == JobKind.HOME_ACTIVE:
+            if self not in self.ctl._input_axes:
+                self.ctl._input_axes.append(self)
+            self._homing_start(job, t)
+            return
         self._plan_job(job, t)
 
     def _absolute_target(self, job: Job, p: float, v: float, a: float) -> float:
@@ -583,6 +530,10 @@ class PositioningAxis(AxisTagsMixin):
         except PlanningError as exc:
             self.raise_alarm(F.alarm(F.INTERNAL, "planning", Reaction.EMERGENCY, str(exc)), job=job)
             return
+        fault = self._hw_direction_fault(plan.profile, p)
+        if fault is not None:
+            self.raise_alarm(fault, job=job)
+            return
         self._interpolating = True
         self._start_profile(plan.profile, plan)
 
@@ -596,6 +547,8 @@ class PositioningAxis(AxisTagsMixin):
         """Re-plan the running motion from the current state (parameter change, coordinate shift)."""
         job = self.job
         t = self.now
+        if job is not None and job.busy and job.kind == JobKind.HOME_ACTIVE:
+            return                                          # homing plans its own phases
         if job is not None and job.busy and job.kind in MOTION_KINDS and self._interpolating:
             self._plan_job(job, t)
         elif self.sw_limits_effective() and self.state in (ENABLED, DISABLING):
@@ -623,43 +576,3 @@ class PositioningAxis(AxisTagsMixin):
         job.velocity = velocity
         job.in_velocity = False
         self._plan_job(job, self.now)
-
-    # ------------------------------------------------------------------------------------------------
-    # homing (§11.1.3): direct homing here; active and passive homing in homing.py
-    def home_direct(self, job: Job) -> None:
-        """Mode 0: position := Position; mode 1: position := position + Position."""
-        if self.state != ENABLED:
-            job.finish(JobState.ERROR, F.reject(F.NOT_ENABLED))
-            return
-        if self.job is not None and self.job.busy and self.job.kind == JobKind.HOME_ACTIVE:
-            job.finish(JobState.ERROR, F.reject(F.REJECTED, "homing_active"))
-            return
-        b, i = self.ctl.bank, self.index
-        ref = float(b.sp_p[i])          # "the current axis position": the Position tag (setpoint, §12.9.1)
-        if job.mode == 0:
-            new = self._wrap(job.position)
-            delta = new - ref
-        else:
-            delta = job.position
-            new = ref + delta
-        self._shift(delta)
-        self.homed = True
-        self.reference_mark = self._wrap(new)
-        job.reference_position = self.reference_mark
-        job.finish(JobState.DONE)
-        self._replan()
-
-    def _shift(self, delta: float) -> None:
-        """Move the coordinate system by ``delta`` (setpoint, actual value, profile, targets)."""
-        if delta == 0.0:
-            return
-        b, i = self.ctl.bank, self.index
-        for seg in self.profile.segments:
-            seg.p += delta
-        b.seg_p[i] += delta
-        b.sp_p[i] += delta
-        self.drive.set_actual(b, float(b.act_p[i]) + delta if self.servo else float(b.sp_p[i]))
-        b.pm_target[i] += delta
-        job = self.job
-        if job is not None and job.kind != JobKind.ABSOLUTE:
-            job.target += delta

@@ -18,7 +18,7 @@ from typing import Any, Iterable, Mapping
 
 import numpy as np
 
-BOOL, INT, REAL = "bool", "int", "real"
+BOOL, INT, REAL, ADDR = "bool", "int", "real", "address"
 
 #: access rights (§12.9 legend): R read, RW read/write, WP write with MC_WriteParam while disabled,
 #: P plant/simulation parameter (configuration only)
@@ -37,6 +37,7 @@ class Param:
     lo_open: bool = False           # lo itself is not allowed
     choices: tuple | None = None
     doc: str = ""
+    optional: bool = False          # None allowed (not configured)
 
     def check(self, value: Any) -> tuple[str, Any] | None:
         """Return ``(reason, normalised)``: reason None when valid.
@@ -44,6 +45,18 @@ class Param:
         Reasons: ``type`` (wrong data type), ``format`` (NaN/inf), ``too_low``, ``too_high``,
         ``selection`` (not one of the allowed values).
         """
+        if value is None and self.optional:
+            return None, None
+        if self.kind == ADDR:
+            if not isinstance(value, str):
+                return "type", value
+            if value.strip() == "":
+                return None, ""
+            from .io import check_address
+            try:
+                return None, check_address(value, self.choices[0] if self.choices else None)
+            except ValueError:
+                return "selection", value
         if self.kind == BOOL:
             if isinstance(value, bool):
                 return None, value
@@ -77,6 +90,9 @@ class Param:
         """Human-readable admissible range, used in configuration error messages."""
         if self.kind == BOOL:
             return "true or false"
+        if self.kind == ADDR:
+            kind = self.choices[0] if self.choices else "I"
+            return f"an {'input' if kind == 'I' else 'output'} address like '{kind}0.{3 if kind == 'I' else 1}' or ''"
         if self.choices is not None:
             return "one of " + ", ".join(str(c) for c in self.choices)
         lo = "-inf" if self.lo is None else repr(self.lo)
@@ -101,6 +117,12 @@ _PARAMS: list[Param] = [
     Param("Actor.DriveParameter.MaxSpeed", REAL, 3000.0, R, (), 0.0, E12, lo_open=True,
           doc="maximum motor speed [1/min]; <= 2 x ReferenceSpeed (PROFIdrive), <= 1.17 x (analog)"),
     Param("Actor.DriveParameter.PulsesPerDriveRevolution", INT, 1000, WP, (2,), 1, 2147483647),
+    Param("Actor.Interface.EnableDriveOutput", ADDR, "", R, (), choices=("Q",),
+          doc="digital output 'Drive enabled' set by MC_Power ('' = none)"),
+    Param("Actor.Interface.DriveReadyInput", ADDR, "", R, (), choices=("I",),
+          doc="digital input 'Drive ready' ('' = none: the drive counts as ready)"),
+    Param("Actor.Interface.PTO", INT, 0, R, (), choices=(0, 1, 2, 3, 4),
+          doc="pulse generator PTO1..PTO4 of a PTO axis (0 = a pulse output of its own)"),
     # --- Sensor[1] §12.9.6 --------------------------------------------------------------------------
     Param(f"{_S}.Type", INT, 0, R, (), choices=(0, 1), doc="0 incremental, 1 absolute"),
     Param(f"{_S}.InverseDirection", BOOL, False, R),
@@ -121,9 +143,11 @@ _PARAMS: list[Param] = [
     Param(f"{_S}.ActiveHoming.SideInput", BOOL, False, RW, (1, 8, 10)),
     Param(f"{_S}.ActiveHoming.HomePositionOffset", REAL, 0.0, RW, (1, 8, 10), -E12, E12),
     Param(f"{_S}.ActiveHoming.SwitchLevel", BOOL, True, RW, (1, 8, 10)),
+    Param(f"{_S}.ActiveHoming.DigitalInputAddress", ADDR, "", R, (), choices=("I",)),
     Param(f"{_S}.PassiveHoming.Mode", INT, 2, WP, (2,), choices=(0, 1, 2)),
     Param(f"{_S}.PassiveHoming.SideInput", BOOL, False, RW, (1, 7, 10)),
     Param(f"{_S}.PassiveHoming.SwitchLevel", BOOL, True, RW, (1, 7, 10)),
+    Param(f"{_S}.PassiveHoming.DigitalInputAddress", ADDR, "", R, (), choices=("I",)),
     # --- Units, mechanics, modulo §12.9.7-§12.9.9 ---------------------------------------------------
     Param("Units.LengthUnit", INT, 1013, WP, (2,), choices=(-1, 1005, 1010, 1013, 1018, 1019),
           doc="-1 pulse, 1005 degree, 1010 m, 1013 mm, 1018 ft, 1019 in"),
@@ -146,8 +170,11 @@ _PARAMS: list[Param] = [
     Param("PositionLimits_SW.MinPosition", REAL, -10000.0, RW, (1, 5, 6, 10), -E12, E12),
     Param("PositionLimits_SW.MaxPosition", REAL, 10000.0, RW, (1, 5, 6, 10), -E12, E12),
     Param("PositionLimits_HW.Active", BOOL, False, RW, (1, 5, 6, 10)),
-    Param("PositionLimits_HW.MinSwitchLevel", BOOL, False, WP, (2,)),
+    Param("PositionLimits_HW.MinSwitchLevel", BOOL, False, WP, (2,),
+          doc="FALSE low level (NC contact) = approached, TRUE high level (NO contact) = approached"),
     Param("PositionLimits_HW.MaxSwitchLevel", BOOL, False, WP, (2,)),
+    Param("PositionLimits_HW.MinSwitchAddress", ADDR, "", R, (), choices=("I",)),
+    Param("PositionLimits_HW.MaxSwitchAddress", ADDR, "", R, (), choices=("I",)),
     # --- Homing §12.9.14 ----------------------------------------------------------------------------
     Param("Homing.AutoReversal", BOOL, False, RW, (1, 8, 10)),
     Param("Homing.ApproachDirection", BOOL, True, RW, (1, 8, 10)),
@@ -177,10 +204,42 @@ _PARAMS: list[Param] = [
           doc="limit frequency [Hz] of the pulse output (§2.1.1: 20 kHz, 100 kHz, 200 kHz or 1 MHz)"),
     Param("Plant.InitialPosition", REAL, 0.0, P, (), -E12, E12,
           doc="load position [user unit] of the simulated mechanics at controller start"),
+    Param("Plant.HWLimitMinPosition", REAL, None, P, (), -E12, E12, optional=True,
+          doc="machine position at and below which the low hardware limit switch is actuated"),
+    Param("Plant.HWLimitMaxPosition", REAL, None, P, (), -E12, E12, optional=True,
+          doc="machine position at and above which the high hardware limit switch is actuated"),
+    Param("Plant.HomingSwitchPosition", REAL, None, P, (), -E12, E12, optional=True,
+          doc="machine position of the lower end of the homing switch (reference cam)"),
+    Param("Plant.HomingSwitchLength", REAL, 10.0, P, (), 0.0, E12, lo_open=True,
+          doc="length of the homing switch [user unit]"),
+    Param("Plant.ZeroMarkDistance", REAL, None, P, (), 0.0, E12, lo_open=True, optional=True,
+          doc="distance between encoder zero marks (default: one encoder revolution)"),
+    Param("Plant.ZeroMarkOffset", REAL, 0.0, P, (), -E12, E12,
+          doc="machine position of one encoder zero mark"),
 ]
 # fmt: on
 
 SCHEMA: dict[str, Param] = {p.path: p for p in _PARAMS}
+
+#: S7 data type of the integer tags (§12.9 tables); BOOL tags are Bool, REAL tags Real
+_INT_TYPES = {
+    "Actor.DirectionMode": "Int", "Units.LengthUnit": "Int",
+    "Sensor[1].Interface.Number": "UDInt", "Sensor[1].Parameter.StepsPerRevolution": "UDInt",
+    "Sensor[1].Parameter.FineResolutionXist1": "UDInt", "Sensor[1].Parameter.FineResolutionXist2": "UDInt",
+    "Sensor[1].Parameter.DeterminableRevolutions": "UDInt", "Actor.Interface.PTO": "DWord",
+}
+
+
+def data_type(path: str) -> str:
+    """S7 data type of a configuration tag: Bool, Int, DInt, UDInt, Real, DWord or VRef (addresses)."""
+    param = SCHEMA[path]
+    if param.kind == BOOL:
+        return "Bool"
+    if param.kind == REAL:
+        return "Real"
+    if param.kind == ADDR:
+        return "VRef"
+    return _INT_TYPES.get(path, "DInt")
 
 # Alternative spellings found in the manuals (catalog §11 item 8, §7.15) mapped to the canonical path.
 _PREFIX_ALIASES = (
@@ -330,6 +389,24 @@ def rule_issues(cfg: Mapping[str, Any]) -> list[Issue]:
                 f"{nmax:g} 1/min and {cfg['Mechanics.LeadScrew']:g} user units per motor revolution")
     if vmin > vmax:
         add("DynamicLimits.MinVelocity", "min_above_max", f"at most DynamicLimits.MaxVelocity = {vmax:g}")
+    # hardware limit switches need their inputs (§5.4.4.3)
+    if cfg["PositionLimits_HW.Active"]:
+        for path in ("PositionLimits_HW.MinSwitchAddress", "PositionLimits_HW.MaxSwitchAddress"):
+            if not cfg[path]:
+                add(path, "missing", "an input address like 'I0.1' when PositionLimits_HW.Active is true")
+    if cfg["Homing.AutoReversal"] and not (cfg["PositionLimits_HW.MinSwitchAddress"]
+                                           or cfg["PositionLimits_HW.MaxSwitchAddress"]):
+        add("Homing.AutoReversal", "no_hw_limits", "false unless hardware limit switch inputs are configured")
+    # the simulated plant drives configured inputs only
+    lo_sw, hi_sw = cfg["Plant.HWLimitMinPosition"], cfg["Plant.HWLimitMaxPosition"]
+    if lo_sw is not None and hi_sw is not None and lo_sw >= hi_sw:
+        add("Plant.HWLimitMinPosition", "low_above_high", f"below Plant.HWLimitMaxPosition = {hi_sw:g}")
+    for plant, inputs in (("Plant.HWLimitMinPosition", ("PositionLimits_HW.MinSwitchAddress",)),
+                          ("Plant.HWLimitMaxPosition", ("PositionLimits_HW.MaxSwitchAddress",)),
+                          ("Plant.HomingSwitchPosition", ("Sensor[1].ActiveHoming.DigitalInputAddress",
+                                                          "Sensor[1].PassiveHoming.DigitalInputAddress"))):
+        if cfg[plant] is not None and not any(cfg[i] for i in inputs):
+            add(plant, "no_input", "a switch needs its input: set " + " or ".join(inputs))
     if (not cfg["Modulo.Enable"]
             and cfg["PositionLimits_SW.MinPosition"] > cfg["PositionLimits_SW.MaxPosition"]):
         add("PositionLimits_SW.MinPosition", "low_above_high",

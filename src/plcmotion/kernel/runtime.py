@@ -17,11 +17,14 @@ from typing import Any, Callable, Mapping
 import numpy as np
 
 from ..drives.base import DriveGroup
+from ..drives.plant import Plant
 from ..drives.simulated import ServoDrives, SetpointDrives
+from . import retain
 from . import monitoring
 from . import parameters as P
 from .axis import ConfigurationError, PositioningAxis
 from .bank import AxisBank
+from .io import DEFAULT_FILTER, DigitalInputs, DigitalOutputs
 
 RUN, STOP = "RUN", "STOP"
 _EPS_T = 1e-9
@@ -43,7 +46,8 @@ class Controller:
     ``app_cycle``: period of the user programs [s], a whole multiple of ``servo_cycle`` (default 4 ms).
     """
 
-    def __init__(self, servo_cycle: float = 0.001, app_cycle: float = 0.004):
+    def __init__(self, servo_cycle: float = 0.001, app_cycle: float = 0.004, *,
+                 input_filter: float = DEFAULT_FILTER, state_file: str | None = None):
         for name, value in (("servo_cycle", servo_cycle), ("app_cycle", app_cycle)):
             if (not isinstance(value, numbers.Real) or isinstance(value, bool) or not math.isfinite(value)
                     or value <= 0):
@@ -74,6 +78,13 @@ class Controller:
         self._n_pm = 0                              # axes in positioning monitoring
         self._dirty_axes: set[PositioningAxis] = set()
         self._servo_defect = False
+        self.inputs = DigitalInputs(input_filter)
+        self.outputs = DigitalOutputs()
+        self.plant = Plant(self.inputs)
+        self._input_axes: list[PositioningAxis] = []   # axes that watch inputs every servo cycle
+        # retentive data (absolute encoder adjustment), kept in ``state_file`` when one is given
+        self.state_file = state_file
+        self.retain: dict[str, dict] = retain.load(state_file) if state_file else {}
 
     # --- time ------------------------------------------------------------------------------------------
     @property
@@ -108,10 +119,17 @@ class Controller:
     def _drive_group(self, kind: str) -> DriveGroup:
         group = self._groups.get(kind)
         if group is None:
-            group = ServoDrives() if kind == "servo" else SetpointDrives(stepper=kind == "stepper")
+            group = ServoDrives() if kind == "servo" else SetpointDrives(stepper=kind == "stepper", bank=self.bank)
             self._groups[kind] = group
             self._group_list.append(group)
         return group
+
+    def _retain_axis(self, axis: PositioningAxis) -> None:
+        """Store the retentive data of an axis (written atomically to the state file)."""
+        if axis.absolute_encoder():
+            self.retain[axis.name] = {"AbsEncoderOffset": axis.abs_offset, "HomingDone": axis.homed}
+            if self.state_file:
+                retain.save(self.state_file, self.retain)
 
     def _axis_at(self, index: int) -> PositioningAxis:
         return self._by_index[index]
@@ -226,7 +244,15 @@ class Controller:
         dt = self.servo_cycle
         for g in self._group_list:
             g.read(b, t, dt)
+        if self.plant.items:
+            self.plant.update(t)
+        self.inputs.update(t)
         self._run_hooks(self._pre_servo, t)
+        for axis in self._input_axes:
+            try:
+                axis._check_inputs(t)
+            except Exception as exc:
+                axis._internal_error(exc)
         if b.n:
             if self._dirty_axes:
                 dirty = sorted(self._dirty_axes, key=lambda ax: ax.index)

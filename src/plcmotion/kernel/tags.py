@@ -97,7 +97,7 @@ DYNAMIC: dict[str, Callable[["PositioningAxis"], Any]] = {
     "StatusDrive.AdaptionState": lambda ax: 3,
     "StatusSensor.State": lambda ax: 0 if ax.pto else 2,
     "StatusSensor.CommunicationOK": lambda ax: not ax.pto,
-    "StatusSensor.AbsEncoderOffset": lambda ax: 0.0,
+    "StatusSensor.AbsEncoderOffset": lambda ax: ax.abs_offset,
     "StatusSensor.AdaptionState": lambda ax: 3,
     "StatusBits.Activated": lambda ax: True,
     "StatusBits.Enable": lambda ax: ax.state in ("enabled", "disabling"),
@@ -120,8 +120,8 @@ DYNAMIC: dict[str, Callable[["PositioningAxis"], Any]] = {
     "StatusBits.RestartRequired": lambda ax: False,
     "StatusBits.SWLimitMinActive": lambda ax: _sw_active(ax, "min"),
     "StatusBits.SWLimitMaxActive": lambda ax: _sw_active(ax, "max"),
-    "StatusBits.HWLimitMinActive": lambda ax: False,
-    "StatusBits.HWLimitMaxActive": lambda ax: False,
+    "StatusBits.HWLimitMinActive": lambda ax: ax.hw_approached["min"],
+    "StatusBits.HWLimitMaxActive": lambda ax: ax.hw_approached["max"],
     "StatusBits.AxisSimulation": lambda ax: ax.sim,
     "StatusBits.NonPositionControlled": lambda ax: ax.servo and ax.state in ("enabled", "disabling")
     and not ax.position_controlled,
@@ -139,11 +139,47 @@ DYNAMIC: dict[str, Callable[["PositioningAxis"], Any]] = {
     "ErrorBits.FollowingErrorFault": lambda ax: F.FOLLOWING_ERROR in _alarm_kinds(ax),
     "ErrorBits.PositioningFault": lambda ax: F.POSITIONING in _alarm_kinds(ax),
 }
+#: data types of the status tags (§12.9.1 - §12.9.4, §12.9.20 - §12.9.24)
+DYNAMIC_TYPES: dict[str, str] = {path: ("Bool" if path.startswith(("StatusBits.", "ErrorBits."))
+                                        or path in ("StatusDrive.InOperation", "StatusDrive.CommunicationOK",
+                                                    "StatusSensor.CommunicationOK")
+                                        else "DInt" if path.endswith(("State", "AdaptionState")) else "Real")
+                                 for path in DYNAMIC}
+#: status tags that MC_ReadParam may read ("RP" in §12.9); ErrorBits.HWLimit is RCCP only (§12.9.24)
+READ_PARAM_TAGS = frozenset(p for p in DYNAMIC if p != "ErrorBits.HWLimit" and p != "Acceleration")
+
 _DYNAMIC_ALIASES = {
     "StatusSensor[1].AdaptionState": "StatusSensor.AdaptionState",
     "ErrorBits.FollowingError": "ErrorBits.FollowingErrorFault",      # V7 table spelling
 }
 _STATUS_GROUPS = ("StatusBits", "ErrorBits", "StatusPositioning", "StatusDrive", "StatusSensor")
+
+
+class TagRef:
+    """A reference to one tag of an axis, what a VARIANT pointer to ``<axis>.<tag>`` is in a PLC program
+    (used by MC_ReadParam / MC_WriteParam).  Create it with ``axis.ref("StatusBits.Enable")``."""
+
+    __slots__ = ("axis", "path", "data_type", "status")
+
+    def __init__(self, axis: "PositioningAxis", path: str, data_type: str, status: bool):
+        self.axis, self.path, self.data_type, self.status = axis, path, data_type, status
+
+    def read(self) -> Any:
+        return self.axis.tag(self.path)
+
+    @property
+    def readable_by_read_param(self) -> bool:
+        return self.status and self.path in READ_PARAM_TAGS
+
+    @property
+    def access(self) -> str:
+        """Access right of §12.9: 'RP' status tags, 'RW', 'WP', 'R' configuration tags."""
+        if self.status:
+            return "RP" if self.path in READ_PARAM_TAGS else "RCCP"
+        return P.SCHEMA[self.path].access
+
+    def __repr__(self) -> str:
+        return f"<TagRef {self.axis.name}.{self.path} : {self.data_type}>"
 
 
 class _StatusView:
@@ -294,6 +330,16 @@ class AxisTagsMixin:
         canon = P.canonical(path)
         if canon in P.SCHEMA and P.SCHEMA[canon].access != P.P:
             return lambda: self.cfg[canon]  # type: ignore[attr-defined]
+        raise KeyError(_unknown(self, path))  # type: ignore[arg-type]
+
+    def ref(self, path: str) -> TagRef:
+        """A reference to the tag at ``path`` (for MC_ReadParam / MC_WriteParam)."""
+        canon = _DYNAMIC_ALIASES.get(path, path)
+        if canon in DYNAMIC:
+            return TagRef(self, canon, DYNAMIC_TYPES[canon], True)  # type: ignore[arg-type]
+        canon = P.canonical(path)
+        if canon in P.SCHEMA and P.SCHEMA[canon].access != P.P:
+            return TagRef(self, canon, P.data_type(canon), False)  # type: ignore[arg-type]
         raise KeyError(_unknown(self, path))  # type: ignore[arg-type]
 
     def set_tag(self, path: str, value: Any) -> None:

@@ -142,6 +142,13 @@ CONFIG_IDS: dict[str, int] = {
     "Actor.DataAdaption": 0x8640,
     "Sensor[1].DataAdaption": 0x8641,
     "Sensor[1].Interface.Number": 0x8646,
+    "Actor.Interface.EnableDriveOutput": 0x8602,
+    "Actor.Interface.DriveReadyInput": 0x8603,
+    "Actor.Interface.PTO": 0x8600,
+    "PositionLimits_HW.MinSwitchAddress": 0x860D,
+    "PositionLimits_HW.MaxSwitchAddress": 0x860E,
+    "Sensor[1].ActiveHoming.DigitalInputAddress": 0x8612,
+    "Sensor[1].PassiveHoming.DigitalInputAddress": 0x8616,
     "Simulation.Mode": 0x8647,
 }
 #: rules that have an ErrorID of their own
@@ -152,6 +159,14 @@ _CONFIG_RULES: dict[tuple[str, str], tuple[int, int]] = {
     ("Homing.AutoReversal", "rule:no_hw_limits"): (0x8613, 0x0001),
     ("Actor.DirectionMode", "rule:both_without_direction_output"): (0x861A, 0x002D),
     ("Sensor[1].ActiveHoming.Mode", "rule:pto_homing_mode"): (0x8617, 0x0011),
+    ("PositionLimits_HW.MinSwitchAddress", "rule:missing"): (0x860D, 0x000B),
+    ("PositionLimits_HW.MaxSwitchAddress", "rule:missing"): (0x860E, 0x000B),
+    ("PositionLimits_HW.MinSwitchAddress", "selection"): (0x860D, 0x000B),
+    ("PositionLimits_HW.MaxSwitchAddress", "selection"): (0x860E, 0x000B),
+    ("Sensor[1].ActiveHoming.DigitalInputAddress", "selection"): (0x8612, 0x000B),
+    ("Sensor[1].PassiveHoming.DigitalInputAddress", "selection"): (0x8616, 0x0011),
+    ("Actor.Interface.EnableDriveOutput", "selection"): (0x8602, 0x000B),
+    ("Actor.Interface.DriveReadyInput", "selection"): (0x8603, 0x000B),
     ("Sensor[1].PassiveHoming.Mode", "rule:pto_homing_mode"): (0x8618, 0x0011),
 }
 _VELOCITY_FAMILY = {0x8606, 0x8607, 0x8608, 0x8609, 0x860A}

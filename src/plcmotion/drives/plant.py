@@ -1,0 +1,84 @@
+"""The simulated machine around the drives: switches that the moving load actuates.
+
+Each servo cycle the plant looks at the machine position of every axis (``DriveChannel.mechanical_position``)
+and sets the electrical level of the inputs the switches are wired to: hardware limit switches stay
+actuated beyond their position (S7-1200 V6 §5.4.4.3 requires switches that remain actuated), a homing
+switch (reference cam) is actuated over its length.  A drive's "ready" signal is wired the same way.
+The controller's input filters then decide what the CPU sees.
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, Callable
+
+from .base import DriveChannel
+
+
+class Switch:
+    """A switch actuated while the machine position lies in [low, high]."""
+
+    __slots__ = ("channel", "address", "low", "high", "active_high", "name")
+
+    def __init__(self, channel: DriveChannel, address: str, low: float, high: float, active_high: bool, name: str):
+        self.channel, self.address = channel, address
+        self.low, self.high, self.active_high, self.name = low, high, active_high, name
+
+    def actuated(self) -> bool:
+        x = self.channel.mechanical_position()
+        return self.low <= x <= self.high
+
+    def level(self, t: float) -> bool:
+        return self.actuated() == self.active_high
+
+
+class Signal:
+    """An input wired to a signal of the drive (e.g. 'Drive ready')."""
+
+    __slots__ = ("address", "source", "name")
+
+    def __init__(self, address: str, source: Callable[[float], bool], name: str):
+        self.address, self.source, self.name = address, source, name
+
+    def level(self, t: float) -> bool:
+        return bool(self.source(t))
+
+
+class Plant:
+    """All switches and signals of the simulated machine of one controller."""
+
+    def __init__(self, inputs: Any):
+        self.inputs = inputs
+        self.items: list[Switch | Signal] = []
+
+    def add(self, item: Switch | Signal, t: float = 0.0) -> None:
+        self.items.append(item)
+        self.inputs.initialize(item.address, item.level(t))
+
+    def update(self, t: float) -> None:
+        set_level = self.inputs.set_level
+        for item in self.items:
+            set_level(item.address, item.level(t))
+
+    def wire_axis(self, cfg: dict, channel: DriveChannel, t: float) -> None:
+        """Create the switches an axis configuration describes (``Plant.*`` and the input addresses)."""
+        lo = cfg["Plant.HWLimitMinPosition"]
+        if lo is not None and cfg["PositionLimits_HW.MinSwitchAddress"]:
+            self.add(Switch(channel, cfg["PositionLimits_HW.MinSwitchAddress"], -math.inf, lo,
+                            cfg["PositionLimits_HW.MinSwitchLevel"], "low hardware limit switch"), t)
+        hi = cfg["Plant.HWLimitMaxPosition"]
+        if hi is not None and cfg["PositionLimits_HW.MaxSwitchAddress"]:
+            self.add(Switch(channel, cfg["PositionLimits_HW.MaxSwitchAddress"], hi, math.inf,
+                            cfg["PositionLimits_HW.MaxSwitchLevel"], "high hardware limit switch"), t)
+        cam = cfg["Plant.HomingSwitchPosition"]
+        if cam is not None:
+            length = cfg["Plant.HomingSwitchLength"]
+            seen: set[str] = set()
+            for kind in ("ActiveHoming", "PassiveHoming"):
+                address = cfg[f"Sensor[1].{kind}.DigitalInputAddress"]
+                if address and address not in seen:
+                    seen.add(address)
+                    self.add(Switch(channel, address, cam, cam + length, cfg[f"Sensor[1].{kind}.SwitchLevel"],
+                                    "homing switch"), t)
+        ready = cfg["Actor.Interface.DriveReadyInput"]
+        if ready:
+            self.add(Signal(ready, channel.ready, "drive ready"), t)

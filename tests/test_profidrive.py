@@ -1,6 +1,7 @@
 """PROFIdrive words, standard telegrams, speed scaling, encoder model and drive state machine."""
 from __future__ import annotations
 
+import itertools
 import math
 import struct
 
@@ -9,10 +10,34 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from plcmotion.drives.profidrive import (
-    ENCODER_ERROR_SENSOR_GROUP, ENCODER_ERROR_ZERO_MARK, FAULT_SIGN_OF_LIFE, G1_STW, G1_ZSW, G2_STW, STW1,
-    STW2, STW2_ENC, TELEGRAMS, ZSW1, ZSW2, ZSW2_ENC, DriveState, DriveStateMachine, EncoderCommand,
-    IncrementalEncoder, SignOfLifeMonitor, Telegram1In, Telegram1Out, Telegram3In, Telegram3Out,
-    Telegram4In, Telegram83In, next_sign_of_life, nsoll_to_speed, speed_to_nsoll, telegram_types,
+    ENCODER_ERROR_SENSOR_GROUP,
+    ENCODER_ERROR_ZERO_MARK,
+    FAULT_SIGN_OF_LIFE,
+    G1_STW,
+    G1_ZSW,
+    G2_STW,
+    STW1,
+    STW2,
+    STW2_ENC,
+    TELEGRAMS,
+    ZSW1,
+    ZSW2,
+    ZSW2_ENC,
+    DriveState,
+    DriveStateMachine,
+    EncoderCommand,
+    IncrementalEncoder,
+    SignOfLifeMonitor,
+    Telegram1In,
+    Telegram1Out,
+    Telegram3In,
+    Telegram3Out,
+    Telegram4In,
+    Telegram83In,
+    next_sign_of_life,
+    nsoll_to_speed,
+    speed_to_nsoll,
+    telegram_types,
     xist1_difference,
 )
 
@@ -359,8 +384,11 @@ def test_parking_freezes_values():
     x1, x2 = enc.xist1, enc.xist2
     enc.update(0.75, G1_STW(RequestParkingEncoder=True, RequestAbsoluteValueCyclically=True))
     assert enc.zsw == G1_ZSW(ParkingEncoderActive=True) and (enc.xist1, enc.xist2) == (x1, x2)
+    assert enc.parked
+    enc.probe2 = True
     enc.update(0.8, G1_STW())
     assert not enc.zsw.ParkingEncoderActive and enc.xist1 == enc.count_at(0.8)
+    assert enc.zsw.Probe2Deflected and not enc.zsw.Probe1Deflected
 
 
 def test_home_position_set_and_shift():
@@ -381,10 +409,10 @@ def test_home_position_set_and_shift():
 DT = 0.004
 OFF1 = STW1(0x047E)                  # everything enabled except ON
 RUN = STW1(0x047F)
-PAT_S1 = dict(ReadyToSwitchOn=False, ReadyToOperate=False, OperationEnabled=False, SwitchingOnInhibited=True)
-PAT_S2 = dict(ReadyToSwitchOn=True, ReadyToOperate=False, OperationEnabled=False, SwitchingOnInhibited=False)
-PAT_S3 = dict(ReadyToSwitchOn=True, ReadyToOperate=True, OperationEnabled=False, SwitchingOnInhibited=False)
-PAT_S4 = dict(ReadyToSwitchOn=True, ReadyToOperate=True, OperationEnabled=True, SwitchingOnInhibited=False)
+PAT_S1 = {"ReadyToSwitchOn": False, "ReadyToOperate": False, "OperationEnabled": False, "SwitchingOnInhibited": True}
+PAT_S2 = {"ReadyToSwitchOn": True, "ReadyToOperate": False, "OperationEnabled": False, "SwitchingOnInhibited": False}
+PAT_S3 = {"ReadyToSwitchOn": True, "ReadyToOperate": True, "OperationEnabled": False, "SwitchingOnInhibited": False}
+PAT_S4 = {"ReadyToSwitchOn": True, "ReadyToOperate": True, "OperationEnabled": True, "SwitchingOnInhibited": False}
 
 
 def cycle(d: DriveStateMachine, stw1, nsoll: float = 0.0, stw2=None) -> float:
@@ -461,7 +489,7 @@ def test_off1_ramps_down_then_ready_for_switching_on():
             assert_pattern(d.zsw1, PAT_S4)
         assert len(speeds) < 1000
     assert speeds[0] == pytest.approx(1500.0 - 12.0)
-    assert all(b < a for a, b in zip(speeds, speeds[1:-1]))
+    assert all(b < a for a, b in itertools.pairwise(speeds[:-1]))
     assert len(speeds) == pytest.approx(0.5 / DT, abs=1)
     assert speeds[-1] == 0.0
     assert_pattern(d.zsw1, PAT_S2)

@@ -36,6 +36,12 @@ class DriveChannel(ABC):
     def communication_ok(self) -> bool:
         return True
 
+    def reconfigure(self, cfg: Mapping[str, Any]) -> None:
+        """Configuration tags that became effective at runtime (mechanics)."""
+
+    def set_fault(self, on: bool) -> None:
+        """A fault of the drive itself (fault injection): it stops executing setpoints and is not ready."""
+
     # encoder zero marks (reference mark search of a PROFIdrive encoder); drives without them ignore it
     def arm_zero_mark(self, direction: float) -> None:
         """Latch the actual value at the next zero mark passed in ``direction`` (+1 / -1)."""

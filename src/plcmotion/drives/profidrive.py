@@ -25,19 +25,48 @@ import enum
 import math
 import operator
 import struct
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field
-from typing import Any, ClassVar, Iterator, Literal, Mapping, SupportsIndex
+from typing import Any, ClassVar, Literal, Self, SupportsIndex, TypeAlias
 
 __all__ = [
-    "Word16", "STW1", "ZSW1", "STW2", "ZSW2", "STW2_ENC", "ZSW2_ENC", "G1_STW", "G1_ZSW", "G2_STW", "G2_ZSW",
+    "ENCODER_ERROR_SENSOR_GROUP",
+    "ENCODER_ERROR_ZERO_MARK",
+    "FAULT_SIGN_OF_LIFE",
+    "G1_STW",
+    "G1_ZSW",
+    "G2_STW",
+    "G2_ZSW",
+    "STW1",
+    "STW2",
+    "STW2_ENC",
+    "TELEGRAMS",
+    "ZSW1",
+    "ZSW2",
+    "ZSW2_ENC",
+    "DriveState",
+    "DriveStateMachine",
     "EncoderCommand",
-    "Telegram1Out", "Telegram1In", "Telegram2Out", "Telegram2In", "Telegram3Out", "Telegram3In",
-    "Telegram4Out", "Telegram4In", "Telegram81Out", "Telegram81In", "Telegram83Out", "Telegram83In",
-    "TELEGRAMS", "telegram_types",
-    "speed_to_nsoll", "nsoll_to_speed",
-    "xist1_difference", "IncrementalEncoder", "ENCODER_ERROR_SENSOR_GROUP", "ENCODER_ERROR_ZERO_MARK",
-    "next_sign_of_life", "SignOfLifeMonitor",
-    "DriveState", "DriveStateMachine", "FAULT_SIGN_OF_LIFE",
+    "IncrementalEncoder",
+    "SignOfLifeMonitor",
+    "Telegram1In",
+    "Telegram1Out",
+    "Telegram2In",
+    "Telegram2Out",
+    "Telegram3In",
+    "Telegram3Out",
+    "Telegram4In",
+    "Telegram4Out",
+    "Telegram81In",
+    "Telegram81Out",
+    "Telegram83In",
+    "Telegram83Out",
+    "Word16",
+    "next_sign_of_life",
+    "nsoll_to_speed",
+    "speed_to_nsoll",
+    "telegram_types",
+    "xist1_difference",
 ]
 
 _U32_MOD = 1 << 32
@@ -56,53 +85,33 @@ def _bit_property(bit: int, doc: str) -> property:
     return property(get, doc=f"Bit {bit}: {doc}")
 
 
-def _field_property(shift: int, width: int, doc: str) -> property:
-    mask = (1 << width) - 1
-
-    def get(self: Word16) -> int:
-        return (self._value >> shift) & mask
-
-    return property(get, doc=f"Bits {shift}..{shift + width - 1}: {doc}")
-
-
 class Word16:
     """An immutable 16-bit word with named bits.
 
-    Subclasses declare ``_BITS`` as ``(bit, name, meaning)`` triples and optionally ``_FIELDS`` as
-    ``(name, shift, width, meaning)`` for multi-bit groups; each becomes a read-only property.  Build a
-    word from an int, from keyword bits, or both (keywords override the int)::
+    Subclasses declare ``_BITS`` as ``(bit, name, meaning)`` triples; each name becomes a read-only
+    bool property.  Build a word from an int, from keyword bits, or both (keywords override the int)::
 
         STW1(0x047E, On=True) == STW1(0x047F)
 
-    ``int(word)`` gives the raw value; :meth:`with_bits` returns a modified copy.
+    ``int(word)`` gives the raw value; :meth:`with_bits` returns a modified copy.  Words compare equal
+    only to words of the same type; compare with numbers through ``int(word)``.
     """
 
     __slots__ = ("_value",)
+    _value: int
     _BITS: ClassVar[tuple[tuple[int, str, str], ...]] = ()
-    _FIELDS: ClassVar[tuple[tuple[str, int, int, str], ...]] = ()
     _BIT_OF: ClassVar[dict[str, int]] = {}
-    _FIELD_OF: ClassVar[dict[str, tuple[int, int]]] = {}
 
     def __init_subclass__(cls, **kwargs: Any) -> None:
         super().__init_subclass__(**kwargs)
-        used = 0
         cls._BIT_OF = {}
-        cls._FIELD_OF = {}
         for bit, name, doc in cls._BITS:
-            if not 0 <= bit <= 15 or used & (1 << bit):
-                raise TypeError(f"{cls.__name__}: bit {bit} invalid or assigned twice")
-            used |= 1 << bit
+            if not 0 <= bit <= 15 or bit in cls._BIT_OF.values() or name in cls._BIT_OF:
+                raise TypeError(f"{cls.__name__}: bit {bit} ({name}) invalid or assigned twice")
             cls._BIT_OF[name] = bit
             setattr(cls, name, _bit_property(bit, doc))
-        for name, shift, width, doc in cls._FIELDS:
-            mask = ((1 << width) - 1) << shift
-            if shift < 0 or shift + width > 16 or used & mask:
-                raise TypeError(f"{cls.__name__}: field {name} overlaps or exceeds 16 bits")
-            used |= mask
-            cls._FIELD_OF[name] = (shift, width)
-            setattr(cls, name, _field_property(shift, width, doc))
 
-    def __init__(self, value: SupportsIndex | Word16 = 0, /, **bits: bool | int) -> None:
+    def __init__(self, value: SupportsIndex | Word16 = 0, /, **bits: bool) -> None:
         if isinstance(value, Word16):
             if type(value) is not type(self):
                 raise TypeError(f"cannot build {type(self).__name__} from {type(value).__name__}")
@@ -114,25 +123,17 @@ class Word16:
             if not 0 <= raw <= 0xFFFF:
                 raise ValueError(f"{type(self).__name__} value {raw} outside 0..0xFFFF")
         for name, on in bits.items():
-            if name in self._BIT_OF:
-                mask = 1 << self._BIT_OF[name]
-                raw = raw | mask if on else raw & ~mask
-            elif name in self._FIELD_OF:
-                shift, width = self._FIELD_OF[name]
-                v = operator.index(on)
-                if not 0 <= v < (1 << width):
-                    raise ValueError(f"{type(self).__name__}.{name} = {v} needs more than {width} bits")
-                mask = ((1 << width) - 1) << shift
-                raw = (raw & ~mask) | (v << shift)
-            else:
-                raise TypeError(f"{type(self).__name__} has no bit or field named {name!r}")
+            if name not in self._BIT_OF:
+                raise TypeError(f"{type(self).__name__} has no bit named {name!r}")
+            mask = 1 << self._BIT_OF[name]
+            raw = raw | mask if on else raw & ~mask
         object.__setattr__(self, "_value", raw)
 
     def __setattr__(self, name: str, value: Any) -> None:
         raise AttributeError(f"{type(self).__name__} is immutable; use with_bits()")
 
-    def with_bits(self, **bits: bool | int) -> Any:
-        """A copy with the given bits/fields changed."""
+    def with_bits(self, **bits: bool) -> Self:
+        """A copy with the given bits changed."""
         return type(self)(self._value, **bits)
 
     def bit(self, n: int) -> bool:
@@ -146,11 +147,6 @@ class Word16:
         """Name -> bit number of every single-bit property."""
         return dict(cls._BIT_OF)
 
-    @classmethod
-    def field_positions(cls) -> dict[str, tuple[int, int]]:
-        """Name -> (shift, width) of every multi-bit property."""
-        return dict(cls._FIELD_OF)
-
     def set_bits(self) -> list[str]:
         """Names of the named bits that are 1, lowest bit first."""
         return [name for bit, name, _ in sorted(self._BITS) if self._value >> bit & 1]
@@ -163,7 +159,7 @@ class Word16:
 
     def __eq__(self, other: object) -> bool:
         if type(other) is type(self):
-            return self._value == other._value  # type: ignore[attr-defined]
+            return self._value == other._value
         return NotImplemented
 
     def __hash__(self) -> int:
@@ -171,7 +167,6 @@ class Word16:
 
     def __repr__(self) -> str:
         parts = self.set_bits()
-        parts += [f"{name}={getattr(self, name)}" for name in self._FIELD_OF if getattr(self, name)]
         return f"{type(self).__name__}(0x{self._value:04X}: {'|'.join(parts) or '-'})"
 
 
@@ -256,6 +251,18 @@ class STW2(Word16):
         (14, "MasterSignOfLifeBit2", "controller life sign, bit 2"),
         (15, "MasterSignOfLifeBit3", "controller life sign, bit 3"),
     )
+    DriveDataSetSelectionBit0: bool
+    DriveDataSetSelectionBit1: bool
+    DriveDataSetSelectionBit2: bool
+    DriveDataSetSelectionBit3: bool
+    DriveDataSetSelectionBit4: bool
+    ParkingAxisSelection: bool
+    TravelToFixedEndstop: bool
+    MotorSwitchoverFinished: bool
+    MasterSignOfLifeBit0: bool
+    MasterSignOfLifeBit1: bool
+    MasterSignOfLifeBit2: bool
+    MasterSignOfLifeBit3: bool
 
     @property
     def master_sign_of_life(self) -> int:
@@ -291,6 +298,21 @@ class ZSW2(Word16):
         (14, "SlaveSignOfLifeBit2", "drive life sign, bit 2"),
         (15, "SlaveSignOfLifeBit3", "drive life sign, bit 3"),
     )
+    DriveDataSetEffectiveBit0: bool
+    DriveDataSetEffectiveBit1: bool
+    DriveDataSetEffectiveBit2: bool
+    DriveDataSetEffectiveBit3: bool
+    DriveDataSetEffectiveBit4: bool
+    AlarmClassBit0: bool
+    AlarmClassBit1: bool
+    ParkingAxisActive: bool
+    TravelToFixedEndStopActive: bool
+    PulsesEnabled: bool
+    MotorDataSetChangeoverActive: bool
+    SlaveSignOfLifeBit0: bool
+    SlaveSignOfLifeBit1: bool
+    SlaveSignOfLifeBit2: bool
+    SlaveSignOfLifeBit3: bool
 
     @property
     def slave_sign_of_life(self) -> int:
@@ -312,6 +334,12 @@ class STW2_ENC(Word16):
         (14, "MasterSignOfLifeBit2", "controller life sign, bit 2"),
         (15, "MasterSignOfLifeBit3", "controller life sign, bit 3"),
     )
+    FaultAcknowledge: bool
+    ControlByPlc: bool
+    MasterSignOfLifeBit0: bool
+    MasterSignOfLifeBit1: bool
+    MasterSignOfLifeBit2: bool
+    MasterSignOfLifeBit3: bool
 
     @property
     def master_sign_of_life(self) -> int:
@@ -335,6 +363,13 @@ class ZSW2_ENC(Word16):
         (14, "SlaveLifeSignBit2", "encoder life sign, bit 2"),
         (15, "SlaveLifeSignBit3", "encoder life sign, bit 3"),
     )
+    FaultPresent: bool
+    AlarmPresent: bool
+    ControlRequested: bool
+    SlaveLifeSignBit0: bool
+    SlaveLifeSignBit1: bool
+    SlaveLifeSignBit2: bool
+    SlaveLifeSignBit3: bool
 
     @property
     def slave_sign_of_life(self) -> int:
@@ -371,7 +406,15 @@ class G1_STW(Word16):
         (15, "AcknowledgeEncoderError", "a 0 -> 1 edge acknowledges an encoder error"),
     )
     RequestFunction1: bool
+    RequestFunction2: bool
+    RequestFunction3: bool
+    RequestFunction4: bool
+    CommandBit0: bool
+    CommandBit1: bool
+    CommandBit2: bool
     FlyingMeasurement: bool
+    HomePositionMode: bool
+    RequestSetShiftHomePosition: bool
     RequestAbsoluteValueCyclically: bool
     RequestParkingEncoder: bool
     AcknowledgeEncoderError: bool
@@ -416,8 +459,17 @@ class G1_ZSW(Word16):
         (15, "EncoderError", "the encoder reports an error; Gx_XIST2 carries the error code"),
     )
     Function1Active: bool
+    Function2Active: bool
+    Function3Active: bool
+    Function4Active: bool
     Value1Available: bool
+    Value2Available: bool
+    Value3Available: bool
+    Value4Available: bool
+    Probe1Deflected: bool
+    Probe2Deflected: bool
     EncoderFaultAcknowledgeActive: bool
+    HomePositionSetShiftExecuted: bool
     TransmitAbsoluteValueCyclically: bool
     ParkingEncoderActive: bool
     EncoderError: bool
@@ -487,12 +539,12 @@ class _Telegram:
         return self._STRUCT.pack(*(int(getattr(self, name)) for name, _ in self._LAYOUT))
 
     @classmethod
-    def unpack(cls, data: bytes | bytearray | memoryview) -> Any:
+    def unpack(cls, data: bytes | bytearray | memoryview) -> Self:
         """Inverse of :meth:`pack`; ``data`` must have exactly :meth:`size` bytes."""
         if len(data) != cls._STRUCT.size:
             raise ValueError(f"telegram {cls.TELEGRAM} needs {cls._STRUCT.size} bytes, got {len(data)}")
         raw = cls._STRUCT.unpack(bytes(data))
-        return cls(**{name: (kind.word(v) if kind.word else v)  # type: ignore[call-arg]
+        return cls(**{name: (kind.word(v) if kind.word else v)
                       for (name, kind), v in zip(cls._LAYOUT, raw)})
 
     @classmethod
@@ -511,8 +563,14 @@ class _Telegram:
 
 
 # Aliases so the field annotations below do not shadow the word classes inside the class bodies.
-_STW1, _ZSW1, _STW2, _ZSW2 = STW1, ZSW1, STW2, ZSW2
-_STW2E, _ZSW2E, _GSTW, _GZSW = STW2_ENC, ZSW2_ENC, G1_STW, G1_ZSW
+_STW1: TypeAlias = STW1
+_ZSW1: TypeAlias = ZSW1
+_STW2: TypeAlias = STW2
+_ZSW2: TypeAlias = ZSW2
+_STW2E: TypeAlias = STW2_ENC
+_ZSW2E: TypeAlias = ZSW2_ENC
+_GSTW: TypeAlias = G1_STW
+_GZSW: TypeAlias = G1_ZSW
 
 
 @dataclass
@@ -825,7 +883,8 @@ class IncrementalEncoder:
     * parking: only ``ParkingEncoderActive`` is reported, XIST1/XIST2 stay frozen, a running reference
       mark search is dropped;
     * set/shift home position (bits 11/12) by ``home_preset`` revolutions, applied to both XIST1 and
-      XIST2 (zero marks stay where they are on the shaft).
+      XIST2 (zero marks stay where they are on the shaft);
+    * the probe inputs ``probe1``/``probe2`` (set by the caller) are mirrored in bits 8/9.
 
     Priority of Gx_XIST2: error code > latched value being read > cyclic absolute value > 0.
     """
@@ -919,6 +978,11 @@ class IncrementalEncoder:
     def error_code(self) -> int:
         """Pending error code, 0 if none."""
         return self._error
+
+    @property
+    def parked(self) -> bool:
+        """The encoder is parked (values frozen)."""
+        return self._parked
 
     @property
     def latched_value(self) -> int | None:
@@ -1178,11 +1242,7 @@ class DriveStateMachine:
 
     @property
     def zsw2(self) -> ZSW2:
-        return ZSW2(PulsesEnabled=self._state in (DriveState.S4, DriveState.S5),
-                    SlaveSignOfLifeBit0=bool(self._slave_life & 1),
-                    SlaveSignOfLifeBit1=bool(self._slave_life & 2),
-                    SlaveSignOfLifeBit2=bool(self._slave_life & 4),
-                    SlaveSignOfLifeBit3=bool(self._slave_life & 8))
+        return ZSW2(self._slave_life << 12, PulsesEnabled=self._state in (DriveState.S4, DriveState.S5))
 
     # -- time ----------------------------------------------------------------------------------------------
 
@@ -1193,10 +1253,10 @@ class DriveStateMachine:
             raise ValueError("dt must be >= 0")
         self._actual = actual_rpm
         self._slave_life = next_sign_of_life(self._slave_life)
-        if self._stw2 is not None and not self._faults:
-            if not self.sign_of_life.check(self._stw2.master_sign_of_life):
-                self.inject_fault(FAULT_SIGN_OF_LIFE)
-                self.sign_of_life.reset()
+        if (self._stw2 is not None and not self._faults
+                and not self.sign_of_life.check(self._stw2.master_sign_of_life)):
+            self.inject_fault(FAULT_SIGN_OF_LIFE)
+            self.sign_of_life.reset()
 
         s = self._stw1
         ack = s.AcknowledgeFault

@@ -19,6 +19,7 @@ from typing import Any, Mapping
 import numpy as np
 
 from .base import DriveChannel, DriveGroup
+from .profidrive_link import ProfidriveLink, word_scale
 
 
 def encoder_increment(cfg: Mapping[str, Any]) -> float:
@@ -46,10 +47,46 @@ class _ServoChannel(DriveChannel):
         if on and not g.en[m]:
             g.ready_at[m] = t + g.ready_delay[m]
         g.en[m] = on
+        link = g.links[m]
+        if link is None:
+            g.pulses[m] = on                        # analog drive: the enable output switches it
+        else:
+            link.command(on)                        # PROFIdrive: STW1, the drive steps through its states
+            g.stepping.add(m)
 
     def ready(self, t: float) -> bool:
         g, m = self.group, self.member
-        return bool(g.en[m]) and t >= g.ready_at[m] - 1e-12
+        link = g.links[m]
+        running = link.operation_enabled if link is not None else bool(g.en[m])
+        return running and not g.flt[m] and t >= g.ready_at[m] - 1e-12
+
+    def set_fault(self, on: bool) -> None:
+        g, m = self.group, self.member
+        g.flt[m] = on
+        link = g.links[m]
+        if link is not None:
+            link.set_fault(on)
+            g.stepping.add(m)
+
+    def telegrams(self) -> tuple:
+        """(output, input) telegram of a PROFIdrive axis as it is on the bus now."""
+        g, m = self.group, self.member
+        link = g.links[m]
+        if link is None:
+            raise TypeError("only axes with a PROFIdrive drive (Actor.Type = 1) exchange telegrams")
+        link.cycles = g.cycles
+        q = float(g.q[m])
+        count = math.floor(float(g.x[m]) / q)
+        hit = float(g.zm_hit[m])
+        latched = not math.isnan(hit)
+        zm = (bool(g.zm_dir[m]), latched, int(g.zm_count[m]) if latched else 0)
+        absolute = None
+        if link.revolutions:
+            per_rev = link.steps << link.fine2
+            absolute = math.floor(float(g.x[m]) / float(g.rev_dist[m]) * per_rev) % (link.revolutions * per_rev)
+        rpm = float(g.v[m]) / float(g.lead[m]) * 60.0
+        return link.telegrams(setpoint_word=int(g.word[m]), actual_rpm=rpm, count=count, zero_mark=zm,
+                              absolute_count=absolute)
 
     def mechanical_position(self) -> float:
         return float(self.group.x[self.member])
@@ -84,11 +121,16 @@ class ServoDrives(DriveGroup):
     """Closed-loop drives (PROFIdrive telegram or analog speed setpoint) with incremental encoders."""
 
     _FIELDS = ("x", "v", "cmd", "e", "tfac", "vlim", "off_dec", "ready_at", "ready_delay", "q", "off", "last",
-               "zm_dir", "zm_dist", "zm_off", "zm_hit")
+               "zm_dir", "zm_dist", "zm_off", "zm_hit", "zm_count", "lead", "qscale", "qmax", "word", "rev_dist")
 
     def __init__(self) -> None:
         self.idx = np.zeros(0, dtype=np.intp)
         self.en = np.zeros(0, dtype=bool)
+        self.flt = np.zeros(0, dtype=bool)        # drive fault: pulses off, the motor coasts/ramps down
+        self.pulses = np.zeros(0, dtype=bool)     # the drive's power section is on and follows its setpoint
+        self.links: list[ProfidriveLink | None] = []
+        self.stepping: set[int] = set()           # PROFIdrive members whose state machine is moving
+        self.cycles = 0
         for name in self._FIELDS:
             setattr(self, name, np.zeros(0))
 
@@ -105,20 +147,41 @@ class ServoDrives(DriveGroup):
             rotary = cfg["Sensor[1].System"] == 1
             zm_dist = ((cfg["Mechanics.LeadScrew"] if cfg["Sensor[1].MountingMode"] == 0
                         else cfg["Sensor[1].Parameter.DistancePerRevolution"]) if rotary else math.inf)
+        profidrive = cfg["Actor.Type"] == 1
+        scale, limit = word_scale(cfg["Actor.Interface.Telegram"], analog=not profidrive)
+        rev_dist = (cfg["Mechanics.LeadScrew"] if cfg["Sensor[1].MountingMode"] == 0
+                    else cfg["Sensor[1].Parameter.DistancePerRevolution"])
         values = dict(x=x0, v=0.0, cmd=0.0, e=e, tfac=tc * (1 - e), vlim=vlim,
                       off_dec=(vlim / off_time) if off_time > 0 else math.inf, ready_at=math.inf,
                       ready_delay=cfg["Plant.ReadyDelay"], q=q, off=0.0, last=math.floor(x0 / q) * q,
-                      zm_dir=0.0, zm_dist=zm_dist, zm_off=cfg["Plant.ZeroMarkOffset"], zm_hit=math.nan)
+                      zm_dir=0.0, zm_dist=zm_dist, zm_off=cfg["Plant.ZeroMarkOffset"], zm_hit=math.nan,
+                      zm_count=0.0, lead=cfg["Mechanics.LeadScrew"],
+                      qscale=scale / cfg["Actor.DriveParameter.ReferenceSpeed"], qmax=float(limit), word=0.0,
+                      rev_dist=rev_dist)
         for name in self._FIELDS:
             setattr(self, name, np.append(getattr(self, name), values[name]))
         self.idx = np.append(self.idx, index)
         self.en = np.append(self.en, False)
-        return _ServoChannel(self, len(self.idx) - 1)
+        self.flt = np.append(self.flt, False)
+        self.pulses = np.append(self.pulses, False)
+        member = len(self.idx) - 1
+        self.links.append(ProfidriveLink(cfg, servo_cycle) if profidrive else None)
+        if profidrive:
+            self.stepping.add(member)                 # leave "switching on inhibited" (OFF1 word)
+        return _ServoChannel(self, member)
 
     def read(self, bank: Any, t: float, dt: float) -> None:
         if not len(self.idx):
             return
-        on = self.en & (self.ready_at <= t - dt + 1e-12)     # in operation during the last cycle
+        self.cycles += 1
+        if self.stepping:
+            for m in sorted(self.stepping):
+                link = self.links[m]
+                link.step(dt)
+                self.pulses[m] = link.operation_enabled
+                if link.steady:
+                    self.stepping.discard(m)
+        on = self.pulses & ~self.flt & (self.ready_at <= t - dt + 1e-12)  # in operation during the last cycle
         c, v0 = self.cmd, self.v
         # enabled: exact solution of the first-order speed loop for a command held over dt
         v_on = c + (v0 - c) * self.e
@@ -141,7 +204,11 @@ class ServoDrives(DriveGroup):
 
     def write(self, bank: Any, t: float) -> None:
         if len(self.idx):
-            self.cmd = np.clip(bank.cmd_v[self.idx], -self.vlim, self.vlim)
+            # the speed setpoint travels as an integer word: 16#4000 / 16#40000000 = 100 % of the reference
+            # speed (PROFIdrive), 27648 = 100 % on an analog output (§2.2.2, §5.4.3.2)
+            cmd = np.clip(bank.cmd_v[self.idx], -self.vlim, self.vlim)
+            self.word = np.clip(np.round(cmd * (60.0 * self.qscale) / self.lead), -self.qmax - 1.0, self.qmax)
+            self.cmd = self.word * self.lead / (60.0 * self.qscale)
 
     def _zero_marks(self, x_prev: np.ndarray) -> None:
         """Latch the exact encoder value at a zero mark crossed in the armed direction (hardware latch)."""
@@ -161,6 +228,7 @@ class ServoDrives(DriveGroup):
                     mark = None
             if mark is not None:
                 q = float(self.q[m])
+                self.zm_count[m] = math.floor(mark / q)
                 self.zm_hit[m] = math.floor(mark / q) * q + float(self.off[m])
                 self.zm_dir[m] = 0.0
 
@@ -171,12 +239,16 @@ class _DirectChannel(DriveChannel):
     def __init__(self, group: "SetpointDrives", member: int):
         self.group, self.member = group, member
         self.enabled = False
+        self.fault = False
 
     def set_enable(self, on: bool, t: float) -> None:
         self.enabled = on
 
     def ready(self, t: float) -> bool:
-        return self.enabled
+        return self.enabled and not self.fault
+
+    def set_fault(self, on: bool) -> None:
+        self.fault = on
 
     def set_actual(self, bank: Any, value: float) -> None:
         g, m = self.group, self.member
@@ -193,6 +265,12 @@ class _DirectChannel(DriveChannel):
     @property
     def communication_ok(self) -> bool:
         return not self.group.stepper
+
+    def reconfigure(self, cfg: Mapping[str, Any]) -> None:
+        """Mechanics written at runtime (effective at enable, §12.9.5/§12.9.8): new pulse length."""
+        g, m = self.group, self.member
+        if g.stepper:
+            g.pulse[m] = cfg["Mechanics.LeadScrew"] / cfg["Actor.DriveParameter.PulsesPerDriveRevolution"]
 
 
 class SetpointDrives(DriveGroup):

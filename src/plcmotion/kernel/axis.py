@@ -18,6 +18,7 @@ from .profiles import Planner, PlanningError, Profile
 from .config import ConfigMixin, TagAccessError
 from .homing import HomingMixin
 from .switches import SwitchesMixin
+from .table_run import TableMixin
 from .tags import AxisTagsMixin
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -41,7 +42,7 @@ class ConfigurationError(ValueError):
         super().__init__("\n".join(lines))
 
 
-class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, AxisTagsMixin):
+class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisTagsMixin):
     """Positioning axis technology object (TO_PositioningAxis)."""
 
     def __init__(self, ctl: "Controller", name: str, cfg: Mapping[str, Any]):
@@ -65,6 +66,7 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, AxisTagsMixin):
         self.alarms: list[Fault] = []
         self.job: Job | None = None                   # active motion job
         self.passive_home: Job | None = None
+        self.table_job: Job | None = None             # MC_CommandTable job (also before it takes over)
         self.power_owner: Any = None
         self.stop_mode = 0
         self.busy_commands: set[int] = set()          # id() of instructions with Busy = TRUE
@@ -82,6 +84,7 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, AxisTagsMixin):
         self.last_internal_error: str | None = None
         self.holding_zero_velocity = False            # standstill reached by MC_MoveVelocity(Velocity=0)
         self.abs_offset = 0.0                         # StatusSensor.AbsEncoderOffset (retentive)
+        self.faults: dict[str, tuple[str, bool]] = {}  # injected device faults: kind -> (detail, persistent)
 
         b = ctl.bank
         i = self.index
@@ -95,7 +98,7 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, AxisTagsMixin):
             kept = ctl.retain.get(name, {})
             self.abs_offset = float(kept.get("AbsEncoderOffset", 0.0))
             self.homed = bool(kept.get("HomingDone", False))
-            self.drive.set_actual(b, float(b.act_p[i]) + self.abs_offset)
+            self.drive.set_actual(b, self._absolute_raw() + self.abs_offset)
             b.sp_p[i] = b.act_p[i]
         self._setup_io()
         if not self.sim:
@@ -114,6 +117,18 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, AxisTagsMixin):
     def _state_now(self) -> tuple[float, float, float]:
         b, i = self.ctl.bank, self.index
         return float(b.sp_p[i]), float(b.sp_v[i]), float(b.sp_a[i])
+
+    @property
+    def activated(self) -> bool:
+        """StatusBits.Activated: the axis holds its pulse generator (always for an own one, §12.1)."""
+        no = self.eff["Actor.Interface.PTO"] if self.pto else 0
+        return not no or self.ctl._pto_holder.get(no) is self
+
+    def pto_used_by_other(self) -> bool:
+        """ErrorBits.HWUsed: another enabled axis holds the pulse generator of this axis (§12.1)."""
+        no = self.eff["Actor.Interface.PTO"] if self.pto else 0
+        holder = self.ctl._pto_holder.get(no) if no else None
+        return holder is not None and holder is not self and holder.state != DISABLED
 
     def sw_limits_effective(self) -> bool:
         """SW limit switches act only on a homed, non-modulo axis (§2.3; modulo: see docs/decisions)."""
@@ -148,6 +163,7 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, AxisTagsMixin):
         b.pm_dwell[i] = e["PositioningMonitoring.MinDwellTime"]
         b.ss_threshold[i] = e["StandstillSignal.VelocityThreshold"]
         b.ss_dwell[i] = e["StandstillSignal.MinDwellTime"]
+        self.drive.reconfigure(e)
         self._set_loop_flags()
 
     def _set_loop_flags(self) -> None:
@@ -212,6 +228,9 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, AxisTagsMixin):
         self._schedule()
 
     def _on_timer(self, name: str, t: float) -> None:
+        if name == "table":
+            self._table_timer(t)
+            return
         if name == "ready" and self.state == ENABLING:
             if self.drive.ready(t) and self.drive_ready_signal():
                 self._become_enabled(t)
@@ -236,6 +255,9 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, AxisTagsMixin):
             return
         if job is not None and job.busy and job.kind == JobKind.HOME_ACTIVE:
             self._homing_end(job, t)
+            return
+        if job is not None and job.busy and job.kind == JobKind.TABLE and not (plan and plan.limit_side):
+            self._table_end(job, t)
             return
         self._interpolating = False
         if plan is not None and plan.limit_side and plan.limit_detail != "exceeded":
@@ -262,6 +284,8 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, AxisTagsMixin):
         job.finish(state, fault)
         if job is self.job:
             self.job = None
+        if job.kind == JobKind.TABLE:
+            self._table_release(job)
         if self._pm_job is job:
             self._stop_positioning_monitor()
 
@@ -311,6 +335,18 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, AxisTagsMixin):
         """Called by the enabling instruction on every call; returns a rejection or None."""
         if self.power_owner is not None and self.power_owner is not owner:
             return F.reject(F.ALREADY_ENABLED) if enable else None
+        if enable and self.ctl.mode != "RUN":
+            return F.reject(F.REJECTED, "starting_up")
+        no = self.eff["Actor.Interface.PTO"] if self.pto else 0
+        if no:
+            # several axes on one pulse generator: the first MC_Power call of an axis takes the PTO over
+            # once the axis holding it is disabled (§12.1)
+            holder = self.ctl._pto_holder.get(no)
+            if holder is not self:
+                if holder is not None and holder.state != DISABLED:
+                    return F.reject(F.PTO_SWITCH) if enable else None
+                self.ctl._pto_holder[no] = self
+                self._apply_dirty("enable")
         if enable:
             self.power_owner = owner
             self.stop_mode = stop_mode
@@ -397,7 +433,7 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, AxisTagsMixin):
             self.homed = False                     # §2.5: disabling a PTO axis resets "homed"
 
     def _abort_all(self, t: float) -> None:
-        for job in (self.job, self.passive_home):
+        for job in (self.job, self.passive_home, self.table_job):
             if job is not None and job.busy:
                 self._finish_job(job, JobState.ABORTED, t)
         self.job = None
@@ -412,6 +448,9 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, AxisTagsMixin):
         victim = job if job is not None else self.job
         if victim is not None and victim.busy:
             self._finish_job(victim, JobState.ERROR, t, fault)
+        waiting = self.table_job
+        if waiting is not None and waiting.busy and fault.reaction != Reaction.NONE:
+            self._finish_job(waiting, JobState.ERROR, t, fault)
         if fault.reaction in (Reaction.REMOVE_ENABLE, Reaction.EMERGENCY) and self.passive_home is not None:
             self._finish_job(self.passive_home, JobState.ERROR, t, fault)
             self.passive_home = None
@@ -430,10 +469,52 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, AxisTagsMixin):
             self._start_profile(plan.profile, plan)
             self._stop_positioning_monitor()
 
+    # ------------------------------------------------------------------------------------------------
+    # device faults (fault injection on the simulated drive and encoder, §12.8 16#8000/16#800A/16#800C)
+    _DEVICE_ALARMS = {"drive": F.DRIVE_ALARM, "encoder": F.ENCODER, "drive_not_ready": F.DRIVE_NOT_READY}
+
+    def inject_fault(self, kind: str, detail: str = "", *, persistent: bool = False) -> None:
+        """Let the simulated device fail.
+
+        ``kind``: "drive" (16#800C; detail "", "control_requested", "shutdown", "station", "sign_of_life"),
+        "encoder" (16#800A; detail "", "hardware", "dirty", "absolute_value", "zero_mark", "parking",
+        "station", "sign_of_life") or "drive_not_ready" (16#8000).  A transient fault is gone once it has
+        been acknowledged (MC_Reset); a ``persistent`` one stays until ``clear_fault``.
+        """
+        if kind not in self._DEVICE_ALARMS:
+            raise ValueError(f"fault kind {kind!r}: one of {', '.join(self._DEVICE_ALARMS)}")
+        self.faults[kind] = (detail, persistent)
+        if kind in ("drive", "drive_not_ready"):
+            self.drive.set_fault(True)
+        if kind == "encoder" or (kind == "drive" and detail in ("station",)):
+            self.homed = False                     # §2.5: an encoder error resets "homed"
+        self.raise_alarm(F.alarm(self._DEVICE_ALARMS[kind], detail, Reaction.REMOVE_ENABLE))
+
+    def clear_fault(self, kind: str | None = None) -> None:
+        """Remove the cause of an injected fault (it still has to be acknowledged)."""
+        for k in [kind] if kind else list(self.faults):
+            detail, _ = self.faults.get(k, ("", False))
+            if k in self.faults:
+                self.faults[k] = (detail, False)
+
+    @property
+    def sensor_valid(self) -> bool:
+        """StatusSensor.State = 2: actual values valid (no encoder fault pending)."""
+        return "encoder" not in self.faults
+
     def acknowledge(self) -> Fault | None:
         """MC_Reset (Restart = FALSE): clear alarms whose cause is gone; returns one that persists."""
+        for kind, (detail, persistent) in list(self.faults.items()):
+            if not persistent:
+                del self.faults[kind]
+                if kind in ("drive", "drive_not_ready") and not {"drive", "drive_not_ready"} & set(self.faults):
+                    self.drive.set_fault(False)
         remaining = []
         for fault in self.alarms:
+            device = {v: k for k, v in self._DEVICE_ALARMS.items()}.get(fault.kind)
+            if device is not None and device in self.faults:
+                remaining.append(fault)
+                continue
             if fault.kind == F.CONFIG:
                 bad = self._config_fault(apply=True)
                 if bad is not None:
@@ -447,21 +528,54 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, AxisTagsMixin):
 
     def restart(self) -> Fault | None:
         """MC_Reset (Restart = TRUE): reload the start values; only while disabled (§9.7, §11.1.2)."""
+        if self.state == DISABLING:
+            return F.reject(F.RESTART_IMPOSSIBLE, "not_disabled")
         if self.power_owner is not None or self.state != DISABLED:
-            return F.reject(F.RESTART_IMPOSSIBLE, "enabled" if self.state != DISABLING else "not_disabled")
+            return F.reject(F.RESTART_IMPOSSIBLE, "enabled")
+        self.reinitialize("restart")
+        return None
+
+    def reinitialize(self, reason: str) -> None:
+        """Restart of the technology object with its start values.
+
+        ``reason``: "restart" (MC_Reset Restart = TRUE), "startup" (CPU STOP -> RUN) or "power"
+        (POWER OFF -> ON).  "Homed" is lost as §2.5 lists: a PTO axis always, incremental actual values
+        on a TO restart or power cycle; an absolute encoder keeps its retentive adjustment (§9.4).
+        """
+        t = self.now
+        self._abort_all(t)
+        if self.state != DISABLED:
+            self._remove_enable(t, by_power=True)
+        self.power_owner = None
         self.cfg = dict(self.load_cfg)
         self.eff = dict(self.load_cfg)
         self._dirty.clear()
         self.alarms.clear()
-        if self.eff["Sensor[1].Type"] == 0 or self.pto:
-            self.homed = False                    # §9.7: restart resets "homed" for incremental values
+        self.busy_commands.clear()
+        absolute = self.absolute_encoder()
+        if self.pto or (not absolute and reason in ("restart", "power")):
+            self.homed = False
+        if absolute:
+            kept = self.ctl.retain.get(self.name, {})
+            self.abs_offset = float(kept.get("AbsEncoderOffset", self.abs_offset))
+            self.homed = bool(kept.get("HomingDone", self.homed))
+        b, i = self.ctl.bank, self.index
+        if reason == "power":
+            # the actual values start anew: pulse and incremental counters at 0, absolute encoders as is
+            self.drive.set_actual(b, self._absolute_raw() + self.abs_offset if absolute else 0.0)
+            b.sp_p[i] = b.act_p[i]
+            b.sp_v[i] = b.sp_a[i] = 0.0
+            self._start_profile(Planner.hold(t, float(b.sp_p[i])))
         self._apply_bank_config()
-        return None
 
     # ------------------------------------------------------------------------------------------------
     # jobs
     def check_start(self, job: Job) -> Fault | None:
         """Conditions every motion job needs (§11.1 'Requirements', §12.8 16#82xx)."""
+        if self.ctl.mode != "RUN":
+            return F.reject(F.REJECTED, "starting_up")    # STOP/STARTUP: no motion jobs (§2.2.7.4)
+        if self.pto_used_by_other():
+            return F.reject(F.HW_USED)
         if self.state != ENABLED:
             return F.reject(F.NOT_ENABLED)
         if self.alarms:
@@ -496,6 +610,9 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, AxisTagsMixin):
         previous = self.job
         if previous is not None and previous.busy:
             self._finish_job(previous, JobState.ABORTED, t)
+        waiting = self.table_job
+        if waiting is not None and waiting.busy:
+            self._finish_job(waiting, JobState.ABORTED, t)     # a table that had not taken over yet
         self.holding_zero_velocity = False
         if job.kind == JobKind.HOME_ACTIVE and self.passive_home is not None:
             self._finish_job(self.passive_home, JobState.ABORTED, t)
@@ -521,9 +638,10 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, AxisTagsMixin):
         return job.position
 
     def _plan_job(self, job: Job, t: float) -> None:
-        p, v, a = self._state_now()
+        t_plan = self._slice_start(t)
+        p, v, a = self._state_now() if t_plan == t else self.profile.at(t_plan)
         try:
-            plan = self.motion.plan(job, t, p, v, a)
+            plan = self.motion.plan(job, t_plan, p, v, a)
         except DirectionFault as exc:
             self.raise_alarm(F.alarm(F.DIRECTION, exc.detail, Reaction.STOP), job=job)
             return
@@ -534,8 +652,21 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, AxisTagsMixin):
         if fault is not None:
             self.raise_alarm(fault, job=job)
             return
+        if t_plan != t:
+            # the running profile goes on until the next PTO segment boundary (V7 Actor.PTOSliceTime)
+            plan.profile.segments[:0] = [seg for seg in self.profile.segments if seg.t < t_plan]
         self._interpolating = True
         self._start_profile(plan.profile, plan)
+
+    def _slice_start(self, t: float) -> float:
+        """When a new command takes effect: at once, or on a PTO at the next segment boundary."""
+        if not self.pto:
+            return t
+        period = self.eff["Actor.PTOSliceTime"] / 1000.0
+        if period <= self.ctl.servo_cycle * (1 + 1e-9):
+            return t
+        k = math.ceil(t / period - 1e-9)
+        return max(t, k * period)
 
     def _set_position_control(self, on: bool) -> None:
         if not self.servo or on == self.position_controlled:
@@ -547,8 +678,8 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, AxisTagsMixin):
         """Re-plan the running motion from the current state (parameter change, coordinate shift)."""
         job = self.job
         t = self.now
-        if job is not None and job.busy and job.kind == JobKind.HOME_ACTIVE:
-            return                                          # homing plans its own phases
+        if job is not None and job.busy and job.kind in (JobKind.HOME_ACTIVE, JobKind.TABLE):
+            return                                          # homing and tables plan their own steps
         if job is not None and job.busy and job.kind in MOTION_KINDS and self._interpolating:
             self._plan_job(job, t)
         elif self.sw_limits_effective() and self.state in (ENABLED, DISABLING):

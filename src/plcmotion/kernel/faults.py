@@ -62,8 +62,10 @@ TOO_MANY_COMMANDS = "too_many_commands"
 NOT_HOMED = "not_homed"
 REJECTED = "rejected"                    # details: homing_active, table_homing, homing_table, numeric_limit,
 #                                          starting_up, actual_invalid, position_control_required
+PTO_SWITCH = "pto_switch"                # the shared pulse generator is held by another enabled axis
 RESTART_IMPOSSIBLE = "restart_impossible"  # details: enabled, not_disabled
 PENDING_ALARM = "pending_alarm"          # a new command while an alarm waits for acknowledgement
+TABLE_CONFIG = "table_config"            # a step of a command table is invalid: "<field>:<reason>"
 
 
 def alarm(kind: str, detail: str = "", reaction: Reaction = Reaction.NONE, text: str = "") -> Fault:

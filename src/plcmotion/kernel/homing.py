@@ -14,6 +14,7 @@ position where it happened; the axis then travels to ``Position``.
 """
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING
 
 from . import faults as F
@@ -49,6 +50,11 @@ class HomingMixin:
 
     def absolute_encoder(self: "PositioningAxis") -> bool:
         return (not self.pto) and self.eff["Sensor[1].Type"] in (1, 2)
+
+    def _absolute_raw(self: "PositioningAxis") -> float:
+        """Position the absolute encoder reports without adjustment: the machine position in whole increments."""
+        q = self.position_resolution()
+        return math.floor(self.drive.mechanical_position() / q) * q
 
     def _cam(self: "PositioningAxis", kind: str) -> bool:
         """Homing switch actuated (filtered input compared with the configured level)."""

@@ -17,6 +17,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from .axis import PositioningAxis
 
 _TOL = 1e-9
+SHORT_POSITIONING = 0.002       # s, PTO positioning duration below which the velocity is reduced (§12.5)
 
 
 @dataclass
@@ -136,6 +137,9 @@ class MotionPlanner:
             except ReversalRequired:
                 raise DirectionFault("reversal") from None
             self._check_direction(profile, p)
+            if ax.pto and profile.duration < SHORT_POSITIONING and abs(v) <= 1e-12 and target != p:
+                # §12.5: a positioning shorter than 2 ms runs at pulses x 500 Hz, i.e. takes 2 ms
+                profile = Planner.constant_move(t, p, target, SHORT_POSITIONING)
             return self._guard(Plan(profile), t, p, v, a, lim, cruise=abs(job.velocity))
         if kind in (JobKind.VELOCITY, JobKind.JOG):
             target_v = 0.0 if job.jog_released else job.velocity

@@ -121,8 +121,16 @@ _PARAMS: list[Param] = [
           doc="digital output 'Drive enabled' set by MC_Power ('' = none)"),
     Param("Actor.Interface.DriveReadyInput", ADDR, "", R, (), choices=("I",),
           doc="digital input 'Drive ready' ('' = none: the drive counts as ready)"),
+    Param("Actor.Interface.Telegram", INT, 3, R, (), choices=(1, 2, 3, 4),
+          doc="PROFIdrive standard telegram of the drive (3: 32-bit speed setpoint with encoder 1)"),
     Param("Actor.Interface.PTO", INT, 0, R, (), choices=(0, 1, 2, 3, 4),
           doc="pulse generator PTO1..PTO4 of a PTO axis (0 = a pulse output of its own)"),
+    Param("Actor.Interface.PTO_SignalType", INT, 2, R, (), choices=(2, 3, 4, 5),
+          doc="2 pulse A / direction B, 3 count up A / down B, 4 A/B phase-shifted, 5 A/B quadruple"),
+    Param("Actor.Interface.PTO_OutputBEnable", BOOL, True, R, (),
+          doc="direction output used (signal type 2); without it only one direction is possible"),
+    Param("Actor.PTOSliceTime", INT, 2, WP, (2,), choices=tuple(range(0, 256)),
+          doc="V7: PTO segment time [ms], 2..20; commands take effect at segment boundaries"),
     # --- Sensor[1] §12.9.6 --------------------------------------------------------------------------
     Param(f"{_S}.Type", INT, 0, R, (), choices=(0, 1), doc="0 incremental, 1 absolute"),
     Param(f"{_S}.InverseDirection", BOOL, False, R),
@@ -139,6 +147,8 @@ _PARAMS: list[Param] = [
     Param(f"{_S}.Parameter.FineResolutionXist2", INT, 9, R, (), 0, 31),
     Param(f"{_S}.Parameter.DeterminableRevolutions", INT, 1, R, (), 0, 8388608),
     Param(f"{_S}.Parameter.DistancePerRevolution", REAL, 100.0, R, (), 0.0, E12, lo_open=True),
+    Param(f"{_S}.Parameter.BehaviorGx_XIST1", INT, 1, R, (), choices=tuple(range(0, 256)),
+          doc="V7: 0 evaluate only the bits of Gx_XIST1 the resolution occupies, 1 all 32 bits"),
     Param(f"{_S}.ActiveHoming.Mode", INT, 2, WP, (2,), choices=(0, 1, 2)),
     Param(f"{_S}.ActiveHoming.SideInput", BOOL, False, RW, (1, 8, 10)),
     Param(f"{_S}.ActiveHoming.HomePositionOffset", REAL, 0.0, RW, (1, 8, 10), -E12, E12),
@@ -192,7 +202,9 @@ _PARAMS: list[Param] = [
     Param("PositioningMonitoring.Window", REAL, 1.0, WP, (10,), 0.001, E12),
     Param("StandstillSignal.VelocityThreshold", REAL, 5.0, WP, (10,), 0.0, E12),
     Param("StandstillSignal.MinDwellTime", REAL, 0.01, WP, (10,), 0.0, E12),
-    Param("Simulation.Mode", INT, 0, WP, (2, 9), choices=(0, 1)),
+    # the manual lets PROFIdrive/analog axes change it only through the load memory (WRIT_DBL) and a
+    # restart; plcmotion fixes it at configuration (docs/decisions.md)
+    Param("Simulation.Mode", INT, 0, R, (2, 9), choices=(0, 1)),
     # --- Simulated plant (not tags of the technology object) ----------------------------------------
     Param("Plant.SpeedTimeConstant", REAL, 0.002, P, (), 0.0, 10.0,
           doc="first-order time constant [s] of the simulated drive's closed speed loop"),
@@ -227,6 +239,7 @@ _INT_TYPES = {
     "Sensor[1].Interface.Number": "UDInt", "Sensor[1].Parameter.StepsPerRevolution": "UDInt",
     "Sensor[1].Parameter.FineResolutionXist1": "UDInt", "Sensor[1].Parameter.FineResolutionXist2": "UDInt",
     "Sensor[1].Parameter.DeterminableRevolutions": "UDInt", "Actor.Interface.PTO": "DWord",
+    "Actor.PTOSliceTime": "Int",
 }
 
 
@@ -346,7 +359,8 @@ def rule_issues(cfg: Mapping[str, Any]) -> list[Issue]:
 
     if pto:
         pulse = pulse_length(cfg)
-        f_lim = cfg["Plant.PTOLimitFrequency"]
+        # A/B quadruple: every edge is a step, the outputs run at a quarter of the step rate (§2.1.3)
+        f_lim = cfg["Plant.PTOLimitFrequency"] * (4.0 if cfg["Actor.Interface.PTO_SignalType"] == 5 else 1.0)
         for path in ("DynamicLimits.MaxVelocity", "DynamicLimits.MinVelocity"):
             f = cfg[path] / pulse
             if f > f_lim * (1 + 1e-12):
@@ -373,9 +387,24 @@ def rule_issues(cfg: Mapping[str, Any]) -> list[Issue]:
         for path in ("Sensor[1].ActiveHoming.Mode", "Sensor[1].PassiveHoming.Mode"):
             if cfg[path] != 2:
                 add(path, "pto_homing_mode", "2 (homing via digital input) for PTO axes (16#8617/16#8618)")
+        if (cfg["Actor.Interface.PTO_SignalType"] == 2 and not cfg["Actor.Interface.PTO_OutputBEnable"]
+                and cfg["Actor.DirectionMode"] == 0):
+            add("Actor.DirectionMode", "both_without_direction_output",
+                "1 (positive) or 2 (negative) when the direction output is not used (16#861A/16#002D)")
+        slice_ms = cfg["Actor.PTOSliceTime"]
+        if slice_ms > 20:
+            add("Actor.PTOSliceTime", "above_20ms", "2..20 ms (16#864A/16#006D)")
+        elif slice_ms < 2:
+            add("Actor.PTOSliceTime", "below_2ms", "2..20 ms (16#864A/16#006E)")
     else:
         if cfg["DynamicDefaults.Jerk"] > E12:
             add("DynamicDefaults.Jerk", "above_max_jerk", f"at most {E12:g}")
+        if (cfg["Actor.Type"] == 1 and cfg["Sensor[1].Interface.Type"] == 2
+                and cfg["Actor.Interface.Telegram"] not in (3, 4)):
+            add("Actor.Interface.Telegram", "no_encoder_in_telegram",
+                "3 or 4 for an encoder on the drive (Sensor[1].Interface.Type = 2)")
+        if cfg["Actor.Type"] == 0 and cfg["Sensor[1].Interface.Type"] == 2:
+            add("Sensor[1].Interface.Type", "encoder_on_analog_drive", "0, 1 or 4: an analog drive has no encoder telegram")
         ref = cfg["Actor.DriveParameter.ReferenceSpeed"]
         nmax = cfg["Actor.DriveParameter.MaxSpeed"]
         factor = PROFIDRIVE_OVERDRIVE if cfg["Actor.Type"] == 1 else ANALOG_OVERDRIVE
@@ -389,6 +418,8 @@ def rule_issues(cfg: Mapping[str, Any]) -> list[Issue]:
                 f"{nmax:g} 1/min and {cfg['Mechanics.LeadScrew']:g} user units per motor revolution")
     if vmin > vmax:
         add("DynamicLimits.MinVelocity", "min_above_max", f"at most DynamicLimits.MaxVelocity = {vmax:g}")
+    if cfg["Sensor[1].Parameter.BehaviorGx_XIST1"] not in (0, 1):
+        add("Sensor[1].Parameter.BehaviorGx_XIST1", "invalid", "0 or 1 (16#864B/16#0001)")
     # hardware limit switches need their inputs (§5.4.4.3)
     if cfg["PositionLimits_HW.Active"]:
         for path in ("PositionLimits_HW.MinSwitchAddress", "PositionLimits_HW.MaxSwitchAddress"):

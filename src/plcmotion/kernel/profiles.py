@@ -269,9 +269,11 @@ class Planner:
 
     # --- public plans -------------------------------------------------------------------------------
     def position(self, t: float, p: float, v: float, a: float, target: float, lim: Limits,
-                 *, allow_reverse: bool = True) -> Profile:
+                 *, allow_reverse: bool = True, end_velocity: float = 0.0) -> Profile:
         """Time-optimal move to ``target`` with standstill there.
 
+        ``end_velocity`` (blending, e.g. the command table's "Blend motion"): arrive at the target with
+        this speed in the direction of travel and keep it; 0 stops there.
         Raises ``ReversalRequired`` when the motion would have to change direction and
         ``allow_reverse`` is False (permitted-direction check of §5.4.4.1).
         """
@@ -298,10 +300,16 @@ class Planner:
                 b.jump(sign * vss)
         else:
             sign = math.copysign(1.0, b.v if abs(b.v) > _EPS_V else b.a)
+        blend = abs(end_velocity)
+        if blend > 0.0:
+            blend = max(min(blend, max(lim.velocity, lim.start_stop)), lim.start_stop)
+            self._approach(b, target, sign, lim, sign * blend)
+            return b.finish(target, sign * blend)
         self._approach(b, target, sign, lim)
         return b.finish(target, 0.0)
 
-    def _approach(self, b: _Builder, target: float, sign: float, lim: Limits) -> None:
+    def _approach(self, b: _Builder, target: float, sign: float, lim: Limits,
+                  v_final: float | None = None) -> None:
         """Final stage of a positioning: travel in direction ``sign`` and stop at ``target``.
 
         When the axis is faster than the new velocity limit and close to the target, slowing down to the
@@ -310,15 +318,15 @@ class Planner:
         The same search keeps a stepper from dropping below its start/stop velocity before the end.
         """
         amax, amin = self._signed_limits(sign, lim)
-        v_end = sign * lim.start_stop
-        vmax = max(lim.velocity, lim.start_stop)
+        v_end = sign * lim.start_stop if v_final is None else v_final
+        vmax = max(lim.velocity, lim.start_stop, abs(v_end))
         state = (b.t, b.p, b.v, b.a, len(b.segments))
 
         def attempt(limit: float) -> bool:
             b.t, b.p, b.v, b.a = state[:4]
             del b.segments[state[4]:]
             self._solve(b, target_p=target, target_v=v_end, vmax=limit, amax=amax, amin=amin, jerk=lim.jerk)
-            return self._passes(b.segments[state[4]:], b.t, target, sign, lim.start_stop)
+            return self._passes(b.segments[state[4]:], b.t, target, sign, min(lim.start_stop, abs(v_end)))
 
         if not attempt(vmax):
             return
@@ -410,6 +418,13 @@ class Planner:
                 b.add(cruise / abs(v), p, v, 0.0, 0.0)
             b.add(abs(v) / deceleration, b.p, v, -math.copysign(deceleration, v), 0.0)
         return b.finish(stop_at, 0.0, {"reached": b.t})
+
+    @staticmethod
+    def constant_move(t: float, p: float, target: float, duration: float) -> Profile:
+        """Travel to ``target`` at constant velocity in ``duration`` (velocity steps at both ends)."""
+        b = _Builder(t, p, 0.0, 0.0)
+        b.add(duration, p, (target - p) / duration, 0.0, 0.0)
+        return b.finish(target, 0.0)
 
     @staticmethod
     def hold(t: float, p: float) -> Profile:

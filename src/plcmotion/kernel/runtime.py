@@ -24,6 +24,7 @@ from . import monitoring
 from . import parameters as P
 from .axis import ConfigurationError, PositioningAxis
 from .bank import AxisBank
+from .command_table import CommandTable
 from .io import DEFAULT_FILTER, DigitalInputs, DigitalOutputs
 
 RUN, STOP = "RUN", "STOP"
@@ -63,6 +64,7 @@ class Controller:
         self._ratio = int(round(ratio))
         self.bank = AxisBank()
         self.axes: dict[str, PositioningAxis] = {}
+        self.command_tables: dict[str, CommandTable] = {}
         self._by_index: list[PositioningAxis] = []
         self._groups: dict[str, DriveGroup] = {}
         self._group_list: list[DriveGroup] = []
@@ -82,6 +84,7 @@ class Controller:
         self.outputs = DigitalOutputs()
         self.plant = Plant(self.inputs)
         self._input_axes: list[PositioningAxis] = []   # axes that watch inputs every servo cycle
+        self._pto_holder: dict[int, PositioningAxis] = {}   # pulse generator number -> axis using it
         # retentive data (absolute encoder adjustment), kept in ``state_file`` when one is given
         self.state_file = state_file
         self.retain: dict[str, dict] = retain.load(state_file) if state_file else {}
@@ -115,6 +118,17 @@ class Controller:
         self.axes[name] = axis
         self._by_index.append(axis)
         return axis
+
+    def add_command_table(self, name: str, commands: Any = (), *, source: str | None = None) -> CommandTable:
+        """Create a command table TO; ``commands`` are up to 32 dicts of Type/Position/Velocity/Duration/
+        NextStep/StepCode (S7-1200 V6 §12.10.8.1)."""
+        if not isinstance(name, str) or not _NAME.match(name):
+            raise ValueError(f"command table name {name!r} must be an identifier")
+        if name in self.command_tables or name in self.axes:
+            raise ValueError(f"a technology object {name!r} exists already")
+        table = CommandTable(self, name, commands)
+        self.command_tables[name] = table
+        return table
 
     def _drive_group(self, kind: str) -> DriveGroup:
         group = self._groups.get(kind)
@@ -180,19 +194,29 @@ class Controller:
         if self.mode == RUN:
             return
         for axis in self._by_index:
-            axis.cfg = dict(axis.load_cfg)
-            axis.eff = dict(axis.load_cfg)
-            axis._dirty.clear()
-            axis.alarms.clear()
-            if axis.pto:
-                axis.homed = False                    # §11.1.3.1: CPU restart resets "homed" of PTO axes
-            axis.busy_commands.clear()
-            axis._apply_bank_config()
-        for inst in self._instances.values():
-            inst._reinit()
+            axis.reinitialize("startup")
+        self._reinit_instances()
         self.mode = RUN
         self.stop_reason = None
         self._servo_defect = False
+
+    def power_cycle(self) -> None:
+        """POWER OFF -> ON (§9.4): jobs aborted, outputs reset, technology objects restarted; axes must be
+        enabled (and, with incremental encoders or PTO, homed) again.  Retentive data survives; the
+        virtual clock and the machine (plant) keep going."""
+        self.stop("POWER OFF")
+        for address in list(self.outputs):
+            self.outputs[address] = False
+        for axis in self._by_index:
+            axis.reinitialize("power")
+        self._reinit_instances()
+        self.mode = RUN
+        self.stop_reason = None
+        self._servo_defect = False
+
+    def _reinit_instances(self) -> None:
+        for inst in self._instances.values():
+            inst._reinit()
 
     # --- running ---------------------------------------------------------------------------------------
     def step(self) -> None:

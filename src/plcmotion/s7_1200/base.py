@@ -13,6 +13,7 @@ exactly one call.
 from __future__ import annotations
 
 import math
+import numbers
 from typing import Any, ClassVar
 
 import numpy as np
@@ -35,12 +36,9 @@ def as_bool(fb: "Instruction", name: str, value: Any) -> bool:
 
 def as_real(value: Any) -> float | None:
     """REAL input value, None for an invalid number format (NaN, infinity, not a number)."""
-    if isinstance(value, _BOOL_TYPES) or isinstance(value, bool):
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
         return None
-    try:
-        x = float(value)
-    except (TypeError, ValueError):
-        return None
+    x = float(value)
     return x if math.isfinite(x) else None
 
 
@@ -177,7 +175,8 @@ class ExecuteInstruction(Instruction):
             object.__setattr__(self, name, default)
 
     def _set_busy(self, busy: bool) -> None:
-        self._out(Busy=busy)
+        if "Busy" in self.OUTPUTS:
+            self._out(Busy=busy)
         axis = self._busy_axis
         if busy and axis is None:
             job_axis = getattr(self, "Axis", None)

@@ -86,6 +86,8 @@ _REJECTS: dict[tuple[str, str], tuple[int, int]] = {
     (F.REJECTED, "starting_up"): (0x8207, 0x0053),
     (F.REJECTED, "actual_invalid"): (0x8207, 0x0054),
     (F.REJECTED, "position_control_required"): (0x8207, 0x006B),
+    (F.HW_USED, ""): (0x8005, 0x0001),
+    (F.PTO_SWITCH, ""): (0x8407, 0x0001),
     (F.RESTART_IMPOSSIBLE, "enabled"): (0x820A, 0x0013),
     (F.RESTART_IMPOSSIBLE, "control_panel"): (0x820A, 0x0027),
     (F.RESTART_IMPOSSIBLE, "not_disabled"): (0x820A, 0x002C),
@@ -150,6 +152,10 @@ CONFIG_IDS: dict[str, int] = {
     "Sensor[1].ActiveHoming.DigitalInputAddress": 0x8612,
     "Sensor[1].PassiveHoming.DigitalInputAddress": 0x8616,
     "Simulation.Mode": 0x8647,
+    "Actor.PTOSliceTime": 0x864A,
+    "Sensor[1].Parameter.BehaviorGx_XIST1": 0x864B,
+    "Actor.Interface.PTO_SignalType": 0x8600,
+    "Actor.Interface.Telegram": 0x8622,
 }
 #: rules that have an ErrorID of their own
 _CONFIG_RULES: dict[tuple[str, str], tuple[int, int]] = {
@@ -159,6 +165,11 @@ _CONFIG_RULES: dict[tuple[str, str], tuple[int, int]] = {
     ("Homing.AutoReversal", "rule:no_hw_limits"): (0x8613, 0x0001),
     ("Actor.DirectionMode", "rule:both_without_direction_output"): (0x861A, 0x002D),
     ("Sensor[1].ActiveHoming.Mode", "rule:pto_homing_mode"): (0x8617, 0x0011),
+    ("Actor.PTOSliceTime", "rule:above_20ms"): (0x864A, 0x006D),
+    ("Actor.Interface.Telegram", "rule:no_encoder_in_telegram"): (0x8644, 0x0068),
+    ("Sensor[1].Interface.Type", "rule:encoder_on_analog_drive"): (0x8637, 0x0011),
+    ("Actor.PTOSliceTime", "rule:below_2ms"): (0x864A, 0x006E),
+    ("Sensor[1].Parameter.BehaviorGx_XIST1", "rule:invalid"): (0x864B, 0x0001),
     ("PositionLimits_HW.MinSwitchAddress", "rule:missing"): (0x860D, 0x000B),
     ("PositionLimits_HW.MaxSwitchAddress", "rule:missing"): (0x860E, 0x000B),
     ("PositionLimits_HW.MinSwitchAddress", "selection"): (0x860D, 0x000B),
@@ -201,8 +212,23 @@ def _config_codes(path: str, reason: str) -> tuple[int, int]:
     return error_id, OUT_OF_RANGE
 
 
+_TABLE: dict[tuple[str, str], tuple[int, int]] = {
+    ("Type", "invalid"): (0x8700, 0x0001),
+    ("Position", "format"): (0x8701, 0x0002), ("Position", "too_high"): (0x8701, 0x0005),
+    ("Position", "too_low"): (0x8701, 0x0006),
+    ("Velocity", "format"): (0x8702, 0x0002), ("Velocity", "above_max"): (0x8702, 0x0008),
+    ("Velocity", "below_start_stop"): (0x8702, 0x0009),
+    ("Duration", "format"): (0x8703, 0x0002), ("Duration", "too_long"): (0x8703, 0x0021),
+    ("Duration", "too_short"): (0x8703, 0x0022),
+    ("NextStep", "invalid"): (0x8704, 0x0011), ("NextStep", "not_permitted"): (0x8704, 0x0023),
+}
+
+
 def codes(fault: Fault) -> tuple[int, int]:
     """(ErrorID, ErrorInfo) of a kernel fault."""
+    if fault.kind == F.TABLE_CONFIG:
+        field, _, reason = fault.detail.partition(":")
+        return _TABLE.get((field, reason), (0x8700, 0x0001))
     if fault.kind == F.CONFIG:
         path, _, reason = fault.detail.partition(":")
         return _config_codes(path, reason)
@@ -238,7 +264,10 @@ DESCRIPTIONS: dict[int, str] = {
     0x8201: "axis already enabled by another MC_Power instance",
     0x8202: "too many simultaneously active commands",
     0x8204: "axis is not homed",
+    0x8005: "pulse generator used by another enabled axis",
     0x8207: "command rejected",
+    0x8208: "difference between maximum and start/stop velocity invalid",
+    0x8209: "invalid acceleration",
     0x820A: "restart of the axis not possible",
     0x8400: "invalid Position",
     0x8401: "invalid Distance",
@@ -249,8 +278,22 @@ DESCRIPTIONS: dict[int, str] = {
     0x8406: "JogForward and JogBackward both TRUE",
     0x8407: "switch the PTO to another axis only after disabling the active one",
     0x8408: "invalid Axis",
+    0x8409: "invalid CommandTable",
+    0x840A: "invalid StartStep",
+    0x840B: "invalid EndStep",
+    0x840C: "invalid RampUpTime",
+    0x840D: "invalid RampDownTime",
+    0x840E: "invalid EmergencyRampTime",
+    0x840F: "invalid JerkTime",
+    0x8410: "invalid Parameter",
+    0x8411: "invalid Value",
     0x8412: "invalid StartMode",
     0x8645: "maximum velocity cannot be reached with the drive parameters",
+    0x8700: "command table: invalid command type",
+    0x8701: "command table: invalid position / travel path",
+    0x8702: "command table: invalid velocity",
+    0x8703: "command table: invalid duration",
+    0x8704: "command table: invalid next step",
     0x8FFF: "internal error",
 }
 

@@ -18,6 +18,19 @@ A project file has up to three sections::
     signals = ["Axis_1.Position", "Axis_1.Velocity"]
     every = 1                     # record every n-th servo cycle
 
+    [inputs]                      # optional: input filters of single inputs [s] (default input_filter)
+    "I0.3" = { filter = 0.0008 }
+
+    [command_tables.Table_1]      # optional: command table technology objects (S7-1200 V6 §6)
+    Command = [
+        { Type = 5, Position = 100.0, Velocity = 50.0, NextStep = 1, StepCode = 1 },
+        { Type = 7, Velocity = 20.0, Duration = 2.0 },
+    ]
+
+``[controller]`` may also set ``input_filter`` (default filter time of the digital inputs, 0.0064 s) and
+``state_file``: where retentive data (the absolute encoder adjustment) is kept, relative to the project
+file; by default ``<project>.state.json`` next to it.
+
 Axis names are identifiers (letters, digits, underscore; not starting with a digit).  Inside an axis
 table the keys are the tag paths of the positioning axis (``plcmotion.kernel.parameters.SCHEMA``,
 S7-1200 Motion Control V6 §12.9, plus the ``Plant.*`` parameters of the simulated machine); the
@@ -56,8 +69,10 @@ from .kernel import parameters as P
 from .kernel.axis import ConfigurationError
 from .kernel.runtime import Controller
 
-SECTIONS = ("controller", "axes", "trace")
+SECTIONS = ("controller", "axes", "trace", "inputs", "command_tables")
 CONTROLLER_DEFAULTS: dict[str, float] = {"servo_cycle": 0.001, "app_cycle": 0.004}
+CONTROLLER_KEYS = ("servo_cycle", "app_cycle", "input_filter", "state_file")
+STEP_KEYS = ("Type", "Position", "Velocity", "Duration", "NextStep", "StepCode")
 TRACE_KEYS = ("signals", "every")
 AXIS_TYPES = ("positioning",)
 
@@ -194,7 +209,9 @@ class _Loader:
             if key not in SECTIONS:
                 self.unknown(key, value, "section", SECTIONS)
         ctl = self.controller(doc.get("controller"))
+        self.inputs(ctl, doc.get("inputs"))
         declared = self.axes(ctl, doc.get("axes"))
+        self.command_tables(ctl, doc.get("command_tables"), declared)
         trace = self.trace(ctl, doc.get("trace"), declared)
         ctl.project = {"path": self.label, "trace": trace}  # type: ignore[attr-defined]
         return (None if self.problems else ctl), self.problems
@@ -239,8 +256,20 @@ class _Loader:
             return Controller()
         before = len(self.problems)
         for key, value in section.items():
-            if key not in CONTROLLER_DEFAULTS:
-                self.unknown(f"controller.{key}", value, "key", list(CONTROLLER_DEFAULTS))
+            if key not in CONTROLLER_KEYS:
+                self.unknown(f"controller.{key}", value, "key", list(CONTROLLER_KEYS))
+        extra: dict[str, Any] = {}
+        filt = section.get("input_filter", 0.0064)
+        if isinstance(filt, bool) or not isinstance(filt, (int, float)) or not math.isfinite(filt) \
+                or not 0.0 <= filt <= 20.0:
+            self.bad("controller.input_filter", filt, "a time in [0, 20] s, e.g. 0.0064")
+        else:
+            extra["input_filter"] = float(filt)
+        state = section.get("state_file", self.path.name.rsplit(".", 1)[0] + ".state.json")
+        if not isinstance(state, str) or not state.strip():
+            self.bad("controller.state_file", state, "a file name, relative to the project file")
+        else:
+            extra["state_file"] = os.fspath(self.path.parent / state)
         cycles: dict[str, float] = {}
         for key, default in CONTROLLER_DEFAULTS.items():
             value = section.get(key, default)
@@ -260,10 +289,86 @@ class _Loader:
         if len(self.problems) > before:
             return Controller()
         try:
-            return Controller(cycles["servo_cycle"], cycles["app_cycle"])
+            return Controller(cycles["servo_cycle"], cycles["app_cycle"], **extra)
         except ValueError as exc:               # a rule of the runtime this loader does not know
             self.note(f"controller: {exc}")
             return Controller()
+
+    # --- [inputs] -----------------------------------------------------------------------------------
+    def inputs(self, ctl: Controller, section: Any) -> None:
+        if section is None:
+            return
+        if not isinstance(section, dict):
+            self.bad("inputs", section, 'a table of inputs, e.g. "I0.3" = { filter = 0.0008 }')
+            return
+        from .kernel.io import check_address
+        for address, spec in section.items():
+            key = f"inputs.{_key(address)}"
+            try:
+                address = check_address(address, "I")
+            except (TypeError, ValueError):
+                self.note(f"{key}: not an input address; allowed: I<byte>.<bit>, e.g. I0.3")
+                continue
+            if not isinstance(spec, dict):
+                self.bad(key, spec, "a table { filter = <seconds> }")
+                continue
+            for name, value in spec.items():
+                if name != "filter":
+                    self.unknown(f"{key}.{name}", value, "key", ["filter"])
+                    continue
+                try:
+                    ctl.inputs.set_filter(address, value)
+                except ValueError:
+                    self.bad(f"{key}.filter", value, "a time in [0, 20] s")
+
+    # --- [command_tables.<name>] ----------------------------------------------------------------------
+    def command_tables(self, ctl: Controller, section: Any, declared: list[str]) -> None:
+        if section is None:
+            return
+        if not isinstance(section, dict):
+            self.bad("command_tables", section, "one table [command_tables.<name>] per command table")
+            return
+        for name, table in section.items():
+            key = f"command_tables.{_key(name)}"
+            if not _NAME.match(name) or name in declared:
+                self.note(f"{key}: the name must be an identifier not used by an axis")
+                continue
+            if not isinstance(table, dict):
+                self.bad(key, table, "a table with Command = [ { Type = ..., ... }, ... ]")
+                continue
+            for extra in table:
+                if extra != "Command":
+                    self.unknown(f"{key}.{extra}", table[extra], "key", ["Command"])
+            steps = table.get("Command", [])
+            if not isinstance(steps, list) or len(steps) > 32:
+                self.bad(f"{key}.Command", steps, "a list of at most 32 steps")
+                continue
+            rows = []
+            ok = True
+            for n, step in enumerate(steps, start=1):
+                skey = f"{key}.Command[{n}]"
+                if not isinstance(step, dict):
+                    self.bad(skey, step, "a table { Type = 5, Position = 100.0, Velocity = 50.0 }")
+                    ok = False
+                    continue
+                for field, value in step.items():
+                    if field not in STEP_KEYS:
+                        self.unknown(f"{skey}.{field}", value, "key", STEP_KEYS)
+                        ok = False
+                    elif isinstance(value, bool) or not isinstance(value, (int, float)) or (
+                            field in ("Type", "NextStep", "StepCode") and not isinstance(value, int)):
+                        kind = "an integer" if field in ("Type", "NextStep", "StepCode") else "a number"
+                        self.bad(f"{skey}.{field}", value, kind)
+                        ok = False
+                    elif field == "StepCode" and not 0 <= value <= 0xFFFF:
+                        self.bad(f"{skey}.{field}", value, "0..65535")
+                        ok = False
+                rows.append(step)
+            if ok:
+                try:
+                    ctl.add_command_table(name, rows)
+                except (TypeError, ValueError) as exc:
+                    self.note(f"{key}: {exc}")
 
     # --- [axes.<name>] ------------------------------------------------------------------------------
     def axes(self, ctl: Controller, section: Any) -> list[str]:

@@ -368,6 +368,10 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisT
             self.raise_alarm(bad)
             return
         self.position_controlled = start_mode == 1 or not self.servo
+        if self.servo and self.position_controlled and not self.sensor_valid:
+            detail = self.faults.get("encoder", ("", False))[0]
+            self.raise_alarm(F.alarm(F.ENCODER, detail, Reaction.REMOVE_ENABLE))
+            return
         self.state = ENABLING
         self.drive.set_enable(True, t)
         self._set_enable_output(True)
@@ -512,7 +516,9 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisT
         remaining = []
         for fault in self.alarms:
             device = {v: k for k, v in self._DEVICE_ALARMS.items()}.get(fault.kind)
-            if device is not None and device in self.faults:
+            if device is not None and device in self.faults and device != "encoder":
+                # a drive that is still faulty keeps its alarm; an encoder that stays invalid may be
+                # acknowledged to move the axis without position control (§12.7)
                 remaining.append(fault)
                 continue
             if fault.kind == F.CONFIG:
@@ -576,6 +582,8 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisT
             return F.reject(F.REJECTED, "starting_up")    # STOP/STARTUP: no motion jobs (§2.2.7.4)
         if self.pto_used_by_other():
             return F.reject(F.HW_USED)
+        if not self.activated:
+            return F.reject(F.NOT_ACTIVATED)                # shared PTO not yet taken over (§12.1)
         if self.state != ENABLED:
             return F.reject(F.NOT_ENABLED)
         if self.alarms:
@@ -585,6 +593,10 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisT
             return F.reject(F.TOO_MANY_COMMANDS)
         if job.kind == JobKind.ABSOLUTE and not self.homed:
             return F.reject(F.NOT_HOMED)
+        needs_control = job.kind in POSITIONING_KINDS or job.kind == JobKind.HOME_ACTIVE or (
+            job.kind in (JobKind.VELOCITY, JobKind.JOG) and job.position_controlled)
+        if self.servo and needs_control and not self.sensor_valid:
+            return F.reject(F.REJECTED, "position_control_required")   # §12.7: invalid actual values
         return None
 
     def submit(self, job: Job) -> None:

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any, Mapping
 
 from . import faults as F
 from . import parameters as P
-from .faults import Fault
+from .faults import Fault, Reaction
 
 if TYPE_CHECKING:  # pragma: no cover
     from .axis import PositioningAxis
@@ -48,6 +48,9 @@ class ConfigMixin:
         for path in due:
             candidate[path] = self.cfg[path]
         bad = self._validate(candidate, due)
+        if bad is not None and bad.detail == "PositionLimits_SW.MinPosition:rule:low_above_high":
+            # changed at runtime: the operating error 16#8010 (remove enable), not the download error
+            bad = F.alarm(F.SW_LIMIT_ORDER, "", Reaction.REMOVE_ENABLE)
         if bad is not None:
             self.raise_alarm(bad)
             return bad

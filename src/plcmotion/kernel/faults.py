@@ -60,6 +60,7 @@ NOT_ENABLED = "not_enabled"
 ALREADY_ENABLED = "already_enabled"      # another enabling instruction owns the axis
 TOO_MANY_COMMANDS = "too_many_commands"
 NOT_HOMED = "not_homed"
+NOT_ACTIVATED = "not_activated"          # the axis does not hold its (shared) pulse generator yet
 REJECTED = "rejected"                    # details: homing_active, table_homing, homing_table, numeric_limit,
 #                                          starting_up, actual_invalid, position_control_required
 PTO_SWITCH = "pto_switch"                # the shared pulse generator is held by another enabled axis

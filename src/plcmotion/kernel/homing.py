@@ -75,6 +75,9 @@ class HomingMixin:
         if self.job is not None and self.job.busy and self.job.kind == JobKind.TABLE and job.mode in (0, 1):
             job.finish(JobState.ERROR, F.reject(F.REJECTED, "homing_table"))
             return
+        if self.servo and not self.sensor_valid:
+            job.finish(JobState.ERROR, F.reject(F.REJECTED, "actual_invalid"))   # StatusSensor.State != 2
+            return
         ref = float(self.ctl.bank.sp_p[self.index])   # "current axis position": the Position tag (§12.9.1)
         if job.mode in (0, 7):
             new = self._wrap(job.position)
@@ -123,6 +126,9 @@ class HomingMixin:
             return
         if self.alarms:
             job.finish(JobState.ERROR, F.Fault(F.PENDING_ALARM, self.alarms[0].kind + "/" + self.alarms[0].detail))
+            return
+        if self.servo and not self.sensor_valid:
+            job.finish(JobState.ERROR, F.reject(F.REJECTED, "actual_invalid"))
             return
         active = self.job if self.job is not None and self.job.busy else None
         if job.kind == JobKind.HOME_PASSIVE:

@@ -42,7 +42,10 @@ class SwitchesMixin:
             self.ctl.outputs[self._enable_output] = False
         # in simulation (Simulation.Mode = 1) switches and drive feedback have no effect (§5.4.3.1)
         uses_inputs = any(self._hw_input.values()) or self._ready_input or any(self._homing_inputs().values())
-        if uses_inputs and not self.sim and self not in self.ctl._input_axes:
+        # actual value range checks (§12.8 16#800B): absolute encoders and modulo axes
+        self._range_check = self.servo and (self.eff["Sensor[1].Type"] == 1 or self.eff["Modulo.Enable"])
+        self._last_mech = self.drive.mechanical_position()
+        if (uses_inputs or self._range_check) and not self.sim and self not in self.ctl._input_axes:
             self.ctl._input_axes.append(self)
 
     # --- signals ---------------------------------------------------------------------------------------
@@ -68,13 +71,43 @@ class SwitchesMixin:
         if self._ready_input and self.state in ("enabled", "disabling") and not self.drive_ready_signal():
             self.raise_alarm(F.alarm(F.DRIVE_NOT_READY, "", Reaction.REMOVE_ENABLE))
         active = self.eff["PositionLimits_HW.Active"]
+        before = dict(self.hw_approached)
         for side in _SIDES:
-            now = active and self._switch_actuated(side)
-            before = self.hw_approached[side]
-            self.hw_approached[side] = now
-            if now and not before:
-                self._on_hw_limit(side, t)
+            self.hw_approached[side] = active and self._switch_actuated(side)
+        new = [side for side in _SIDES if self.hw_approached[side] and not before[side]]
+        if len(new) == 2:
+            self._on_hw_limit("min", t)          # both at once: the axis cannot be freed (16#800E/16#0044)
+        elif new:
+            self._on_hw_limit(new[0], t)
         self._homing_check_inputs(t)
+        if self._range_check:
+            self._check_actual_range()
+
+    def _check_actual_range(self: "PositioningAxis") -> None:
+        """16#800B: a (non-cyclic) absolute encoder leaves its measuring range; the actual value of a
+        modulo axis changes by more than the modulo length in one cycle."""
+        mech = self.drive.mechanical_position()          # coordinate shifts (homing) are no jumps
+        jump = abs(mech - self._last_mech)
+        self._last_mech = mech
+        if self.alarms and any(a.kind == F.POSITION_RANGE for a in self.alarms):
+            return
+        if self.eff["Modulo.Enable"] and jump > self.eff["Modulo.Length"]:
+            self.raise_alarm(F.alarm(F.POSITION_RANGE, "modulo_jump", Reaction.REMOVE_ENABLE))
+            return
+        if self.eff["Sensor[1].Type"] == 1:
+            span = self.eff["Sensor[1].Parameter.DeterminableRevolutions"] * self._encoder_revolution()
+            raw = self.drive.mechanical_position()
+            if raw >= span:
+                self.raise_alarm(F.alarm(F.POSITION_RANGE, "positive", Reaction.REMOVE_ENABLE))
+            elif raw < 0.0:
+                self.raise_alarm(F.alarm(F.POSITION_RANGE, "negative", Reaction.REMOVE_ENABLE))
+
+    def _encoder_revolution(self: "PositioningAxis") -> float:
+        """Load distance of one encoder revolution (rotary) or the whole range of a linear encoder."""
+        e = self.eff
+        if e["Sensor[1].System"] == 0:
+            return float("inf")
+        return e["Mechanics.LeadScrew"] if e["Sensor[1].MountingMode"] == 0 else e["Sensor[1].Parameter.DistancePerRevolution"]
 
     def _on_hw_limit(self: "PositioningAxis", side: str, t: float) -> None:
         if self.state not in ("enabled", "disabling"):

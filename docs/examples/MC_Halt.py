@@ -53,5 +53,6 @@ assert not halt.Busy and not move.Busy and axis.StatusBits.StandStill
 
 out = Path(os.environ.get("PLCMOTION_DOCS_IMG", Path(__file__).resolve().parents[1] / "img"))
 out.mkdir(parents=True, exist_ok=True)
-trace.plot(out / "MC_Halt.png", title="MC_Halt: braking to standstill (Done), overridden while braking (CommandAborted)")
+trace.plot(out / "MC_Halt.png",
+           title="MC_Halt: braking to standstill (Done), overridden while braking (CommandAborted)")
 print(f"wrote {out / 'MC_Halt.png'}")

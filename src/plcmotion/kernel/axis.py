@@ -115,8 +115,20 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisT
         return self.ctl.time
 
     def _state_now(self) -> tuple[float, float, float]:
+        """Setpoint (position, velocity, acceleration) at the controller's current time.
+
+        Taken from the profile, not from the last cycle's arrays: inside a servo cycle's event handling
+        the time has already advanced.  An axis whose setpoint follows its actual value (disabled or not
+        position-controlled) starts from the actual position.
+        """
+        return self._state_at(self.ctl.time)
+
+    def _state_at(self, t: float) -> tuple[float, float, float]:
+        p, v, a = self.profile.at(t)
         b, i = self.ctl.bank, self.index
-        return float(b.sp_p[i]), float(b.sp_v[i]), float(b.sp_a[i])
+        if b.follow_act[i]:
+            p = float(b.act_p[i])
+        return p, v, a
 
     @property
     def activated(self) -> bool:
@@ -430,7 +442,7 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisT
         self._timers.pop("ready", None)
         b, i = self.ctl.bank, self.index
         self._set_loop_flags()
-        p = float(b.act_p[i]) if self.servo else float(b.sp_p[i])
+        p = float(b.act_p[i]) if self.servo else self._state_now()[0]
         b.sp_v[i] = b.sp_a[i] = 0.0
         self._start_profile(Planner.hold(t, p))
         if by_power and self.pto:
@@ -492,6 +504,7 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisT
             self.drive.set_fault(True)
         if kind == "encoder" or (kind == "drive" and detail in ("station",)):
             self.homed = False                     # §2.5: an encoder error resets "homed"
+            self.ctl._retain_axis(self)            # also for absolute encoders, across power cycles
         self.raise_alarm(F.alarm(self._DEVICE_ALARMS[kind], detail, Reaction.REMOVE_ENABLE))
 
     def clear_fault(self, kind: str | None = None) -> None:
@@ -649,26 +662,32 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisT
                                  p, v, a, lim, self.motion.planner)
         return job.position
 
-    def _plan_job(self, job: Job, t: float) -> None:
-        t_plan = self._slice_start(t)
-        p, v, a = self._state_now() if t_plan == t else self.profile.at(t_plan)
+    def _plan_job(self, job: Job, t: float, spec: Job | None = None, *, new_command: bool = True) -> bool:
+        """Plan and start the motion of ``job`` (or of ``spec``, a command table step run by ``job``).
+
+        A new command on a PTO axis starts at the next segment boundary (V7 PTOSliceTime).  Faults found
+        while planning end ``job``.  Returns whether the motion started.
+        """
+        t_plan = self._slice_start(t) if new_command else t
+        p, v, a = self._state_at(t_plan)
         try:
-            plan = self.motion.plan(job, t_plan, p, v, a)
+            plan = self.motion.plan(spec or job, t_plan, p, v, a)
         except DirectionFault as exc:
             self.raise_alarm(F.alarm(F.DIRECTION, exc.detail, Reaction.STOP), job=job)
-            return
+            return False
         except PlanningError as exc:
             self.raise_alarm(F.alarm(F.INTERNAL, "planning", Reaction.EMERGENCY, str(exc)), job=job)
-            return
+            return False
         fault = self._hw_direction_fault(plan.profile, p)
         if fault is not None:
             self.raise_alarm(fault, job=job)
-            return
+            return False
         if t_plan != t:
             # the running profile goes on until the next PTO segment boundary (V7 Actor.PTOSliceTime)
             plan.profile.segments[:0] = [seg for seg in self.profile.segments if seg.t < t_plan]
         self._interpolating = True
         self._start_profile(plan.profile, plan)
+        return True
 
     def _slice_start(self, t: float) -> float:
         """When a new command takes effect: at once, or on a PTO at the next segment boundary."""

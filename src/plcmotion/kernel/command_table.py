@@ -100,7 +100,15 @@ class CommandTable:
         for n, row in enumerate(rows, start=1):
             for key, value in row.items():
                 setattr(self.Command[n], key, value)
+        self._start_values = [step.as_dict() for step in self.Command]   # load memory (§9.7)
         self.in_use_by: Any = None       # the MC_CommandTable job running this table
+
+    def reinitialize(self) -> None:
+        """Back to the start values (CPU STOP -> RUN, POWER ON: §2.2.7.4); runtime edits are lost."""
+        for step, values in zip(self.Command, self._start_values):
+            for key, value in values.items():
+                setattr(step, key, value)
+        self.in_use_by = None
 
     def __repr__(self) -> str:
         used = sum(1 for s in self.Command if s.Type != EMPTY)

@@ -38,6 +38,8 @@ class HomingMixin:
 
     def homing_configured(self: "PositioningAxis", mode: int) -> bool:
         """Is the homing method for MC_Home ``mode`` (2 passive, 3 active) configured (§12.8 16#8404/16#0015)?"""
+        if self.sim:
+            return True                               # simulation homes at once (§5.4.3.1)
         kind = "Active" if mode == 3 else "Passive"
         method = self.eff[f"Sensor[1].{kind}Homing.Mode"]
         has_input = bool(self.cfg[f"Sensor[1].{kind}Homing.DigitalInputAddress"])
@@ -129,6 +131,15 @@ class HomingMixin:
             return
         if self.servo and not self.sensor_valid:
             job.finish(JobState.ERROR, F.reject(F.REJECTED, "actual_invalid"))
+            return
+        if self.sim:
+            # simulation: homing is executed at once, without motion (§5.4.3.1)
+            if job.kind == JobKind.HOME_ACTIVE and self.job is not None and self.job.busy:
+                self._finish_job(self.job, JobState.ABORTED, self.now)
+            self._set_home(float(self.ctl.bank.sp_p[self.index]), self._wrap(job.position))
+            job.reference_position = self.reference_mark
+            job.finish(JobState.DONE)
+            self._replan()
             return
         active = self.job if self.job is not None and self.job.busy else None
         if job.kind == JobKind.HOME_PASSIVE:

@@ -99,6 +99,11 @@ class DigitalInputs:
         self.set_level(address, bool(level))
         self._forced[address] = bool(level)
 
+    def begin_cycle(self, t: float) -> None:
+        """Levels set from now on are stamped with servo time ``t`` (the plant writes them at the start
+        of the cycle)."""
+        self._time = t
+
     def update(self, t: float) -> None:
         """Apply the filters at time ``t`` (once per servo cycle)."""
         self._time = t

@@ -133,7 +133,8 @@ class MotionPlanner:
             lim = limits(ax, job.velocity)
             target = job.target
             try:
-                profile = pl.position(t, p, v, a, target, lim, allow_reverse=self._permitted(-1) and self._permitted(1))
+                profile = pl.position(t, p, v, a, target, lim, allow_reverse=self._permitted(-1) and self._permitted(1),
+                                      end_velocity=job.extra.get("end_velocity", 0.0))
             except ReversalRequired:
                 raise DirectionFault("reversal") from None
             self._check_direction(profile, p)

@@ -180,6 +180,8 @@ class Controller:
             return
         self.mode = STOP
         self.stop_reason = reason
+        for address in list(self.outputs):          # §9.4: all CPU outputs are reset
+            self.outputs[address] = False
         for axis in self._by_index:
             try:
                 axis._abort_all(self.time)
@@ -195,6 +197,8 @@ class Controller:
             return
         for axis in self._by_index:
             axis.reinitialize("startup")
+        for table in self.command_tables.values():
+            table.reinitialize()
         self._reinit_instances()
         self.mode = RUN
         self.stop_reason = None
@@ -209,6 +213,8 @@ class Controller:
             self.outputs[address] = False
         for axis in self._by_index:
             axis.reinitialize("power")
+        for table in self.command_tables.values():
+            table.reinitialize()
         self._reinit_instances()
         self.mode = RUN
         self.stop_reason = None
@@ -268,6 +274,7 @@ class Controller:
         dt = self.servo_cycle
         for g in self._group_list:
             g.read(b, t, dt)
+        self.inputs.begin_cycle(t)
         if self.plant.items:
             self.plant.update(t)
         self.inputs.update(t)

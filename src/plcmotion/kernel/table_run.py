@@ -22,7 +22,6 @@ from . import faults as F
 from .command_table import ABSOLUTE, BLEND, EMPTY, HALT, RELATIVE, VELOCITY, WAIT, CommandTable
 from .jobs import Job, JobKind, JobState
 from .motion import limits
-from .profiles import ReversalRequired
 
 if TYPE_CHECKING:  # pragma: no cover
     from .axis import PositioningAxis
@@ -87,7 +86,6 @@ class TableMixin:
             self._table_fail(job, fault, t)                   # the axis motion continues (§9.6)
             return
         x["current"], x["step_code"] = n, step.StepCode
-        p, v, a = self._state_now()
         kind = step.Type
         if kind == WAIT:
             x["phase"] = "wait"
@@ -95,38 +93,33 @@ class TableMixin:
             self._schedule()
             x["prev_type"] = WAIT
             return
+        first = not x["took_over"]
         self._table_take_over(job, t)
+        t0 = self._slice_start(t) if first else t     # the first motion step is a new command (slice time)
+        p, v, a = self._state_at(t0)
         if kind == HALT:
             x["prev_type"] = HALT
             if abs(v) <= 1e-12:
                 self._table_next(job, t)                      # nothing to stop
                 return
             x["phase"] = "halt"
-            self._start_profile(self.motion.planner.stop(t, p, v, a, limits(self)))
-            self._interpolating = True
+            self._plan_job(job, t, Job(JobKind.HALT), new_command=first)
             return
         if kind == VELOCITY:
             x["phase"] = "velocity"
             x["prev_type"] = VELOCITY
-            self._start_profile(self.motion.planner.velocity(t, p, v, a, step.Velocity, limits(self)))
-            self._interpolating = True
-            self._timers["table"] = t + step.Duration
-            self._schedule()
+            if self._plan_job(job, t, Job(JobKind.VELOCITY, velocity=step.Velocity), new_command=first):
+                self._timers["table"] = t0 + step.Duration      # the duration includes the acceleration
+                self._schedule()
             return
         base = x["prev_target"] if x["prev_type"] in (RELATIVE, ABSOLUTE) else p
         target = step.Position if kind == ABSOLUTE else base + step.Position
-        end_v = self._table_blend_velocity(job, n, target, p)
-        lim = limits(self, step.Velocity)
-        try:
-            profile = self.motion.planner.position(t, p, v, a, target, lim, end_velocity=end_v,
-                                                   allow_reverse=self.motion._permitted(1) and self.motion._permitted(-1))
-        except ReversalRequired:
-            self.raise_alarm(F.alarm(F.DIRECTION, "reversal", F.Reaction.STOP), job=job)
-            return
+        spec = Job(JobKind.ABSOLUTE if kind == ABSOLUTE else JobKind.RELATIVE, velocity=step.Velocity,
+                   extra={"end_velocity": self._table_blend_velocity(job, n, target, p)})
+        spec.target = job.target = target
         x["phase"] = "position"
         x["prev_type"], x["prev_target"] = kind, target
-        self._start_profile(profile)
-        self._interpolating = True
+        self._plan_job(job, t, spec, new_command=first)
 
     def _table_blend_velocity(self: "PositioningAxis", job: Job, n: int, target: float, p: float) -> float:
         """Speed at the target of a blended positioning step (0 = no blending)."""
@@ -163,7 +156,7 @@ class TableMixin:
             self._table_next(job, t)
 
     def _table_finish(self: "PositioningAxis", job: Job, t: float) -> None:
-        p, v, a = self._state_now()
+        p, v, a = self._state_at(t)
         if job.extra["took_over"] and abs(v) > 1e-12:
             job.extra["phase"] = "final_stop"
             self._start_profile(self.motion.planner.stop(t, p, v, a, limits(self)))

@@ -68,18 +68,26 @@ def _standstill(ax: "PositioningAxis") -> bool:
     return float(b.sp_v[i]) == 0.0
 
 
-def _distance(ax: "PositioningAxis") -> float:
+def _positioning_job(ax: "PositioningAxis"):
+    """The running positioning: MC_MoveAbsolute/-Relative or a positioning step of a command table (§10.2)."""
     job = ax.job
-    if job is None or not job.busy or job.kind not in (JobKind.ABSOLUTE, JobKind.RELATIVE):
-        return 0.0
-    return abs(job.target - float(_b(ax).sp_p[ax.index]))
+    if job is None or not job.busy:
+        return None
+    if job.kind in (JobKind.ABSOLUTE, JobKind.RELATIVE):
+        return job
+    if job.kind == JobKind.TABLE and job.extra.get("phase") == "position":
+        return job
+    return None
+
+
+def _distance(ax: "PositioningAxis") -> float:
+    job = _positioning_job(ax)
+    return 0.0 if job is None else abs(job.target - float(_b(ax).sp_p[ax.index]))
 
 
 def _target(ax: "PositioningAxis") -> float:
-    job = ax.job
-    if job is None or not job.busy or job.kind not in (JobKind.ABSOLUTE, JobKind.RELATIVE):
-        return 0.0
-    return ax._wrap(job.target)
+    job = _positioning_job(ax)
+    return 0.0 if job is None else ax._wrap(job.target)
 
 
 #: status tags: path -> getter

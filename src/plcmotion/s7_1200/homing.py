@@ -51,6 +51,8 @@ class MC_Home(ExecuteInstruction):  # noqa: N801
             homing = getattr(axis, "homing_configured", None)
             if homing is None or not homing(mode):
                 raise InstructionError(E.MODE, 0x0015)                  # no homing switch configured
+            if mode == 3 and axis.eff["Homing.AutoReversal"] and not axis.eff["PositionLimits_HW.Active"]:
+                raise InstructionError(E.MODE, 0x0017)                  # reversal needs the HW limit switches
         kind = {0: JobKind.HOME_DIRECT, 1: JobKind.HOME_DIRECT, 6: JobKind.HOME_DIRECT, 7: JobKind.HOME_DIRECT,
                 2: JobKind.HOME_PASSIVE, 3: JobKind.HOME_ACTIVE}[mode]
         job = Job(kind, position=position, mode=mode, owner=self)

@@ -1,4 +1,5 @@
-"""User program for profidrive_servo.toml: jog, then index in steps, then a velocity run and a halt.
+"""User program for profidrive_servo.toml: jog, home on the proximity switch and the encoder zero mark, then
+index in steps, then a velocity run and a halt.
 
 Run it with:  plcmotion run examples/profidrive_servo.toml examples/profidrive_servo_program.py --duration 12 --plot servo.png
 """
@@ -17,7 +18,7 @@ def setup(ctl):
         power(Axis=axis, Enable=True, StartMode=1)
         step = state["step"]
         jog(Axis=axis, JogForward=step == "jog" and power.Status and now - state["t0"] < 1.0, Velocity=50.0)
-        home(Axis=axis, Execute=step == "home", Mode=0, Position=0.0)
+        home(Axis=axis, Execute=step == "home", Mode=3, Position=0.0)   # proximity switch + zero mark
         index(Axis=axis, Execute=step == "index", Distance=90.0, Velocity=300.0)
         run(Axis=axis, Execute=step == "run", Velocity=200.0)
         halt(Axis=axis, Execute=step == "halt")

@@ -1,4 +1,4 @@
-"""User program for pto_stepper.toml: a stepper shuttles between two stations.
+"""User program for pto_stepper.toml: a stepper homes on its reference cam, then shuttles between two stations.
 
 Run it with:  plcmotion run examples/pto_stepper.toml examples/pto_stepper_program.py --duration 20 --plot shuttle.png
 """
@@ -16,7 +16,7 @@ def setup(ctl):
         power(Axis=axis, Enable=True)
         reset(Axis=axis, Execute=axis.StatusBits.Error and not reset.Done)
         step = state["step"]
-        home(Axis=axis, Execute=step == "home" and power.Status, Mode=0, Position=0.0)
+        home(Axis=axis, Execute=step == "home" and power.Status, Mode=3, Position=0.0)   # active homing
         to_b(Axis=axis, Execute=step == "to_b", Position=180.0, Velocity=120.0)
         to_a(Axis=axis, Execute=step == "to_a", Position=20.0, Velocity=120.0)
         if step == "home" and home.Done:

@@ -44,8 +44,9 @@ def params(*, vmax: float = 100.0, vmin: float = 1.0, acc: float = 100.0, dec: f
 
 
 class Pto:
-    def __init__(self, cfg: dict | None = None, *, servo: float = 0.001, app: float = 0.004, enable: bool = True):
-        self.ctl = Controller(servo_cycle=servo, app_cycle=app)
+    def __init__(self, cfg: dict | None = None, *, servo: float = 0.001, app: float = 0.004, enable: bool = True,
+                 version: int = 6):
+        self.ctl = Controller(servo_cycle=servo, app_cycle=app, technology_version=version)
         self.servo = servo
         self.axis = self.ctl.add_positioning_axis("Axis_1", cfg or params())
         self.power = MC_Power(Axis=self.axis, Enable=enable)
@@ -439,7 +440,7 @@ def test_v7_pto_slice_time_command_starts_at_segment_boundary():
     """V7 §12.9 Actor.PTOSliceTime: motion commands are processed in segments, a new command becomes effective
     at the segment boundary (decision 49): with 10 ms a MC_MoveVelocity issued at t = 12 ms starts at 20 ms,
     an override issued at 304 ms changes the velocity from 310 ms on."""
-    b = Pto(params(actor={"PTOSliceTime": 10}))
+    b = Pto(params(actor={"PTOSliceTime": 10}), version=7)      # a V7.0 technology object
     while b.ctl.time < 0.012 - 1e-9:
         b.scan()
     assert b.ctl.time == pytest.approx(0.012)
@@ -463,7 +464,7 @@ def test_v7_pto_slice_time_command_starts_at_segment_boundary():
 
 def test_v7_pto_slice_time_default_takes_effect_within_2_ms():
     """V7: the start value of Actor.PTOSliceTime is 2 ms -- a command takes effect within 2 ms."""
-    b = Pto()
+    b = Pto(version=7)
     b.scan()
     t0 = b.ctl.time
     b.add(MC_MoveVelocity(Execute=True, Velocity=20.0))
@@ -472,11 +473,23 @@ def test_v7_pto_slice_time_default_takes_effect_within_2_ms():
     assert t0 < t_start <= t0 + 0.002 + 1e-9
 
 
+def test_v6_has_no_pto_slice_time():
+    """V6 has no segment time: a command on a V6 PTO axis takes effect in the next servo cycle even with
+    Actor.PTOSliceTime configured (the tag exists only in V7)."""
+    b = Pto(params(actor={"PTOSliceTime": 10}), version=6)
+    while b.ctl.time < 0.012 - 1e-9:
+        b.scan()
+    b.add(MC_MoveVelocity(Execute=True, Velocity=20.0))
+    b.scan()
+    t_start = next(t for t, _, v in b.trace if v != 0.0)
+    assert t_start == pytest.approx(0.013)
+
+
 def test_v7_pto_slice_time_applies_to_command_table():
     """Decision 49: "a new command on a PTO axis starts at the next multiple of the slice time" -- MC_CommandTable
     is such a command (§11.1.9: it aborts and is aborted like the other motion commands): with 10 ms a table
     executed at t = 12 ms starts moving at 20 ms."""
-    b = Pto(params(actor={"PTOSliceTime": 10}))
+    b = Pto(params(actor={"PTOSliceTime": 10}), version=7)
     while b.ctl.time < 0.012 - 1e-9:
         b.scan()
     table = b.ctl.add_command_table("Table_1", [{"Type": 7, "Velocity": 20.0, "Duration": 0.1}])

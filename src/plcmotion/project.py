@@ -27,7 +27,8 @@ A project file has up to three sections::
         { Type = 7, Velocity = 20.0, Duration = 2.0 },
     ]
 
-``[controller]`` may also set ``input_filter`` (default filter time of the digital inputs, 0.0064 s) and
+``[controller]`` may also set ``input_filter`` (default filter time of the digital inputs, 0.0064 s),
+``technology_version`` (6 or 7: the S7-1200 Motion Control version whose rules apply where they differ) and
 ``state_file``: where retentive data (the absolute encoder adjustment) is kept, relative to the project
 file; by default ``<project>.state.json`` next to it.
 
@@ -71,7 +72,7 @@ from .kernel.runtime import Controller
 
 SECTIONS = ("controller", "axes", "trace", "inputs", "command_tables")
 CONTROLLER_DEFAULTS: dict[str, float] = {"servo_cycle": 0.001, "app_cycle": 0.004}
-CONTROLLER_KEYS = ("servo_cycle", "app_cycle", "input_filter", "state_file")
+CONTROLLER_KEYS = ("servo_cycle", "app_cycle", "input_filter", "state_file", "technology_version")
 STEP_KEYS = ("Type", "Position", "Velocity", "Duration", "NextStep", "StepCode")
 TRACE_KEYS = ("signals", "every")
 AXIS_TYPES = ("positioning",)
@@ -265,6 +266,11 @@ class _Loader:
             self.bad("controller.input_filter", filt, "a time in [0, 20] s, e.g. 0.0064")
         else:
             extra["input_filter"] = float(filt)
+        version = section.get("technology_version", 6)
+        if version not in (6, 7) or isinstance(version, bool):
+            self.bad("controller.technology_version", version, "6 or 7 (S7-1200 Motion Control V6.0 / V7.0)")
+        else:
+            extra["technology_version"] = version
         state = section.get("state_file", self.path.name.rsplit(".", 1)[0] + ".state.json")
         if not isinstance(state, str) or not state.strip():
             self.bad("controller.state_file", state, "a file name, relative to the project file")

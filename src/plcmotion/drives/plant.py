@@ -15,16 +15,20 @@ from .base import DriveChannel
 
 
 class Switch:
-    """A switch actuated while the machine position lies in [low, high]."""
+    """A switch actuated while the machine position lies in [low, high] (repeating every ``period``)."""
 
-    __slots__ = ("channel", "address", "low", "high", "active_high", "name")
+    __slots__ = ("channel", "address", "low", "high", "active_high", "name", "period")
 
-    def __init__(self, channel: DriveChannel, address: str, low: float, high: float, active_high: bool, name: str):
+    def __init__(self, channel: DriveChannel, address: str, low: float, high: float, active_high: bool, name: str,
+                 period: float | None = None):
         self.channel, self.address = channel, address
         self.low, self.high, self.active_high, self.name = low, high, active_high, name
+        self.period = period
 
     def actuated(self) -> bool:
         x = self.channel.mechanical_position()
+        if self.period:
+            x = self.low + (x - self.low) % self.period
         return self.low <= x <= self.high
 
     def level(self, t: float) -> bool:
@@ -78,7 +82,7 @@ class Plant:
                 if address and address not in seen:
                     seen.add(address)
                     self.add(Switch(channel, address, cam, cam + length, cfg[f"Sensor[1].{kind}.SwitchLevel"],
-                                    "homing switch"), t)
+                                    "homing switch", cfg["Plant.HomingSwitchPeriod"]), t)
         ready = cfg["Actor.Interface.DriveReadyInput"]
         if ready:
             self.add(Signal(ready, channel.ready, "drive ready"), t)

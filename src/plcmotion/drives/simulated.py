@@ -68,6 +68,18 @@ class _ServoChannel(DriveChannel):
             link.set_fault(on)
             g.stepping.add(m)
 
+    @property
+    def setpoint_word(self) -> int:
+        """The speed setpoint word sent to the drive: NSOLL_A/NSOLL_B (PROFIdrive) or the analog output."""
+        return int(self.group.word[self.member])
+
+    @property
+    def analog_voltage(self) -> float:
+        """Voltage of the +-10 V analog speed setpoint (27648 = 10 V) of an analog drive."""
+        if self.group.links[self.member] is not None:
+            raise TypeError("a PROFIdrive axis has no analog speed setpoint")
+        return self.setpoint_word / 27648.0 * 10.0
+
     def telegrams(self) -> tuple:
         """(output, input) telegram of a PROFIdrive axis as it is on the bus now."""
         g, m = self.group, self.member

@@ -514,6 +514,14 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisT
             if k in self.faults:
                 self.faults[k] = (detail, False)
 
+    def communication_ok(self, device: str) -> bool:
+        """StatusDrive/StatusSensor.CommunicationOK: cyclic bus communication with the drive / encoder
+        (PROFIdrive and analog axes; FALSE after an injected station failure or sign-of-life fault)."""
+        if self.pto:
+            return False
+        detail = self.faults.get(device, ("", False))[0]
+        return detail not in ("station", "sign_of_life")
+
     @property
     def sensor_valid(self) -> bool:
         """StatusSensor.State = 2: actual values valid (no encoder fault pending)."""
@@ -691,7 +699,7 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisT
 
     def _slice_start(self, t: float) -> float:
         """When a new command takes effect: at once, or on a PTO at the next segment boundary."""
-        if not self.pto:
+        if not self.pto or self.ctl.technology_version < 7:
             return t
         period = self.eff["Actor.PTOSliceTime"] / 1000.0
         if period <= self.ctl.servo_cycle * (1 + 1e-9):

@@ -132,7 +132,8 @@ _PARAMS: list[Param] = [
     Param("Actor.PTOSliceTime", INT, 2, WP, (2,), choices=tuple(range(0, 256)),
           doc="V7: PTO segment time [ms], 2..20; commands take effect at segment boundaries"),
     # --- Sensor[1] §12.9.6 --------------------------------------------------------------------------
-    Param(f"{_S}.Type", INT, 0, R, (), choices=(0, 1), doc="0 incremental, 1 absolute"),
+    Param(f"{_S}.Type", INT, 0, R, (), choices=(0, 1, 2),
+          doc="0 incremental, 1 absolute, 2 cyclic absolute (the S7-1500 encoder type: the range repeats)"),
     Param(f"{_S}.InverseDirection", BOOL, False, R),
     Param(f"{_S}.System", INT, 1, R, (), choices=(0, 1), doc="0 linear, 1 rotary (§12.9.6.1)"),
     Param(f"{_S}.MountingMode", INT, 0, R, (), choices=(0, 2), doc="0 motor shaft, 2 external"),
@@ -224,6 +225,8 @@ _PARAMS: list[Param] = [
           doc="machine position of the lower end of the homing switch (reference cam)"),
     Param("Plant.HomingSwitchLength", REAL, 10.0, P, (), 0.0, E12, lo_open=True,
           doc="length of the homing switch [user unit]"),
+    Param("Plant.HomingSwitchPeriod", REAL, None, P, (), 0.0, E12, lo_open=True, optional=True,
+          doc="the homing switch repeats with this period (e.g. 360 on a rotating spindle)"),
     Param("Plant.ZeroMarkDistance", REAL, None, P, (), 0.0, E12, lo_open=True, optional=True,
           doc="distance between encoder zero marks (default: one encoder revolution)"),
     Param("Plant.ZeroMarkOffset", REAL, 0.0, P, (), -E12, E12,

@@ -45,10 +45,14 @@ class Controller:
 
     ``servo_cycle``: period of position control and interpolation [s] (default 1 ms).
     ``app_cycle``: period of the user programs [s], a whole multiple of ``servo_cycle`` (default 4 ms).
+    ``input_filter``: default filter time of the digital inputs [s] (6.4 ms as on the CPU).
+    ``state_file``: where retentive data is kept (absolute encoder adjustment); None keeps it in memory.
+    ``technology_version``: 6 or 7, the S7-1200 Motion Control version whose rules apply where they
+    differ (V7: PTO segment time, direct homing of a disabled PROFIdrive/analog axis).
     """
 
     def __init__(self, servo_cycle: float = 0.001, app_cycle: float = 0.004, *,
-                 input_filter: float = DEFAULT_FILTER, state_file: str | None = None):
+                 input_filter: float = DEFAULT_FILTER, state_file: str | None = None, technology_version: int = 6):
         for name, value in (("servo_cycle", servo_cycle), ("app_cycle", app_cycle)):
             if (not isinstance(value, numbers.Real) or isinstance(value, bool) or not math.isfinite(value)
                     or value <= 0):
@@ -56,6 +60,11 @@ class Controller:
         ratio = app_cycle / servo_cycle
         if abs(ratio - round(ratio)) > 1e-9 * ratio or round(ratio) < 1:
             raise ValueError(f"app_cycle ({app_cycle} s) must be a whole multiple of servo_cycle ({servo_cycle} s)")
+        if technology_version not in (6, 7):
+            raise ValueError(f"technology_version must be 6 or 7 (S7-1200 Motion Control V6.0 / V7.0), "
+                             f"got {technology_version!r}")
+        #: behaviour of S7-1200 Motion Control V6.0 or V7.0 where they differ (PTOSliceTime, MC_Home 0/1)
+        self.technology_version = technology_version
         self.servo_cycle = float(servo_cycle)
         self.app_cycle = round(ratio) * self.servo_cycle
         # time = k / rate when the servo frequency is a whole number: 1.001 instead of 1.0010000000000001

@@ -88,3 +88,21 @@ def test_quickstart_example_runs(capsys):
     out = capsys.readouterr().out
     assert "ActualPosition = 100.0" in out or "ActualPosition = 99.99" in out
     assert "ErrorID = 16#0000" in out
+
+
+def test_readme_project_example_is_valid(tmp_path):
+    """The project file shown in the README loads."""
+    from plcmotion.project import check_project
+
+    readme = (ROOT / "README.md").read_text()
+    block = re.search(r"```toml\n(.+?)\n```", readme, re.S).group(1)
+    path = tmp_path / "readme.toml"
+    path.write_text(block)
+    assert check_project(path) == []
+
+
+def test_readme_python_example_runs():
+    """The Python API example of the README runs as shown."""
+    readme = (ROOT / "README.md").read_text()
+    block = re.search(r"## Python API\n\n```python\n(.+?)\n```", readme, re.S).group(1)
+    exec(compile(block, "README.md", "exec"), {})

@@ -202,36 +202,28 @@ class Controller:
 
     def start(self) -> None:
         """STOP -> STARTUP -> RUN: technology objects and instructions start from their start values."""
-        if self.mode == RUN:
-            return
-        for axis in self._by_index:
-            axis.reinitialize("startup")
-        for table in self.command_tables.values():
-            table.reinitialize()
-        self._reinit_instances()
-        self.mode = RUN
-        self.stop_reason = None
-        self._servo_defect = False
+        if self.mode != RUN:
+            self._restart("startup")
 
     def power_cycle(self) -> None:
         """POWER OFF -> ON (§9.4): jobs aborted, outputs reset, technology objects restarted; axes must be
         enabled (and, with incremental encoders or PTO, homed) again.  Retentive data survives; the
         virtual clock and the machine (plant) keep going."""
         self.stop("POWER OFF")
-        for address in list(self.outputs):
+        for address in list(self.outputs):         # also when the CPU was in STOP already
             self.outputs[address] = False
+        self._restart("power")
+
+    def _restart(self, reason: str) -> None:
         for axis in self._by_index:
-            axis.reinitialize("power")
+            axis.reinitialize(reason)
         for table in self.command_tables.values():
             table.reinitialize()
-        self._reinit_instances()
+        for inst in self._instances.values():
+            inst._reinit()
         self.mode = RUN
         self.stop_reason = None
         self._servo_defect = False
-
-    def _reinit_instances(self) -> None:
-        for inst in self._instances.values():
-            inst._reinit()
 
     # --- running ---------------------------------------------------------------------------------------
     def step(self) -> None:

@@ -45,12 +45,18 @@ class ConfigurationError(ValueError):
 class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisTagsMixin):
     """Positioning axis technology object (TO_PositioningAxis)."""
 
-    def __init__(self, ctl: "Controller", name: str, cfg: Mapping[str, Any]):
+    #: how this kind of technology object names and checks its configuration tags
+    schema: P.AxisSchema = P.S7_1200
+
+    def __init__(self, ctl: "Controller", name: str, cfg: Mapping[str, Any], *, db_number: int | None = None):
         self.ctl = ctl
         self.name = name
+        self.db_number = db_number if db_number is not None else ctl._next_db_number()
         self.cfg: dict[str, Any] = dict(cfg)          # tag values (work memory)
         self.load_cfg: dict[str, Any] = dict(cfg)     # start values (load memory), used by a restart
-        self.eff: dict[str, Any] = dict(cfg)          # values the motion currently uses
+        self.ueff: dict[str, Any] = dict(cfg)         # tag values in effect
+        self.eff: dict[str, Any] = self.schema.to_kernel(self.ueff)   # kernel parameters in effect
+        cfg = self.eff
         self.pto = cfg["Actor.Type"] == 2
         self.sim = (not self.pto) and cfg["Simulation.Mode"] == 1
         self.servo = not self.pto and not self.sim
@@ -102,7 +108,7 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisT
             b.sp_p[i] = b.act_p[i]
         self._setup_io()
         if not self.sim:
-            ctl.plant.wire_axis(self.cfg, self.drive, t)
+            ctl.plant.wire_axis(self.eff, self.drive, t)
         self._start_profile(Planner.hold(t, float(b.sp_p[i])))
 
     # ------------------------------------------------------------------------------------------------
@@ -575,7 +581,8 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisT
             self._remove_enable(t, by_power=True)
         self.power_owner = None
         self.cfg = dict(self.load_cfg)
-        self.eff = dict(self.load_cfg)
+        self.ueff = dict(self.load_cfg)
+        self.eff = self.schema.to_kernel(self.ueff)
         self._dirty.clear()
         self.alarms.clear()
         self.busy_commands.clear()

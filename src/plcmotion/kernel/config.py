@@ -41,10 +41,11 @@ class ConfigMixin:
         if not self._dirty:
             return None
         codes = self._moment_codes(moment)
-        due = [path for path in self._dirty if codes & set(P.SCHEMA[path].effective)]
+        params = self.schema.params
+        due = [path for path in self._dirty if codes & set(params[path].effective)]
         if not due:
             return None
-        candidate = dict(self.eff)
+        candidate = dict(self.ueff)
         for path in due:
             candidate[path] = self.cfg[path]
         bad = self._validate(candidate, due)
@@ -56,23 +57,25 @@ class ConfigMixin:
             return bad
         for path in due:
             self._dirty.discard(path)
-        changed = any(candidate[p] != self.eff[p] for p in due)
-        self.eff = candidate
+        changed = any(candidate[p] != self.ueff[p] for p in due)
+        self.ueff = candidate
+        self.eff = self.schema.to_kernel(candidate)
         if changed:
             self._apply_bank_config()
             if moment == "servo":
                 self._replan()
         return None
 
-    def _validate(self, cfg: Mapping[str, Any], paths: list[str] | None = None) -> Fault | None:
+    def _validate(self: "PositioningAxis", cfg: Mapping[str, Any], paths: list[str] | None = None) -> Fault | None:
+        params = self.schema.params
         for path in paths if paths is not None else list(cfg):
-            param = P.SCHEMA.get(path)
+            param = params.get(path)
             if param is None:
                 continue
             reason, _ = param.check(cfg[path])
             if reason is not None:
                 return F.config_fault(path, reason, f"{path} = {cfg[path]!r}; allowed: {param.allowed()}")
-        for issue in P.rule_issues(cfg):
+        for issue in self.schema.rule_issues(cfg):
             return F.config_fault(issue.path, issue.reason, issue.message())
         return None
 
@@ -80,17 +83,18 @@ class ConfigMixin:
         """Validate all tag values; with ``apply`` make them effective when valid."""
         bad = self._validate(self.cfg)
         if bad is None and apply and self._dirty:
-            self.eff = dict(self.cfg)
+            self.ueff = dict(self.cfg)
+            self.eff = self.schema.to_kernel(self.ueff)
             self._dirty.clear()
             self._apply_bank_config()
         return bad
 
     def write_tag(self: "PositioningAxis", path: str, value: Any, *, via_write_param: bool = False) -> None:
         """Assign a configuration tag from the user program (direct access or MC_WriteParam)."""
-        path = P.canonical(path)
-        param = P.SCHEMA.get(path)
+        path = self.schema.canonical(path)
+        param = self.schema.params.get(path)
         if param is None or param.access == P.P or param.kind == P.ADDR:
-            raise TagAccessError(f"{self.name}.{path} is not a writable tag of the positioning axis")
+            raise TagAccessError(f"{self.name}.{path} is not a writable tag of the {self.schema.title}")
         allowed = param.access == P.RW or (via_write_param and param.access == P.WP)
         if not allowed:
             raise TagAccessError(f"{self.name}.{path} is read-only in the user program (access {param.access}"

@@ -67,6 +67,11 @@ PTO_SWITCH = "pto_switch"                # the shared pulse generator is held by
 RESTART_IMPOSSIBLE = "restart_impossible"  # details: enabled, not_disabled
 PENDING_ALARM = "pending_alarm"          # a new command while an alarm waits for acknowledgement
 TABLE_CONFIG = "table_config"            # a step of a command table is invalid: "<field>:<reason>"
+CAM_IN_USE = "cam_in_use"                # MC_InterpolateCam / restart while the cam is used for camming
+CAM_NOT_INTERPOLATED = "cam_not_interpolated"
+CAM_DEFINITION = "cam_definition"        # points/segments cannot be interpolated: detail = reason
+CAM_NO_SOLUTION = "cam_no_solution"      # MC_GetCamLeadingValue: the cam never takes the value
+CAM_OUT_OF_RANGE = "cam_out_of_range"    # MC_GetCamFollowingValue: leading value outside the range
 
 
 def alarm(kind: str, detail: str = "", reaction: Reaction = Reaction.NONE, text: str = "") -> Fault:

@@ -33,8 +33,8 @@ class HomingMixin:
 
     # --- configuration --------------------------------------------------------------------------------
     def _homing_inputs(self: "PositioningAxis") -> dict[str, str]:
-        return {"active": self.cfg["Sensor[1].ActiveHoming.DigitalInputAddress"],
-                "passive": self.cfg["Sensor[1].PassiveHoming.DigitalInputAddress"]}
+        return {"active": self.eff["Sensor[1].ActiveHoming.DigitalInputAddress"],
+                "passive": self.eff["Sensor[1].PassiveHoming.DigitalInputAddress"]}
 
     def homing_configured(self: "PositioningAxis", mode: int) -> bool:
         """Is the homing method for MC_Home ``mode`` (2 passive, 3 active) configured (§12.8 16#8404/16#0015)?"""
@@ -42,7 +42,7 @@ class HomingMixin:
             return True                               # simulation homes at once (§5.4.3.1)
         kind = "Active" if mode == 3 else "Passive"
         method = self.eff[f"Sensor[1].{kind}Homing.Mode"]
-        has_input = bool(self.cfg[f"Sensor[1].{kind}Homing.DigitalInputAddress"])
+        has_input = bool(self.eff[f"Sensor[1].{kind}Homing.DigitalInputAddress"])
         zero_marks = self.servo and self.eff["Sensor[1].Interface.Type"] in (0, 2)
         if method == 2:
             return has_input
@@ -60,7 +60,7 @@ class HomingMixin:
 
     def _cam(self: "PositioningAxis", kind: str) -> bool:
         """Homing switch actuated (filtered input compared with the configured level)."""
-        address = self.cfg[f"Sensor[1].{kind}Homing.DigitalInputAddress"]
+        address = self.eff[f"Sensor[1].{kind}Homing.DigitalInputAddress"]
         if not address:
             return False
         return self.ctl.inputs[address] == self.eff[f"Sensor[1].{kind}Homing.SwitchLevel"]

@@ -30,6 +30,9 @@ class JobKind(Enum):
     HOME_ACTIVE = "home_active"      # mode 3
     TABLE = "table"
     RESET = "reset"                  # acknowledgement / restart (never moves the axis)
+    CAM_INTERPOLATE = "cam_interpolate"
+    CAM_LEADING = "cam_leading"      # leading value for a following value (position = following value)
+    CAM_FOLLOWING = "cam_following"  # following value and derivatives (position = leading value)
 
 
 #: jobs that command a motion and so take the axis over from each other (S7-1200 V6 §11.1 override lists)

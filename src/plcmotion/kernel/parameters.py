@@ -482,3 +482,93 @@ def groups(paths: Iterable[str]) -> dict[str, Any]:
             node = node.setdefault(part, {})
         node[parts[-1]] = path
     return tree
+
+
+class AxisSchema:
+    """The configuration tags of one kind of axis technology object and how the kernel reads them.
+
+    The kernel's own parameter set is the one of this module (the S7-1200 positioning axis).  Another
+    technology object family declares its tags with its own names, ranges and access rights and maps
+    them onto the kernel's parameters in ``to_kernel``; tag reads and writes by the user program always
+    use the family's names.
+    """
+
+    def __init__(self, title: str, params: Iterable[Param], *, rules=None, canonical=None, to_kernel=None,
+                 int_types: Mapping[str, str] | None = None):
+        self.title = title
+        self.params: dict[str, Param] = {p.path: p for p in params}
+        self._rules = rules or (lambda cfg: [])
+        self._canonical = canonical or (lambda path: path)
+        self._to_kernel = to_kernel
+        self._int_types = dict(int_types or {})
+        self.tree = groups(self.params)
+
+    def canonical(self, path: str) -> str:
+        return self._canonical(path)
+
+    def defaults(self) -> dict[str, Any]:
+        return {p.path: p.start for p in self.params.values()}
+
+    def rule_issues(self, cfg: Mapping[str, Any]) -> list[Issue]:
+        return self._rules(cfg)
+
+    def suggest(self, path: str) -> str:
+        import difflib
+
+        near = difflib.get_close_matches(path, self.params.keys(), n=3, cutoff=0.6)
+        return "did you mean " + " or ".join(near) + "?" if near else f"not a tag of the {self.title}"
+
+    def check_values(self, values: Mapping[str, Any]) -> tuple[dict[str, Any], list[Issue]]:
+        out: dict[str, Any] = {}
+        issues: list[Issue] = []
+        for raw_path, value in values.items():
+            path = self.canonical(raw_path)
+            param = self.params.get(path)
+            if param is None:
+                issues.append(Issue(raw_path, "unknown", value, self.suggest(path)))
+                continue
+            reason, norm = param.check(value)
+            if reason is not None:
+                issues.append(Issue(path, reason, value, "allowed: " + param.allowed()))
+            else:
+                out[path] = norm
+        return out, issues
+
+    def validate(self, values: Mapping[str, Any], base: Mapping[str, Any] | None = None
+                 ) -> tuple[dict[str, Any], list[Issue]]:
+        cfg = dict(self.defaults() if base is None else base)
+        norm, issues = self.check_values(values)
+        cfg.update(norm)
+        if not issues:
+            issues.extend(self.rule_issues(cfg))
+        return cfg, issues
+
+    def data_type(self, path: str) -> str:
+        param = self.params[path]
+        if param.kind == BOOL:
+            return "Bool"
+        if param.kind == REAL:
+            return "LReal"
+        if param.kind == ADDR:
+            return "VRef"
+        return self._int_types.get(path, "DInt")
+
+    def to_kernel(self, cfg: dict[str, Any]) -> dict[str, Any]:
+        """The kernel's parameters for the family's tag values (the same dict when they coincide)."""
+        return cfg if self._to_kernel is None else self._to_kernel(cfg)
+
+
+class _S71200Schema(AxisSchema):
+    """The kernel's own parameters: the S7-1200 positioning axis (validation with its PTO rules)."""
+
+    def validate(self, values, base=None):
+        return validate(values, base)
+
+    def data_type(self, path: str) -> str:
+        return data_type(path)
+
+    def check_values(self, values):
+        return check_values(values)
+
+
+S7_1200 = _S71200Schema("positioning axis", _PARAMS, rules=rule_issues, canonical=canonical, int_types=_INT_TYPES)

@@ -24,6 +24,7 @@ from . import monitoring
 from . import parameters as P
 from .axis import ConfigurationError, PositioningAxis
 from .bank import AxisBank
+from .cam_to import CamTO
 from .command_table import CommandTable
 from .io import DEFAULT_FILTER, DigitalInputs, DigitalOutputs
 
@@ -74,6 +75,10 @@ class Controller:
         self.bank = AxisBank()
         self.axes: dict[str, PositioningAxis] = {}
         self.command_tables: dict[str, CommandTable] = {}
+        self.cams: dict[str, CamTO] = {}
+        self.objects: dict[str, Any] = {}           # other technology objects (encoders, proxies)
+        self._db_counter = 0
+        self._deferred: list[Callable[[float], None]] = []
         self._by_index: list[PositioningAxis] = []
         self._groups: dict[str, DriveGroup] = {}
         self._group_list: list[DriveGroup] = []
@@ -115,26 +120,48 @@ class Controller:
     def add_positioning_axis(self, name: str, params: Mapping[str, Any] | None = None, *,
                              source: str | None = None) -> PositioningAxis:
         """Create a positioning axis; ``params`` are nested dicts or dotted paths of the TO tags (§12.9)."""
-        if not isinstance(name, str) or not _NAME.match(name):
-            raise ValueError(f"axis name {name!r} must be an identifier (letters, digits, underscore)")
-        if name in self.axes:
-            raise ValueError(f"axis {name!r} exists already")
+        return self._add_axis(PositioningAxis, name, params, source)
+
+    def _add_axis(self, cls: type, name: str, params: Mapping[str, Any] | None, source: str | None, **kw: Any):
+        self._check_name(name)
         flat = P.flatten(params or {})
-        cfg, issues = P.validate(flat)
+        cfg, issues = cls.schema.validate(flat)
         if issues:
             raise ConfigurationError(source or f"axis {name}", issues)
-        axis = PositioningAxis(self, name, cfg)
+        axis = cls(self, name, cfg, **kw)
         self.axes[name] = axis
         self._by_index.append(axis)
         return axis
 
+    def _check_name(self, name: str) -> None:
+        if not isinstance(name, str) or not _NAME.match(name):
+            raise ValueError(f"technology object name {name!r} must be an identifier (letters, digits, underscore)")
+        if name in self.axes or name in self.command_tables or name in self.cams or name in self.objects:
+            raise ValueError(f"a technology object {name!r} exists already")
+
+    def _next_db_number(self) -> int:
+        """DB number of a new technology object (shown in tags such as ActualMaster)."""
+        self._db_counter += 1
+        return self._db_counter
+
+    def add_cam(self, name: str, points: Any = (), segments: Any = (), *, interpolation_mode: int = 0,
+                boundary_conditions: int = 0) -> CamTO:
+        """Create a cam technology object (S7-1500T): Point[1..n] = ``points``, Segment[1..m] = ``segments``
+        (dicts of xmin, xmax, a0..a6, sineAmplitude, sinePeriod, sinePhase).  Interpolate it with
+        MC_InterpolateCam before use."""
+        self._check_name(name)
+        cam = CamTO(self, name, points, segments, interpolation_mode, boundary_conditions)
+        self.cams[name] = cam
+        return cam
+
+    def _defer(self, fn: Callable[[float], None]) -> None:
+        """Run ``fn(t)`` at the start of the next servo cycle (jobs handed to MC-Servo)."""
+        self._deferred.append(fn)
+
     def add_command_table(self, name: str, commands: Any = (), *, source: str | None = None) -> CommandTable:
         """Create a command table TO; ``commands`` are up to 32 dicts of Type/Position/Velocity/Duration/
         NextStep/StepCode (S7-1200 V6 §12.10.8.1)."""
-        if not isinstance(name, str) or not _NAME.match(name):
-            raise ValueError(f"command table name {name!r} must be an identifier")
-        if name in self.command_tables or name in self.axes:
-            raise ValueError(f"a technology object {name!r} exists already")
+        self._check_name(name)
         table = CommandTable(self, name, commands)
         self.command_tables[name] = table
         return table
@@ -219,6 +246,8 @@ class Controller:
             axis.reinitialize(reason)
         for table in self.command_tables.values():
             table.reinitialize()
+        for to in (*self.cams.values(), *self.objects.values()):
+            to.reinitialize(reason)
         for inst in self._instances.values():
             inst._reinit()
         self.mode = RUN
@@ -280,6 +309,10 @@ class Controller:
             self.plant.update(t)
         self.inputs.update(t)
         self._run_hooks(self._pre_servo, t)
+        if self._deferred:
+            work, self._deferred = self._deferred, []
+            for fn in work:
+                fn(t)
         for axis in self._input_axes:
             try:
                 axis._check_inputs(t)

@@ -32,7 +32,7 @@ class SwitchesMixin:
     """Mixed into PositioningAxis."""
 
     def _setup_io(self: "PositioningAxis") -> None:
-        c = self.cfg
+        c = self.eff
         self.hw_approached = {"min": False, "max": False}
         self._hw_input = {"min": c["PositionLimits_HW.MinSwitchAddress"],
                           "max": c["PositionLimits_HW.MaxSwitchAddress"]}

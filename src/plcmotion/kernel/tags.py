@@ -17,7 +17,6 @@ from .jobs import JobKind
 if TYPE_CHECKING:  # pragma: no cover
     from .axis import PositioningAxis
 
-_CONFIG_TREE = P.groups(P.SCHEMA)
 
 
 def _b(ax: "PositioningAxis"):
@@ -177,14 +176,14 @@ class TagRef:
 
     @property
     def readable_by_read_param(self) -> bool:
-        return self.status and self.path in READ_PARAM_TAGS
+        return self.status and self.path in self.axis._read_param_tags
 
     @property
     def access(self) -> str:
         """Access right of §12.9: 'RP' status tags, 'RW', 'WP', 'R' configuration tags."""
         if self.status:
-            return "RP" if self.path in READ_PARAM_TAGS else "RCCP"
-        return P.SCHEMA[self.path].access
+            return "RP" if self.path in self.axis._read_param_tags else "RCCP"
+        return self.axis.schema.params[self.path].access
 
     def __repr__(self) -> str:
         return f"<TagRef {self.axis.name}.{self.path} : {self.data_type}>"
@@ -200,7 +199,7 @@ class _StatusView:
         object.__setattr__(self, "_prefix", prefix)
 
     def __getattr__(self, name: str) -> Any:
-        getter = DYNAMIC.get(f"{self._prefix}.{name}")
+        getter = self._axis._dynamic.get(f"{self._prefix}.{name}")
         if getter is None:
             raise AttributeError(_unknown(self._axis, f"{self._prefix}.{name}"))
         return getter(self._axis)
@@ -212,7 +211,7 @@ class _StatusView:
 
     def __dir__(self) -> list[str]:
         n = len(self._prefix) + 1
-        return [k[n:] for k in DYNAMIC if k.startswith(self._prefix + ".")]
+        return [k[n:] for k in self._axis._dynamic if k.startswith(self._prefix + ".")]
 
     def as_dict(self) -> dict[str, Any]:
         return {name: getattr(self, name) for name in self.__dir__()}
@@ -267,9 +266,10 @@ class _SensorArray:
         self._axis = axis
 
     def __getitem__(self, key: int) -> _ConfigView:
-        node = _CONFIG_TREE.get(f"Sensor[{key}]")
+        node = self._axis.schema.tree.get(f"Sensor[{key}]")
         if node is None:
-            raise IndexError(f"{self._axis.name}.Sensor[{key}]: the positioning axis has one encoder, Sensor[1]")
+            raise IndexError(f"{self._axis.name}.Sensor[{key}]: the {self._axis.schema.title} has one encoder, "
+                             f"Sensor[1]")
         return _ConfigView(self._axis, f"Sensor[{key}]", node)
 
     @property
@@ -278,35 +278,45 @@ class _SensorArray:
 
 
 def _unknown(axis: "PositioningAxis", path: str) -> str:
-    candidates = list(DYNAMIC) + list(P.SCHEMA)
+    candidates = list(axis._dynamic) + list(axis.schema.params)
     near = difflib.get_close_matches(path, candidates, n=3, cutoff=0.6)
     hint = f"; did you mean {' or '.join(near)}?" if near else ""
-    return f"{axis.name}.{path} is not a tag of the positioning axis{hint}"
+    return f"{axis.name}.{path} is not a tag of the {axis.schema.title}{hint}"
 
 
 class AxisTagsMixin:
-    """Attribute and string-path access to the tags of the technology object."""
+    """Attribute and string-path access to the tags of the technology object.
+
+    The status tags (``_dynamic``), their groups and the configuration schema are class attributes so
+    that another technology object family can present the same kernel state under its own names.
+    """
+
+    _dynamic: dict[str, Callable[["PositioningAxis"], Any]] = DYNAMIC
+    _dynamic_types: dict[str, str] = DYNAMIC_TYPES
+    _dynamic_aliases: dict[str, str] = _DYNAMIC_ALIASES
+    _status_groups: tuple[str, ...] = _STATUS_GROUPS
+    _read_param_tags: frozenset[str] = READ_PARAM_TAGS
 
     @property
     def Position(self) -> float:  # noqa: N802 - manual tag names
-        return DYNAMIC["Position"](self)
+        return self._dynamic["Position"](self)
 
     @property
     def Velocity(self) -> float:  # noqa: N802
-        return DYNAMIC["Velocity"](self)
+        return self._dynamic["Velocity"](self)
 
     @property
     def Acceleration(self) -> float:  # noqa: N802
         """Setpoint acceleration (not a tag of the S7-1200 TO; the S7-1500 name, for traces)."""
-        return DYNAMIC["Acceleration"](self)
+        return self._dynamic["Acceleration"](self)
 
     @property
     def ActualPosition(self) -> float:  # noqa: N802
-        return DYNAMIC["ActualPosition"](self)
+        return self._dynamic["ActualPosition"](self)
 
     @property
     def ActualVelocity(self) -> float:  # noqa: N802
-        return DYNAMIC["ActualVelocity"](self)
+        return self._dynamic["ActualVelocity"](self)
 
     @property
     def Sensor(self) -> _SensorArray:  # noqa: N802
@@ -317,9 +327,14 @@ class AxisTagsMixin:
 
     def __getattr__(self, name: str) -> Any:
         # only called for names not found normally: status and configuration structures
-        if name in _STATUS_GROUPS:
+        if name.startswith("__"):
+            raise AttributeError(name)
+        cls = type(self)
+        if name in cls._status_groups:
             return _StatusView(self, name)  # type: ignore[arg-type]
-        node = _CONFIG_TREE.get(name)
+        if name in cls._dynamic:
+            return cls._dynamic[name](self)
+        node = cls.schema.tree.get(name)  # type: ignore[attr-defined]
         if isinstance(node, dict) and not name.startswith("Sensor"):
             return _ConfigView(self, name, node)  # type: ignore[arg-type]
         raise AttributeError(f"{type(self).__name__} has no attribute {name!r}")
@@ -331,30 +346,32 @@ class AxisTagsMixin:
 
     def tag_getter(self, path: str) -> Callable[[], Any]:
         """A function returning the current value of the tag at ``path`` (fast repeated reads)."""
-        canon = _DYNAMIC_ALIASES.get(path, path)
-        getter = DYNAMIC.get(canon)
+        canon = self._dynamic_aliases.get(path, path)
+        getter = self._dynamic.get(canon)
         if getter is not None:
             return lambda: getter(self)  # type: ignore[arg-type]
-        canon = P.canonical(path)
-        if canon in P.SCHEMA and P.SCHEMA[canon].access != P.P:
+        schema = self.schema  # type: ignore[attr-defined]
+        canon = schema.canonical(path)
+        if canon in schema.params and schema.params[canon].access != P.P:
             return lambda: self.cfg[canon]  # type: ignore[attr-defined]
         raise KeyError(_unknown(self, path))  # type: ignore[arg-type]
 
     def ref(self, path: str) -> TagRef:
         """A reference to the tag at ``path`` (for MC_ReadParam / MC_WriteParam)."""
-        canon = _DYNAMIC_ALIASES.get(path, path)
-        if canon in DYNAMIC:
-            return TagRef(self, canon, DYNAMIC_TYPES[canon], True)  # type: ignore[arg-type]
-        canon = P.canonical(path)
-        if canon in P.SCHEMA and P.SCHEMA[canon].access != P.P:
-            return TagRef(self, canon, P.data_type(canon), False)  # type: ignore[arg-type]
+        canon = self._dynamic_aliases.get(path, path)
+        if canon in self._dynamic:
+            return TagRef(self, canon, self._dynamic_types[canon], True)  # type: ignore[arg-type]
+        schema = self.schema  # type: ignore[attr-defined]
+        canon = schema.canonical(path)
+        if canon in schema.params and schema.params[canon].access != P.P:
+            return TagRef(self, canon, schema.data_type(canon), False)  # type: ignore[arg-type]
         raise KeyError(_unknown(self, path))  # type: ignore[arg-type]
 
     def set_tag(self, path: str, value: Any) -> None:
         """Assign a tag by path with the access rules of direct assignment in the user program."""
         self.write_tag(path, value)  # type: ignore[attr-defined]
 
-    @staticmethod
-    def tag_paths() -> list[str]:
-        """All tag paths of the positioning axis (status and configuration)."""
-        return list(DYNAMIC) + [p for p, prm in P.SCHEMA.items() if prm.access != P.P]
+    @classmethod
+    def tag_paths(cls) -> list[str]:
+        """All tag paths of the technology object (status and configuration)."""
+        return list(cls._dynamic) + [p for p, prm in cls.schema.params.items() if prm.access != P.P]  # type: ignore[attr-defined]

@@ -1,0 +1,502 @@
+"""Cam profiles: the transfer function y = f(x) of a cam technology object, and its interpolation.
+
+A cam is defined by interpolation points (x, y) and segments (polynomial of degree <= 6 plus a sine
+term over [xmin, xmax]); interpolation closes the gaps between them and yields a :class:`CamCurve`, a
+piecewise function that is evaluated every servo cycle (S7-1500T V5 §3.2, §5.1, §6.2.5.7, §9.2.1, §A.2).
+
+Rules of the definition (§6.2.5.7, catalog §4.2.4):
+
+* of several points with the same leading value the one entered last (highest index) counts;
+* of overlapping segments the one entered later is used completely; an earlier one is used again
+  after the later one's end;
+* where a segment and points cover the same range, the segment wins (points inside a segment, and
+  within the join tolerance of its ends, are ignored);
+* a gap of less than 1.0E-4 between two segments is closed by joining them, a larger one by a
+  transition interpolated like any other gap.
+
+Segment polynomials are evaluated at the absolute leading value x:
+``y = a0 + a1 x + ... + a6 x^6 + sineAmplitude * sin(sinePeriod * x + sinePhase)`` (docs/decisions.md).
+
+Interpolation modes (``InterpolationSettings.InterpolationMode``):
+0 linear: straight lines through the points.
+1 cubic spline: C2 spline through the points, C1 into the segments; it may overshoot the points.
+2 Bézier spline: a clamped cubic B-spline whose control points are the points; it runs along the
+  points without passing through them, through the segments, and never leaves the value range of the
+  points and segment end values it joins.
+Boundary conditions (``InterpolationSettings.BoundaryConditions``): 0 none; 1 equal first derivative at
+the start and the end of the cam (spline: also equal second derivative), for cyclic use.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Sequence
+
+import numpy as np
+
+MAX_POINTS = 1000
+MAX_SEGMENTS = 50
+JOIN_GAP = 1.0e-4                 # §6.2.5.7: segment gaps below this are joined, not interpolated
+LINEAR, CUBIC_SPLINE, BEZIER = 0, 1, 2
+_BEZIER_SUBPIECES = 8             # cubic Hermite pieces per B-spline span (exact values and slopes)
+_DEG = 7                          # coefficients per piece (degree 6)
+
+
+class CamDefinitionError(ValueError):
+    """The points and segments of a cam cannot be interpolated; ``reason`` names the problem."""
+
+    def __init__(self, reason: str, message: str):
+        super().__init__(message)
+        self.reason = reason
+
+
+@dataclass(frozen=True, slots=True)
+class SegmentDef:
+    """One segment of a cam TO (``Segment[n]``): polynomial a0..a6 plus a sine term over [xmin, xmax]."""
+
+    xmin: float
+    xmax: float
+    a: tuple[float, float, float, float, float, float, float] = (0.0,) * 7
+    sine_amplitude: float = 0.0
+    sine_period: float = 0.0        # b1 in sin(b1 x + b2), rad per unit of x
+    sine_phase: float = 0.0         # b2 [rad]
+
+    def value(self, x: float) -> float:
+        y = 0.0
+        for c in reversed(self.a):
+            y = y * x + c
+        return y + self.sine_amplitude * math.sin(self.sine_period * x + self.sine_phase)
+
+    def slope(self, x: float) -> float:
+        y = 0.0
+        for i in range(6, 0, -1):
+            y = y * x + i * self.a[i]
+        return y + self.sine_amplitude * self.sine_period * math.cos(self.sine_period * x + self.sine_phase)
+
+    def local(self, x0: float) -> np.ndarray:
+        """Polynomial coefficients (ascending) in the local variable dx = x - x0 (Taylor shift)."""
+        a = np.asarray(self.a, dtype=float)
+        out = np.zeros(_DEG)
+        for k in range(_DEG):
+            s = 0.0
+            for i in range(k, _DEG):
+                s += a[i] * math.comb(i, k) * x0 ** (i - k)
+            out[k] = s
+        return out
+
+
+class CamCurve:
+    """An interpolated cam: breakpoints ``bp`` and per piece a local polynomial and a sine term.
+
+    Piece k covers [bp[k], bp[k+1]] and gives
+    ``y = sum(c[k, i] dx^i) + sin_amp[k] * sin(sin_freq[k] * dx + sin_phase[k])`` with dx = x - bp[k].
+    Immutable once built; evaluation is vectorised.
+    """
+
+    __slots__ = ("bp", "c", "sin_amp", "sin_freq", "sin_phase", "_d1", "_d2", "_d3", "start", "end",
+                 "has_sine")
+
+    def __init__(self, bp: np.ndarray, c: np.ndarray, sine: np.ndarray | None = None):
+        self.bp = np.ascontiguousarray(bp, dtype=float)
+        self.c = np.ascontiguousarray(c, dtype=float)
+        n = len(self.c)
+        sine = np.zeros((n, 3)) if sine is None else np.asarray(sine, dtype=float)
+        self.sin_amp = np.ascontiguousarray(sine[:, 0])
+        self.sin_freq = np.ascontiguousarray(sine[:, 1])
+        self.sin_phase = np.ascontiguousarray(sine[:, 2])
+        self.has_sine = bool(np.any(self.sin_amp != 0.0))
+        powers = np.arange(1, _DEG)
+        self._d1 = self.c[:, 1:] * powers
+        self._d2 = self._d1[:, 1:] * powers[:-1]
+        self._d3 = self._d2[:, 1:] * powers[:-2]
+        self.start = float(self.bp[0])
+        self.end = float(self.bp[-1])
+
+    @property
+    def pieces(self) -> int:
+        return len(self.c)
+
+    @property
+    def length(self) -> float:
+        return self.end - self.start
+
+    def piece_index(self, x: np.ndarray) -> np.ndarray:
+        k = np.searchsorted(self.bp, x, side="right") - 1
+        return np.clip(k, 0, len(self.c) - 1)
+
+    @staticmethod
+    def _horner(coef: np.ndarray, dx: np.ndarray) -> np.ndarray:
+        y = coef[..., -1]
+        for i in range(coef.shape[-1] - 2, -1, -1):
+            y = y * dx + coef[..., i]
+        return y
+
+    def evaluate(self, x, order: int = 2) -> tuple[np.ndarray, ...]:
+        """(f, f', f''[, f''']) at ``x`` (clamped to the definition range)."""
+        x = np.clip(np.asarray(x, dtype=float), self.start, self.end)
+        k = self.piece_index(x)
+        dx = x - self.bp[k]
+        out = [self._horner(self.c[k], dx), self._horner(self._d1[k], dx), self._horner(self._d2[k], dx)]
+        if order >= 3:
+            out.append(self._horner(self._d3[k], dx))
+        if self.has_sine:
+            amp, w = self.sin_amp[k], self.sin_freq[k]
+            arg = w * dx + self.sin_phase[k]
+            s, co = np.sin(arg), np.cos(arg)
+            out[0] = out[0] + amp * s
+            out[1] = out[1] + amp * w * co
+            out[2] = out[2] - amp * w * w * s
+            if order >= 3:
+                out[3] = out[3] - amp * w ** 3 * co
+        return tuple(out[: order + 1])
+
+    def value(self, x):
+        return self.evaluate(x, 0)[0]
+
+    def value_range(self, samples_per_piece: int = 64) -> tuple[float, float]:
+        """Minimum and maximum of the following value (sampled; exact at the breakpoints)."""
+        xs = np.concatenate([np.linspace(a, b, samples_per_piece) for a, b in zip(self.bp[:-1], self.bp[1:])])
+        ys = self.value(xs)
+        return float(ys.min()), float(ys.max())
+
+    # --- inverse: x for a given y ------------------------------------------------------------------
+    def solve(self, y: float, approach: float) -> float | None:
+        """The leading value x with f(x) = y closest to ``approach``; None when f never takes y."""
+        best: float | None = None
+        for x in self.solutions(y):
+            if best is None or abs(x - approach) < abs(best - approach):
+                best = x
+        plateau = self._plateau(y, approach)
+        if plateau is not None and (best is None or abs(plateau - approach) < abs(best - approach)):
+            best = plateau
+        return best
+
+    def _plateau(self, y: float, approach: float) -> float | None:
+        """Nearest point to ``approach`` on a constant piece whose value is y."""
+        const = np.all(self.c[:, 1:] == 0.0, axis=1) & (self.sin_amp == 0.0)
+        tol = 1e-12 * max(1.0, abs(y))
+        hits = np.flatnonzero(const & (np.abs(self.c[:, 0] - y) <= tol))
+        best = None
+        for k in hits:
+            x = min(max(approach, self.bp[k]), self.bp[k + 1])
+            if best is None or abs(x - approach) < abs(best - approach):
+                best = float(x)
+        return best
+
+    def solutions(self, y: float) -> list[float]:
+        """All isolated solutions of f(x) = y in the definition range (sign changes and touch points)."""
+        n_s = 32
+        if self.has_sine:
+            h = np.diff(self.bp)
+            n_s = int(min(4096, max(32, np.max(np.abs(self.sin_freq) * h) / 0.25)))
+        t = np.linspace(0.0, 1.0, n_s + 1)
+        h = np.diff(self.bp)
+        xs = self.bp[:-1, None] + h[:, None] * t[None, :]           # (pieces, n_s + 1)
+        g = self.value(xs.ravel()).reshape(xs.shape) - y
+        found: list[float] = []
+        # exact zeros at sample points
+        tol = 1e-12 * max(1.0, abs(y), float(np.max(np.abs(self.c[:, 0]))))
+        zero = np.abs(g) <= tol
+        lo_x = xs[:, :-1][np.sign(g[:, :-1]) * np.sign(g[:, 1:]) < 0]
+        hi_x = xs[:, 1:][np.sign(g[:, :-1]) * np.sign(g[:, 1:]) < 0]
+        if lo_x.size:
+            found.extend(self._bisect(lo_x, hi_x, y).tolist())
+        found.extend(xs[zero].tolist())
+        # touch points: local minima of |g| between samples that do not change sign
+        a = np.abs(g)
+        mid = (a[:, 1:-1] < a[:, :-2]) & (a[:, 1:-1] < a[:, 2:]) & ~zero[:, 1:-1]
+        for i, j in zip(*np.nonzero(mid)):
+            x = self._refine_touch(float(xs[i, j]), float(xs[i, j + 2]), y)
+            if x is not None:
+                found.append(x)
+        found.sort()
+        out: list[float] = []
+        for x in found:
+            if not out or abs(x - out[-1]) > 1e-9 * max(1.0, abs(x)):
+                out.append(x)
+        return out
+
+    def _bisect(self, lo: np.ndarray, hi: np.ndarray, y: float) -> np.ndarray:
+        glo = self.value(lo) - y
+        for _ in range(80):
+            mid = 0.5 * (lo + hi)
+            gm = self.value(mid) - y
+            left = np.sign(gm) == np.sign(glo)
+            lo = np.where(left, mid, lo)
+            glo = np.where(left, gm, glo)
+            hi = np.where(left, hi, mid)
+        return 0.5 * (lo + hi)
+
+    def _refine_touch(self, a: float, b: float, y: float) -> float | None:
+        """Golden-section minimum of |f - y| on [a, b]; a solution if it reaches (numerically) zero."""
+        gr = (math.sqrt(5.0) - 1.0) / 2.0
+        c, d = b - gr * (b - a), a + gr * (b - a)
+        for _ in range(100):
+            if abs(float(self.value(c)) - y) < abs(float(self.value(d)) - y):
+                b = d
+            else:
+                a = c
+            c, d = b - gr * (b - a), a + gr * (b - a)
+        x = 0.5 * (a + b)
+        scale = max(1.0, abs(y)) * 1e-9
+        return x if abs(float(self.value(x)) - y) <= scale else None
+
+
+# ------------------------------------------------------------------------------------------------------
+# interpolation
+@dataclass(slots=True)
+class _Fixed:
+    """A range covered by a segment (possibly a truncated part of it)."""
+
+    xa: float
+    xb: float
+    seg: SegmentDef
+
+
+def _cover(segments: Sequence[SegmentDef]) -> list[_Fixed]:
+    """Ranges covered by segments, later segments taking precedence (§6.2.5.7)."""
+    cover: list[_Fixed] = []
+    for seg in segments:
+        new: list[_Fixed] = []
+        for f in cover:
+            if f.xb <= seg.xmin or f.xa >= seg.xmax:
+                new.append(f)
+                continue
+            if f.xa < seg.xmin:
+                new.append(_Fixed(f.xa, seg.xmin, f.seg))
+            if f.xb > seg.xmax:
+                new.append(_Fixed(seg.xmax, f.xb, f.seg))
+        new.append(_Fixed(seg.xmin, seg.xmax, seg))
+        cover = sorted(new, key=lambda f: f.xa)
+    # join gaps below the tolerance: the later range starts where the earlier one ends
+    for prev, nxt in zip(cover, cover[1:]):
+        if 0.0 < nxt.xa - prev.xb < JOIN_GAP:
+            nxt.xa = prev.xb
+    return [f for f in cover if f.xb > f.xa]
+
+
+def _clean_points(points: Sequence[tuple[float, float]], cover: list[_Fixed]) -> list[tuple[float, float]]:
+    """Unique leading values (the last entered counts), none inside or at the edge of a segment."""
+    last: dict[float, float] = {}
+    for x, y in points:
+        last[float(x)] = float(y)
+    out = []
+    for x in sorted(last):
+        if any(f.xa - JOIN_GAP < x < f.xb + JOIN_GAP for f in cover):
+            continue
+        out.append((x, last[x]))
+    return out
+
+
+@dataclass(slots=True)
+class _Gap:
+    nodes: list[tuple[float, float]]
+    slope_left: float | None          # None: free end at the cam boundary
+    slope_right: float | None
+    cam_left: bool                    # the gap starts at the cam start
+    cam_right: bool
+
+
+def _pieces_linear(g: _Gap) -> tuple[list[float], list[np.ndarray]]:
+    bp, cs = [], []
+    for (x0, y0), (x1, y1) in zip(g.nodes, g.nodes[1:]):
+        c = np.zeros(_DEG)
+        c[0], c[1] = y0, (y1 - y0) / (x1 - x0)
+        bp.append(x0)
+        cs.append(c)
+    return bp, cs
+
+
+def _hermite(x0: float, x1: float, y0: float, y1: float, d0: float, d1: float) -> np.ndarray:
+    h = x1 - x0
+    m = (y1 - y0) / h
+    c = np.zeros(_DEG)
+    c[0], c[1] = y0, d0
+    c[2] = (3.0 * m - 2.0 * d0 - d1) / h
+    c[3] = (d0 + d1 - 2.0 * m) / (h * h)
+    return c
+
+
+def _spline(g: _Gap, bc_left, bc_right, periodic_trend: bool = False):
+    from scipy.interpolate import CubicSpline
+
+    x = np.array([p[0] for p in g.nodes])
+    y = np.array([p[1] for p in g.nodes])
+    if periodic_trend:
+        m = (y[-1] - y[0]) / (x[-1] - x[0])
+        if len(x) == 2:
+            spline = None
+        else:
+            spline = CubicSpline(x, y - m * (x - x[0]), bc_type="periodic")
+        return spline, m
+    return CubicSpline(x, y, bc_type=(bc_left, bc_right)), 0.0
+
+
+def _pieces_spline(g: _Gap, periodic_trend: bool = False) -> tuple[list[float], list[np.ndarray]]:
+    bc_l = (2, 0.0) if g.slope_left is None else (1, g.slope_left)
+    bc_r = (2, 0.0) if g.slope_right is None else (1, g.slope_right)
+    spline, m = _spline(g, bc_l, bc_r, periodic_trend)
+    x = [p[0] for p in g.nodes]
+    if spline is None:                              # two nodes, periodic trend: the straight line
+        return _pieces_linear(g)
+    bp, cs = [], []
+    for k in range(len(x) - 1):
+        c = np.zeros(_DEG)
+        c[:4] = spline.c[::-1, k]                   # scipy: highest power first
+        c[1] += m
+        bp.append(x[k])
+        cs.append(c)
+    return bp, cs
+
+
+def _spline_end_slopes(g: _Gap) -> tuple[float, float]:
+    """End slopes of the spline of ``g`` with its current boundary conditions."""
+    bc_l = (2, 0.0) if g.slope_left is None else (1, g.slope_left)
+    bc_r = (2, 0.0) if g.slope_right is None else (1, g.slope_right)
+    spline, _ = _spline(g, bc_l, bc_r)
+    d = spline.derivative()
+    return float(d(g.nodes[0][0])), float(d(g.nodes[-1][0]))
+
+
+def _pieces_bezier(g: _Gap, lo: float, hi: float) -> tuple[list[float], list[np.ndarray]]:
+    """Clamped cubic B-spline with the nodes as control points, as cubic Hermite pieces in x."""
+    from scipy.interpolate import BSpline
+
+    ctrl = list(g.nodes)
+    # end tangents: along the adjoining segment (or the cyclic slope); a control point is inserted on
+    # the tangent a third of the way to the next node, its value kept within the value range
+    if g.slope_left is not None and len(ctrl) >= 2:
+        (x0, y0), (x1, _) = ctrl[0], ctrl[1]
+        dx = (x1 - x0) / 3.0
+        ctrl.insert(1, (x0 + dx, min(max(y0 + g.slope_left * dx, lo), hi)))
+    if g.slope_right is not None and len(ctrl) >= 2:
+        (x0, _), (x1, y1) = ctrl[-2], ctrl[-1]
+        dx = (x1 - x0) / 3.0
+        ctrl.insert(len(ctrl) - 1, (x1 - dx, min(max(y1 - g.slope_right * dx, lo), hi)))
+    n = len(ctrl)
+    if n == 2:
+        return _pieces_linear(_Gap(ctrl, None, None, False, False))
+    k = min(3, n - 1)
+    inner = np.linspace(0.0, 1.0, n - k + 1)
+    knots = np.concatenate([np.zeros(k), inner, np.ones(k)])
+    px = np.array([p[0] for p in ctrl])
+    py = np.array([p[1] for p in ctrl])
+    bx, by = BSpline(knots, px, k), BSpline(knots, py, k)
+    dbx, dby = bx.derivative(), by.derivative()
+    u = np.unique(np.concatenate([np.linspace(a, b, _BEZIER_SUBPIECES + 1) for a, b in zip(inner[:-1], inner[1:])]))
+    xs, ys = bx(u), by(u)
+    slopes = dby(u) / dbx(u)
+    xs[0], ys[0], xs[-1], ys[-1] = ctrl[0][0], ctrl[0][1], ctrl[-1][0], ctrl[-1][1]
+    bp, cs = [], []
+    for i in range(len(u) - 1):
+        bp.append(float(xs[i]))
+        cs.append(_hermite(xs[i], xs[i + 1], ys[i], ys[i + 1], slopes[i], slopes[i + 1]))
+    return bp, cs
+
+
+def interpolate(points: Sequence[tuple[float, float]], segments: Sequence[SegmentDef],
+                mode: int = LINEAR, boundary: int = 0) -> CamCurve:
+    """Close the gaps between points and segments (MC_InterpolateCam, §5.1, §9.2.1).
+
+    ``points`` and ``segments`` are the valid ones in the order they were entered (index order).
+    Raises CamDefinitionError for definitions that cannot be interpolated.
+    """
+    if mode not in (LINEAR, CUBIC_SPLINE, BEZIER):
+        raise CamDefinitionError("mode", f"InterpolationMode {mode!r}: 0 linear, 1 cubic spline, 2 Bézier spline")
+    if boundary not in (0, 1):
+        raise CamDefinitionError("boundary", f"BoundaryConditions {boundary!r}: 0 or 1")
+    for i, (x, y) in enumerate(points):
+        if not (math.isfinite(x) and math.isfinite(y)):
+            raise CamDefinitionError("point", f"point {i + 1}: ({x!r}, {y!r}) is not a finite number pair")
+    for i, s in enumerate(segments):
+        values = (s.xmin, s.xmax, *s.a, s.sine_amplitude, s.sine_period, s.sine_phase)
+        if not all(math.isfinite(v) for v in values):
+            raise CamDefinitionError("segment", f"segment {i + 1}: values must be finite numbers")
+        if not s.xmax > s.xmin:
+            raise CamDefinitionError("segment", f"segment {i + 1}: xmax ({s.xmax!r}) must be greater than "
+                                                f"xmin ({s.xmin!r})")
+    cover = _cover(segments)
+    pts = _clean_points(points, cover)
+    if not cover and len(pts) < 2:
+        raise CamDefinitionError("empty", "a cam needs at least two valid points or one valid segment")
+    start = min([f.xa for f in cover] + [p[0] for p in pts])
+    end = max([f.xb for f in cover] + [p[0] for p in pts])
+
+    # the gaps between the segments (and the cam ends), each with its nodes and end slopes
+    gaps: list[tuple[int, _Gap]] = []            # (position in the piece order, gap)
+    order: list[object] = []
+    edges = [start] + [v for f in cover for v in (f.xa, f.xb)] + [end]
+    for i in range(len(cover) + 1):
+        xl, xr = edges[2 * i], edges[2 * i + 1]
+        left = cover[i - 1] if i > 0 else None
+        right = cover[i] if i < len(cover) else None
+        # points were already kept clear of the segments: a gap at a cam end takes its edge point
+        inside = [p for p in pts if (xl <= p[0] if left is None else xl < p[0])
+                  and (p[0] <= xr if right is None else p[0] < xr)]
+        nodes = []
+        if left is not None:
+            nodes.append((left.xb, left.seg.value(left.xb)))
+        nodes.extend(inside)
+        if right is not None:
+            nodes.append((right.xa, right.seg.value(right.xa)))
+        if len(nodes) >= 2 and nodes[-1][0] > nodes[0][0]:
+            gap = _Gap(nodes, left.seg.slope(left.xb) if left else None,
+                       right.seg.slope(right.xa) if right else None, left is None, right is None)
+            gaps.append((len(order), gap))
+            order.append(gap)
+        if right is not None:
+            order.append(right)
+
+    # cyclic boundary condition: equal slope (and for splines curvature) at the start and the end
+    trend_periodic = False
+    if boundary == 1 and mode != LINEAR:
+        first = gaps[0][1] if gaps and gaps[0][1].cam_left else None
+        last = gaps[-1][1] if gaps and gaps[-1][1].cam_right else None
+        if first is not None and first is last and first.slope_left is None and first.slope_right is None:
+            if mode == CUBIC_SPLINE:
+                trend_periodic = True
+            else:
+                (x0, y0), (x1, y1) = first.nodes[0], first.nodes[1]
+                (xa, ya), (xb, yb) = first.nodes[-2], first.nodes[-1]
+                s = 0.5 * ((y1 - y0) / (x1 - x0) + (yb - ya) / (xb - xa))
+                first.slope_left = first.slope_right = s
+        else:
+            s_start = cover[0].seg.slope(cover[0].xa) if first is None and cover else None
+            s_end = cover[-1].seg.slope(cover[-1].xb) if last is None and cover else None
+            if first is not None and last is not None:
+                if mode == CUBIC_SPLINE:
+                    s = 0.5 * (_spline_end_slopes(first)[0] + _spline_end_slopes(last)[1])
+                else:
+                    (x0, y0), (x1, y1) = first.nodes[0], first.nodes[1]
+                    (xa, ya), (xb, yb) = last.nodes[-2], last.nodes[-1]
+                    s = 0.5 * ((y1 - y0) / (x1 - x0) + (yb - ya) / (xb - xa))
+                first.slope_left = last.slope_right = s
+            elif first is not None and s_end is not None:
+                first.slope_left = s_end
+            elif last is not None and s_start is not None:
+                last.slope_right = s_start
+
+    ys_all = [p[1] for p in pts] + [f.seg.value(v) for f in cover for v in (f.xa, f.xb)]
+    lo, hi = min(ys_all), max(ys_all)
+    bp: list[float] = []
+    coef: list[np.ndarray] = []
+    sine: list[tuple[float, float, float]] = []
+    for item in order:
+        if isinstance(item, _Gap):
+            if mode == LINEAR:
+                b, c = _pieces_linear(item)
+            elif mode == CUBIC_SPLINE:
+                b, c = _pieces_spline(item, trend_periodic)
+            else:
+                b, c = _pieces_bezier(item, lo, hi)
+            bp.extend(b)
+            coef.extend(c)
+            sine.extend([(0.0, 0.0, 0.0)] * len(b))
+        else:
+            f: _Fixed = item  # type: ignore[assignment]
+            bp.append(f.xa)
+            coef.append(f.seg.local(f.xa))
+            s = f.seg
+            sine.append((s.sine_amplitude, s.sine_period, s.sine_period * f.xa + s.sine_phase))
+    bp.append(end)
+    return CamCurve(np.array(bp), np.array(coef), np.array(sine))

@@ -1,0 +1,29 @@
+"""Transports for cross-PLC synchronous operation (leading values between controllers).
+
+The kernel defines what travels (``plcmotion.kernel.leading_value``); this package moves it:
+
+* ``LocalLink`` -- in-process, deterministic, no dependencies;
+* ``UadpLeadingValuePublisher`` / ``UadpLeadingValueSubscriber`` -- OPC UA PubSub, UADP over UDP,
+  built on asyncua (install the ``crossplc`` extra).  Imported on first use, so ``LocalLink`` works
+  without asyncua.
+"""
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+from .local import LocalLink
+
+if TYPE_CHECKING:
+    from .uadp import UadpLeadingValuePublisher, UadpLeadingValueSubscriber
+
+__all__ = ["LocalLink", "UadpLeadingValuePublisher", "UadpLeadingValueSubscriber"]
+
+_UADP_NAMES = {"UadpLeadingValuePublisher", "UadpLeadingValueSubscriber"}
+
+
+def __getattr__(name: str) -> Any:
+    if name in _UADP_NAMES:
+        from . import uadp
+
+        return getattr(uadp, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

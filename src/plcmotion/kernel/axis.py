@@ -47,6 +47,7 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisT
 
     #: how this kind of technology object names and checks its configuration tags
     schema: P.AxisSchema = P.S7_1200
+    family = "S7-1200"
 
     def __init__(self, ctl: "Controller", name: str, cfg: Mapping[str, Any], *, db_number: int | None = None):
         self.ctl = ctl
@@ -161,6 +162,11 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisT
             return encoder_increment(self.eff)
         return 1e-9 * max(1.0, abs(self.eff["PositionLimits_SW.MaxPosition"]),
                           abs(self.eff["PositionLimits_SW.MinPosition"]))
+
+    def commanded_velocity(self, velocity: float) -> float:
+        """A commanded velocity with the velocity override applied (S7-1500 ``Override.Velocity``)."""
+        override = self.eff.get("Override.Velocity")
+        return velocity if override is None else velocity * override / 100.0
 
     def _wrap(self, value: float) -> float:
         if self.eff["Modulo.Enable"]:
@@ -277,6 +283,8 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisT
         if job is not None and job.busy and job.kind == JobKind.TABLE and not (plan and plan.limit_side):
             self._table_end(job, t)
             return
+        if plan is not None and plan.override_hold:
+            return                                 # positioning waits for the override to rise again
         self._interpolating = False
         if plan is not None and plan.limit_side and plan.limit_detail != "exceeded":
             kind = F.SW_LIMIT_MAX if plan.limit_side == "max" else F.SW_LIMIT_MIN
@@ -614,9 +622,9 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisT
             return F.reject(F.NOT_ACTIVATED)                # shared PTO not yet taken over (§12.1)
         if self.state != ENABLED:
             return F.reject(F.NOT_ENABLED)
-        if self.alarms:
-            return Fault(F.PENDING_ALARM, self.alarms[0].kind + "/" + self.alarms[0].detail, False,
-                         text=str(self.alarms[0]))
+        blocking = self._blocking_alarm()
+        if blocking is not None:
+            return blocking
         if len(self.busy_commands) >= self.max_commands:
             return F.reject(F.TOO_MANY_COMMANDS)
         if job.kind == JobKind.ABSOLUTE and not self.homed:
@@ -625,6 +633,13 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisT
             job.kind in (JobKind.VELOCITY, JobKind.JOG) and job.position_controlled)
         if self.servo and needs_control and not self.sensor_valid:
             return F.reject(F.REJECTED, "position_control_required")   # §12.7: invalid actual values
+        return None
+
+    def _blocking_alarm(self) -> Fault | None:
+        """A pending alarm that keeps new jobs from starting (S7-1200: every alarm, §9.3)."""
+        if self.alarms:
+            first = self.alarms[0]
+            return Fault(F.PENDING_ALARM, first.kind + "/" + first.detail, False, text=str(first))
         return None
 
     def submit(self, job: Job) -> None:

@@ -22,6 +22,8 @@ FLOAT_FIELDS = (
     "pm_target", "pm_deadline", "pm_in_since", "pm_window", "pm_dwell",
     # standstill signal
     "ss_threshold", "ss_dwell", "ss_since",
+    # superimposed motion (S7-1500 MC_MoveSuperimposed): a second profile segment added to the setpoint
+    "sup_t", "sup_p", "sup_v", "sup_a", "sup_j",
 )
 BOOL_FIELDS = (
     "closed_loop",     # position loop active (servo axis, enabled, position-controlled)

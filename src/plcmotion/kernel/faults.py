@@ -72,6 +72,18 @@ CAM_NOT_INTERPOLATED = "cam_not_interpolated"
 CAM_DEFINITION = "cam_definition"        # points/segments cannot be interpolated: detail = reason
 CAM_NO_SOLUTION = "cam_no_solution"      # MC_GetCamLeadingValue: the cam never takes the value
 CAM_OUT_OF_RANGE = "cam_out_of_range"    # MC_GetCamFollowingValue: leading value outside the range
+NOT_AVAILABLE = "not_available"          # function of the S7-1500T used on an S7-1500 (detail: function)
+STOP_ACTIVE = "stop_active"              # S7-1500: the axis is locked by MC_Stop
+SYNC_ACTIVE = "sync_active"              # active homing while a GearInPos/CamIn is active (docs/decisions)
+SYNC_SIMULATION = "sync_simulation"      # synchronous operation jobs while it is simulated
+NOT_SYNCHRONOUS = "not_synchronous"      # phasing / simulation need status Synchronous (detail: gearing, master)
+COUPLING_CYCLE = "coupling_cycle"        # the leading axis would follow its own leading value
+START_DISTANCE = "start_distance"        # SyncProfileReference 1: master closer than MasterStartDistance
+SYNC_POSITION_RANGE = "sync_position_range"  # MasterSyncPosition outside the cam
+LV_NOT_READY = "lv_not_ready"            # the leading value source cannot provide a value (detail)
+# axis alarm of a synchronous axis: the master of the job is not configured as a possible leading value
+SYNC_MASTER = "sync_master"
+LV_INVALID = "lv_invalid"                # leading axis proxy: external leading value invalid (alarm 900)
 
 
 def alarm(kind: str, detail: str = "", reaction: Reaction = Reaction.NONE, text: str = "") -> Fault:

@@ -127,8 +127,9 @@ class HomingMixin:
         if self.state != "enabled":
             job.finish(JobState.ERROR, F.reject(F.NOT_ENABLED))
             return
-        if self.alarms:
-            job.finish(JobState.ERROR, F.Fault(F.PENDING_ALARM, self.alarms[0].kind + "/" + self.alarms[0].detail))
+        blocking = self._blocking_alarm()
+        if blocking is not None:
+            job.finish(JobState.ERROR, blocking)
             return
         if self.servo and not self.sensor_valid:
             job.finish(JobState.ERROR, F.reject(F.REJECTED, "actual_invalid"))

@@ -30,6 +30,15 @@ class JobKind(Enum):
     HOME_ACTIVE = "home_active"      # mode 3
     TABLE = "table"
     RESET = "reset"                  # acknowledgement / restart (never moves the axis)
+    HOME_CANCEL = "home_cancel"      # S7-1500 MC_Home Mode 9: cancel passive homing
+    STOP = "stop"                    # S7-1500 MC_Stop: brake and keep the axis locked while Execute is TRUE
+    SUPERIMPOSED = "superimposed"    # MC_MoveSuperimposed: a motion added to the basic motion
+    GEAR_IN = "gear_in"
+    GEAR_IN_POS = "gear_in_pos"
+    CAM_IN = "cam_in"
+    PHASING = "phasing"              # MC_PhasingRelative / -Absolute (extra["absolute"])
+    LV_ADDITIVE = "lv_additive"      # MC_LeadingValueAdditive
+    SYNC_SIMULATION = "sync_simulation"
     CAM_INTERPOLATE = "cam_interpolate"
     CAM_LEADING = "cam_leading"      # leading value for a following value (position = following value)
     CAM_FOLLOWING = "cam_following"  # following value and derivatives (position = leading value)
@@ -59,6 +68,14 @@ class Job:
     target: float = 0.0                # resolved absolute target (positioning)
     reference_position: float = 0.0    # homing: position the axis was homed to
     jog_released: bool = False
+    # dynamics of the job (S7-1500 instructions); None: the axis's defaults (S7-1200 semantics)
+    acceleration: float | None = None
+    deceleration: float | None = None
+    jerk: float | None = None          # math.inf: trapezoidal profile
+    # synchronous operation (GearIn, GearInPos, CamIn)
+    start_sync: bool = False           # synchronization has started (StartSync)
+    in_sync: bool = False              # synchronous (InGear / InSync)
+    end_of_profile: int = 0            # counts cam ends reached (EndOfProfile)
     extra: dict = field(default_factory=dict)
 
     @property

@@ -27,6 +27,7 @@ class Plan:
     limit_detail: str = ""               # reached | reached_emergency | exceeded
     cross_time: float | None = None      # exceeded: when the setpoint passes the limit
     reach_time: float | None = None      # velocity jobs: when the commanded velocity is reached
+    override_hold: bool = False          # velocity override 0 %: the positioning waits at standstill
 
 
 class DirectionFault(Exception):
@@ -46,13 +47,56 @@ def jerk_limit(axis: "PositioningAxis") -> float:
 
 
 def limits(axis: "PositioningAxis", velocity: float | None = None, *, emergency: bool = False,
-           jerk: bool = True) -> Limits:
+           jerk: bool = True, job: Job | None = None) -> Limits:
+    """Dynamics a motion of ``axis`` is planned with.
+
+    ``velocity``: the commanded speed (None: the maximum velocity).  ``job``: a job with dynamics of its
+    own (S7-1500 instructions give Acceleration, Deceleration and Jerk per job); without them the axis's
+    dynamic defaults apply.  Values above the S7-1500 dynamic limits (``DynamicLimits.Velocity``,
+    ``MaxAcceleration``, ``MaxDeceleration``, ``MaxJerk``) are limited and named in ``Limits.limited``.
+    """
     e = axis.eff
-    vmax = e["DynamicLimits.MaxVelocity"] if velocity is None else min(abs(velocity), e["DynamicLimits.MaxVelocity"])
-    dec = e["DynamicDefaults.EmergencyDeceleration"] if emergency else e["DynamicDefaults.Deceleration"]
-    return Limits(velocity=vmax, acceleration=e["DynamicDefaults.Acceleration"], deceleration=dec,
-                  jerk=jerk_limit(axis) if jerk else INF,
-                  start_stop=e["DynamicLimits.MinVelocity"] if axis.pto else 0.0)
+    limited: list[str] = []
+    vmax = e["DynamicLimits.MaxVelocity"]
+    vcur = e.get("DynamicLimits.Velocity")
+    if vcur is not None:
+        vmax = min(vmax, vcur)
+    if velocity is None:
+        v = vmax
+    else:
+        v = abs(velocity)
+        if v > vmax * (1 + 1e-12):
+            v = vmax
+            if vcur is not None:
+                limited.append("velocity")
+    acc = e["DynamicDefaults.Acceleration"] if job is None or job.acceleration is None else job.acceleration
+    if emergency:
+        dec = e["DynamicDefaults.EmergencyDeceleration"]
+    else:
+        dec = e["DynamicDefaults.Deceleration"] if job is None or job.deceleration is None else job.deceleration
+    j = jerk_limit(axis) if job is None or job.jerk is None else job.jerk
+    amax_lim, dmax_lim = e.get("DynamicLimits.MaxAcceleration"), e.get("DynamicLimits.MaxDeceleration")
+    if amax_lim is not None and acc > amax_lim * (1 + 1e-12):
+        acc = amax_lim
+        limited.append("acceleration")
+    if dmax_lim is not None and not emergency and dec > dmax_lim * (1 + 1e-12):
+        dec = dmax_lim
+        limited.append("deceleration")
+    jmax_lim = e.get("DynamicLimits.MaxJerk")
+    if jmax_lim and j != INF and j > jmax_lim * (1 + 1e-12):
+        j = jmax_lim
+        limited.append("jerk")
+    return Limits(velocity=v, acceleration=acc, deceleration=dec, jerk=j if jerk else INF,
+                  start_stop=e["DynamicLimits.MinVelocity"] if axis.pto else 0.0, limited=tuple(limited))
+
+
+def max_dynamics(axis: "PositioningAxis") -> Limits:
+    """Stop with the maximum dynamic values (S7-1500: MaxDeceleration and MaxJerk)."""
+    e = axis.eff
+    dec = e.get("DynamicLimits.MaxDeceleration", e["DynamicDefaults.Deceleration"])
+    acc = e.get("DynamicLimits.MaxAcceleration", e["DynamicDefaults.Acceleration"])
+    j = e.get("DynamicLimits.MaxJerk", 0.0) or INF
+    return Limits(velocity=e["DynamicLimits.MaxVelocity"], acceleration=acc, deceleration=dec, jerk=j)
 
 
 def wrap(value: float, start: float, length: float) -> float:
@@ -109,6 +153,7 @@ class MotionPlanner:
     def __init__(self, axis: "PositioningAxis"):
         self.axis = axis
         self.planner = Planner()
+        self.last_limits: Limits | None = None     # dynamics of the last job plan (limited values)
 
     # --- direction permitted by Actor.DirectionMode (PTO, §5.4.4.1) -------------------------------------
     def _permitted(self, sign: float) -> bool:
@@ -130,8 +175,11 @@ class MotionPlanner:
         kind = job.kind
         pl = self.planner
         if kind in (JobKind.ABSOLUTE, JobKind.RELATIVE):
-            lim = limits(ax, job.velocity)
+            lim = limits(ax, ax.commanded_velocity(job.velocity), job=job)
+            self.last_limits = lim
             target = job.target
+            if lim.velocity <= 0.0:                  # velocity override 0 %: wait at standstill
+                return Plan(pl.stop(t, p, v, a, lim), override_hold=True)
             try:
                 profile = pl.position(t, p, v, a, target, lim, allow_reverse=self._permitted(-1) and self._permitted(1),
                                       end_velocity=job.extra.get("end_velocity", 0.0))
@@ -143,15 +191,19 @@ class MotionPlanner:
                 profile = Planner.constant_move(t, p, target, SHORT_POSITIONING)
             return self._guard(Plan(profile), t, p, v, a, lim, cruise=abs(job.velocity))
         if kind in (JobKind.VELOCITY, JobKind.JOG):
-            target_v = 0.0 if job.jog_released else job.velocity
-            lim = limits(ax, None)
+            target_v = 0.0 if job.jog_released else ax.commanded_velocity(job.velocity)
+            lim = limits(ax, None, job=job)
+            self.last_limits = lim
+            if abs(target_v) > lim.velocity:
+                target_v = math.copysign(lim.velocity, target_v)
             profile = pl.velocity(t, p, v, a, target_v, lim)
             if target_v != 0.0:
                 self._check_direction(profile, p)
             plan = self._guard(Plan(profile, reach_time=profile.t_end), t, p, v, a, lim, cruise=abs(target_v))
             return plan
-        if kind == JobKind.HALT:
-            lim = limits(ax, None)
+        if kind in (JobKind.HALT, JobKind.STOP):
+            lim = max_dynamics(ax) if job.extra.get("max_dynamics") else limits(ax, None, job=job)
+            self.last_limits = lim
             return self._guard(Plan(pl.stop(t, p, v, a, lim)), t, p, v, a, lim, cruise=abs(v))
         raise ValueError(f"no motion plan for {kind}")
 

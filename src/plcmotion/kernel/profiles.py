@@ -79,6 +79,7 @@ class Limits:
     deceleration: float
     jerk: float = INF               # INF: jerk limit disabled (trapezoid)
     start_stop: float = 0.0         # PTO start/stop velocity
+    limited: tuple[str, ...] = ()   # commanded values cut to the dynamic limits (S7-1500 alarms 501-504)
 
 
 class _Builder:
@@ -397,6 +398,44 @@ class Planner:
     def stop(self, t: float, p: float, v: float, a: float, lim: Limits) -> Profile:
         """Brake to standstill with the deceleration (and jerk) of ``lim``."""
         return self.velocity(t, p, v, a, 0.0, lim)
+
+    def free(self, t: float, p: float, v: float, a: float, *, target_p: float | None, vmin: float, vmax: float,
+             amin: float, amax: float, jerk: float, duration: float | None = None) -> Profile:
+        """Time-optimal motion with signed limits to ``target_p`` (velocity and acceleration zero), or to
+        velocity and acceleration zero when ``target_p`` is None; ``duration`` stretches it to at least
+        that time.  Used for the synchronization offsets of following axes, whose limits are not
+        symmetric (the leading axis's motion is added to them)."""
+        inp = self._inp
+        inp.control_interface = (ruckig.ControlInterface.Velocity if target_p is None
+                                 else ruckig.ControlInterface.Position)
+        inp.current_position, inp.current_velocity, inp.current_acceleration = [p], [v], [a if jerk < INF else 0.0]
+        inp.target_position = [p if target_p is None else target_p]
+        inp.target_velocity, inp.target_acceleration = [0.0], [0.0]
+        inp.max_velocity, inp.min_velocity = [max(vmax, 0.0)], [min(vmin, 0.0)]
+        inp.max_acceleration, inp.min_acceleration = [amax], [amin]
+        inp.max_jerk = [jerk]
+        inp.minimum_duration = duration
+        try:
+            result = self._otg.calculate(inp, self._traj)
+        except Exception as exc:
+            result = exc
+        finally:
+            inp.minimum_duration = None
+            inp.min_velocity = None
+        if result not in (ruckig.Result.Working, ruckig.Result.Finished):
+            raise PlanningError(f"ruckig: {result!r} for p={p!r} v={v!r} a={a!r} -> {target_p!r} "
+                                f"(v=[{vmin}, {vmax}], a=[{amin}, {amax}], j={jerk}, T={duration})")
+        b = _Builder(t, p, v, a if jerk < INF else 0.0)
+        prof = self._traj.profiles[0][0]
+        for part in (prof.brake, None, prof.accel):
+            if part is None:
+                for i in range(7):
+                    b.add(prof.t[i], prof.p[i], prof.v[i], prof.a[i], prof.j[i] if jerk < INF else 0.0)
+            elif part.duration > 0.0:
+                for i in range(2):
+                    b.add(part.t[i], part.p[i], part.v[i], part.a[i], part.j[i] if jerk < INF else 0.0)
+        end_p = b.p if target_p is None else target_p
+        return b.finish(end_p, 0.0, {"reached": b.t})
 
     @staticmethod
     def ramp_stop(t: float, p: float, v: float, deceleration: float) -> Profile:

@@ -25,10 +25,12 @@ from . import parameters as P
 from .axis import ConfigurationError, PositioningAxis
 from .bank import AxisBank
 from .cam_to import CamTO
+from .sync import SyncStage
 from .command_table import CommandTable
 from .io import DEFAULT_FILTER, DigitalInputs, DigitalOutputs
 
 RUN, STOP = "RUN", "STOP"
+FAMILIES = ("S7-1200", "S7-1500", "S7-1500T")
 _EPS_T = 1e-9
 _NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 
@@ -53,7 +55,8 @@ class Controller:
     """
 
     def __init__(self, servo_cycle: float = 0.001, app_cycle: float = 0.004, *,
-                 input_filter: float = DEFAULT_FILTER, state_file: str | None = None, technology_version: int = 6):
+                 input_filter: float = DEFAULT_FILTER, state_file: str | None = None,
+                 technology_version: int | None = None, family: str = "S7-1200"):
         for name, value in (("servo_cycle", servo_cycle), ("app_cycle", app_cycle)):
             if (not isinstance(value, numbers.Real) or isinstance(value, bool) or not math.isfinite(value)
                     or value <= 0):
@@ -61,9 +64,17 @@ class Controller:
         ratio = app_cycle / servo_cycle
         if abs(ratio - round(ratio)) > 1e-9 * ratio or round(ratio) < 1:
             raise ValueError(f"app_cycle ({app_cycle} s) must be a whole multiple of servo_cycle ({servo_cycle} s)")
-        if technology_version not in (6, 7):
-            raise ValueError(f"technology_version must be 6 or 7 (S7-1200 Motion Control V6.0 / V7.0), "
-                             f"got {technology_version!r}")
+        if family not in FAMILIES:
+            raise ValueError(f"family must be one of {', '.join(FAMILIES)}, got {family!r}")
+        #: the controller family whose technology objects are created: S7-1200, S7-1500 or S7-1500T
+        self.family = family
+        self.family_t = family == "S7-1500T"
+        if technology_version is None:
+            technology_version = 6 if family == "S7-1200" else 5
+        allowed = (6, 7) if family == "S7-1200" else (5,)
+        if technology_version not in allowed:
+            raise ValueError(f"technology_version for {family} must be "
+                             + (" or ".join(map(str, allowed))) + f", got {technology_version!r}")
         #: behaviour of S7-1200 Motion Control V6.0 or V7.0 where they differ (PTOSliceTime, MC_Home 0/1)
         self.technology_version = technology_version
         self.servo_cycle = float(servo_cycle)
@@ -79,6 +90,7 @@ class Controller:
         self.objects: dict[str, Any] = {}           # other technology objects (encoders, proxies)
         self._db_counter = 0
         self._deferred: list[Callable[[float], None]] = []
+        self.sync = SyncStage(self)                 # leading value couplings (synchronous axes)
         self._by_index: list[PositioningAxis] = []
         self._groups: dict[str, DriveGroup] = {}
         self._group_list: list[DriveGroup] = []
@@ -92,6 +104,8 @@ class Controller:
         self.stop_reason: str | None = None
         self._n_fe = 0                              # axes with following error monitoring on
         self._n_pm = 0                              # axes in positioning monitoring
+        self._n_sup = 0                             # axes with a superimposed motion part
+        self._bank_time = 0.0                       # time of the setpoints in the bank arrays
         self._dirty_axes: set[PositioningAxis] = set()
         self._servo_defect = False
         self.inputs = DigitalInputs(input_filter)
@@ -120,7 +134,33 @@ class Controller:
     def add_positioning_axis(self, name: str, params: Mapping[str, Any] | None = None, *,
                              source: str | None = None) -> PositioningAxis:
         """Create a positioning axis; ``params`` are nested dicts or dotted paths of the TO tags (§12.9)."""
-        return self._add_axis(PositioningAxis, name, params, source)
+        if self.family == "S7-1200":
+            return self._add_axis(PositioningAxis, name, params, source)
+        from .axis1500 import PositioningAxis1500
+        return self._add_axis(PositioningAxis1500, name, params, source)
+
+    def add_synchronous_axis(self, name: str, params: Mapping[str, Any] | None = None, *,
+                             leading_values: Any = (), source: str | None = None):
+        """Create a synchronous axis (S7-1500/S7-1500T): a positioning axis that follows a leading value.
+
+        ``leading_values``: the possible leading values (§6.1.3), names of technology objects or
+        ``(name, type)`` pairs with type "setpoint" (default), "actual" or "delayed" (S7-1500T)."""
+        self._need_1500("a synchronous axis")
+        from .axis1500 import SynchronousAxis
+        return self._add_axis(SynchronousAxis, name, params, source, leading_values=leading_values)
+
+    def _need_1500(self, what: str, t_only: bool = False) -> None:
+        if self.family == "S7-1200" or (t_only and not self.family_t):
+            need = "S7-1500T" if t_only else "S7-1500 or S7-1500T"
+            raise ValueError(f"{what} needs a controller of family {need} (Controller(family=...)); "
+                             f"this one is {self.family}")
+
+    def _lookup(self, name: str) -> Any:
+        """The technology object named ``name`` (axes, cams, encoders, proxies)."""
+        for table in (self.axes, self.cams, self.objects, self.command_tables):
+            if name in table:
+                return table[name]
+        return None
 
     def _add_axis(self, cls: type, name: str, params: Mapping[str, Any] | None, source: str | None, **kw: Any):
         self._check_name(name)
@@ -150,6 +190,7 @@ class Controller:
         (dicts of xmin, xmax, a0..a6, sineAmplitude, sinePeriod, sinePhase).  Interpolate it with
         MC_InterpolateCam before use."""
         self._check_name(name)
+        self._need_1500("a cam", t_only=True)
         cam = CamTO(self, name, points, segments, interpolation_mode, boundary_conditions)
         self.cams[name] = cam
         return cam
@@ -340,6 +381,17 @@ class Controller:
             b.sp_v = b.seg_v + tau * (a + (0.5 * tau) * j)
             b.sp_a = a + tau * j
             b.sp_j = j
+            if self._n_sup:
+                # superimposed motion (S7-1500 MC_MoveSuperimposed) adds to every basic motion
+                tau = t - b.sup_t
+                j = b.sup_j
+                a = b.sup_a
+                b.sp_p = b.sp_p + (b.sup_p + tau * (b.sup_v + tau * (0.5 * a + tau * (j * (1.0 / 6.0)))))
+                b.sp_v = b.sp_v + (b.sup_v + tau * (a + (0.5 * tau) * j))
+                b.sp_a = b.sp_a + (a + tau * j)
+            self._bank_time = t
+            if self.sync.active:
+                self.sync.run(t)
             if "servo" in self._groups:
                 # position control of the closed-loop axes; others follow their actual value
                 b.sp_p = np.where(b.follow_act, b.act_p, b.sp_p)

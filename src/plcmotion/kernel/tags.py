@@ -199,10 +199,19 @@ class _StatusView:
         object.__setattr__(self, "_prefix", prefix)
 
     def __getattr__(self, name: str) -> Any:
-        getter = self._axis._dynamic.get(f"{self._prefix}.{name}")
+        path = f"{self._prefix}.{name}"
+        getter = self._axis._dynamic.get(path)
         if getter is None:
-            raise AttributeError(_unknown(self._axis, f"{self._prefix}.{name}"))
+            if any(k.startswith(path + ".") for k in self._axis._dynamic):
+                return _StatusView(self._axis, path)          # nested structure
+            raise AttributeError(_unknown(self._axis, path))
         return getter(self._axis)
+
+    def __getitem__(self, key: int) -> "_StatusView":
+        path = f"{self._prefix}[{key}]"
+        if not any(k.startswith(path + ".") for k in self._axis._dynamic):
+            raise IndexError(f"{self._axis.name}.{path} does not exist")
+        return _StatusView(self._axis, path)
 
     def __setattr__(self, name: str, value: Any) -> None:
         from .axis import TagAccessError
@@ -330,7 +339,7 @@ class AxisTagsMixin:
         if name.startswith("__"):
             raise AttributeError(name)
         cls = type(self)
-        if name in cls._status_groups:
+        if name in cls._status_groups or any(k.startswith(name + "[") for k in cls._dynamic):
             return _StatusView(self, name)  # type: ignore[arg-type]
         if name in cls._dynamic:
             return cls._dynamic[name](self)

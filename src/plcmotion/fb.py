@@ -1,0 +1,258 @@
+"""Function block call semantics shared by the PLCopen-style dialects (S7-1200, S7-1500, ...).
+
+An instruction instance is a plain object holding its inputs and outputs (the instance DB).  Calling it
+sets the given inputs and evaluates it once.  Inputs keep their values between calls.  Input values are
+checked when a job starts (rising edge of Execute) and a bad value becomes the manual's ErrorID, never
+an exception; only programming mistakes (an input name that does not exist, a non-boolean for a BOOL
+input) raise, which stops the controller like a faulty program would.
+
+Output timing (PLCopen, S7-1200 V6 §9.5.2, S7-1500 the same): Busy while the job runs, FALSE at its end
+whatever Execute is; then exactly one of Done / CommandAborted / Error, latched while Execute stays TRUE,
+otherwise shown for exactly one call.
+
+A dialect subclasses these with its axis type check and its ErrorID table (``_axis_error``,
+``_fault_codes``).
+"""
+from __future__ import annotations
+
+import math
+import numbers
+from typing import Any, ClassVar
+
+import numpy as np
+
+from .kernel.faults import Fault
+from .kernel.jobs import Job, JobState
+
+_BOOL_TYPES = (bool, np.bool_)
+
+
+def as_bool(fb: "Instruction", name: str, value: Any) -> bool:
+    if isinstance(value, _BOOL_TYPES):
+        return bool(value)
+    if isinstance(value, (int, np.integer)) and value in (0, 1):
+        return bool(value)
+    raise TypeError(f"{type(fb).__name__}.{name} is a BOOL input; got {value!r}")
+
+
+def as_real(value: Any) -> float | None:
+    """REAL input value, None for an invalid number format (NaN, infinity, not a number)."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        return None
+    x = float(value)
+    return x if math.isfinite(x) else None
+
+
+def as_int(value: Any) -> int | None:
+    """INT input value, None when not a whole number."""
+    if isinstance(value, _BOOL_TYPES):
+        return None
+    if isinstance(value, (int, np.integer)):
+        return int(value)
+    if isinstance(value, (float, np.floating)) and math.isfinite(value) and float(value).is_integer():
+        return int(value)
+    return None
+
+
+class InstructionError(Exception):
+    """Raised inside an instruction to end the command with (ErrorID, ErrorInfo)."""
+
+    def __init__(self, error_id: int, error_info: int = 0):
+        super().__init__(f"16#{error_id:04X}/16#{error_info:04X}" if error_info else f"16#{error_id:04X}")
+        self.error_id = error_id
+        self.error_info = error_info
+
+
+class Instruction:
+    """Base of all instructions: declared inputs/outputs, call semantics, instance registration."""
+
+    INPUTS: ClassVar[dict[str, Any]] = {}
+    OUTPUTS: ClassVar[dict[str, Any]] = {}
+
+    def __init__(self, **inputs: Any):
+        for name, default in self.INPUTS.items():
+            object.__setattr__(self, name, default)
+        self._reinit()
+        self._set_inputs(inputs)
+
+    def _reinit(self) -> None:
+        """Outputs and internal state back to their start values (new instance DB, CPU STOP -> RUN)."""
+        for name, default in self.OUTPUTS.items():
+            object.__setattr__(self, name, default)
+
+    def _set_inputs(self, inputs: dict[str, Any]) -> None:
+        for name, value in inputs.items():
+            if name not in self.INPUTS:
+                raise TypeError(f"{type(self).__name__} has no input {name!r}; inputs: {', '.join(self.INPUTS)}")
+            object.__setattr__(self, name, value)
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        if name in self.OUTPUTS:
+            raise AttributeError(f"{type(self).__name__}.{name} is an output")
+        object.__setattr__(self, name, value)
+
+    def _out(self, **values: Any) -> None:
+        for name, value in values.items():
+            object.__setattr__(self, name, value)
+
+    def __call__(self, **inputs: Any) -> "Instruction":
+        self._set_inputs(inputs)
+        self._evaluate()
+        return self
+
+    def _evaluate(self) -> None:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    #: the technology object type(s) the Axis input takes (set by the dialect)
+    AXIS_TYPES: ClassVar[tuple[type, ...]] = ()
+
+    def _axis_error(self, kind: str) -> InstructionError:
+        """ErrorID for an Axis input of the wrong kind: "other_type" or "not_a_to" (dialect)."""
+        raise NotImplementedError  # pragma: no cover
+
+    def _fault_codes(self, fault: Fault) -> tuple[int, int]:
+        """(ErrorID, ErrorInfo) of a kernel fault (dialect)."""
+        raise NotImplementedError  # pragma: no cover
+
+    def _register(self, to: Any) -> None:
+        to.ctl._instances.setdefault(id(self), self)
+
+    def _accept(self, value: Any, types: tuple[type, ...]) -> bool:
+        return isinstance(value, types) and self._family_ok(value)
+
+    def _family_ok(self, to: Any) -> bool:
+        return True
+
+    def _axis(self, name: str = "Axis") -> Any:
+        """The technology object at input ``name``, or the dialect's InstructionError."""
+        axis = getattr(self, name, None)
+        if self._accept(axis, self.AXIS_TYPES):
+            self._register(axis)
+            return axis
+        if axis is not None and hasattr(axis, "ctl") and hasattr(axis, "tag"):
+            raise self._axis_error("other_type")
+        raise self._axis_error("not_a_to")
+
+    @property
+    def outputs(self) -> dict[str, Any]:
+        return {name: getattr(self, name) for name in self.OUTPUTS}
+
+    def __repr__(self) -> str:
+        outs = " ".join(f"{k}={v}" for k, v in self.outputs.items() if v)
+        return f"<{type(self).__name__} {outs}>"
+
+
+_DONE_OUTPUTS = {"Done": False, "Busy": False, "CommandAborted": False, "Error": False, "ErrorID": 0,
+                 "ErrorInfo": 0}
+
+
+class ExecuteInstruction(Instruction):
+    """Instructions started by a rising edge at Execute and ending with Done/CommandAborted/Error."""
+
+    INPUTS = {"Axis": None, "Execute": False}
+    OUTPUTS = dict(_DONE_OUTPUTS)
+
+    def _reinit(self) -> None:
+        super()._reinit()
+        object.__setattr__(self, "_prev_execute", False)
+        object.__setattr__(self, "_job", None)
+        object.__setattr__(self, "_final", None)       # (output name, ErrorID, ErrorInfo) once ended
+        object.__setattr__(self, "_latched", False)
+        object.__setattr__(self, "_shown", False)
+        object.__setattr__(self, "_busy_axis", None)
+
+    # --- what subclasses provide -----------------------------------------------------------------------
+    def _start(self, axis: Any) -> Job | None:
+        """Validate inputs (raise InstructionError) and hand a job to the axis."""
+        raise NotImplementedError  # pragma: no cover
+
+    def _running(self, execute: bool) -> None:
+        """Per-call hook while the job is busy (subclass specific outputs)."""
+
+    # --- evaluation ------------------------------------------------------------------------------------
+    def _evaluate(self) -> None:
+        execute = as_bool(self, "Execute", self.Execute)
+        edge = execute and not self._prev_execute
+        object.__setattr__(self, "_prev_execute", execute)
+        if edge:
+            self._begin()
+        self._update(execute)
+
+    def _begin(self) -> None:
+        self._clear_outputs()
+        object.__setattr__(self, "_job", None)
+        object.__setattr__(self, "_final", None)
+        object.__setattr__(self, "_shown", False)
+        try:
+            axis = self._axis()
+            job = self._start(axis)
+        except InstructionError as err:
+            self._end("Error", err.error_id, err.error_info)
+            return
+        object.__setattr__(self, "_job", job)
+
+    def _clear_outputs(self) -> None:
+        for name, default in self.OUTPUTS.items():
+            object.__setattr__(self, name, default)
+
+    def _set_busy(self, busy: bool) -> None:
+        if "Busy" in self.OUTPUTS:
+            self._out(Busy=busy)
+        axis = self._busy_axis
+        if busy and axis is None:
+            job_axis = getattr(self, "Axis", None) or getattr(self, "Slave", None)
+            if job_axis is not None and hasattr(job_axis, "busy_commands"):
+                job_axis.busy_commands.add(id(self))
+                object.__setattr__(self, "_busy_axis", job_axis)
+        elif not busy and axis is not None:
+            axis.busy_commands.discard(id(self))
+            object.__setattr__(self, "_busy_axis", None)
+
+    def _end(self, output: str, error_id: int = 0, error_info: int = 0) -> None:
+        object.__setattr__(self, "_final", (output, error_id, error_info))
+        object.__setattr__(self, "_latched", bool(self._prev_execute))
+        object.__setattr__(self, "_shown", False)
+        self._set_busy(False)
+
+    def _final_for(self, job: Job) -> tuple[str, int, int] | None:
+        """Which final output a finished job shows (None: show nothing)."""
+        if job.state == JobState.DONE:
+            return ("Done", 0, 0)
+        if job.state == JobState.ABORTED:
+            return ("CommandAborted", 0, 0)
+        assert job.fault is not None
+        error_id, error_info = self._fault_codes(job.fault)
+        return ("Error", error_id, error_info)
+
+    def _update(self, execute: bool) -> None:
+        job = self._job
+        if job is not None and self._final is None:
+            if job.state == JobState.BUSY:
+                self._set_busy(True)
+                self._running(execute)
+                return
+            final = self._final_for(job)
+            object.__setattr__(self, "_job", None)
+            if final is None:
+                self._clear_outputs()
+                self._set_busy(False)
+                return
+            self._end(*final)
+        final = self._final
+        if final is None:
+            return
+        show = execute if self._latched else not self._shown
+        if show:
+            output, error_id, error_info = final
+            self._show(output, error_id, error_info)
+            object.__setattr__(self, "_shown", True)
+        else:
+            self._clear_outputs()
+            object.__setattr__(self, "_final", None)
+
+    def _show(self, output: str, error_id: int, error_info: int) -> None:
+        self._clear_outputs()
+        values = {output: True, "ErrorID": error_id}
+        if "ErrorInfo" in self.OUTPUTS:
+            values["ErrorInfo"] = error_info
+        self._out(**values)

@@ -1,0 +1,391 @@
+"""S7-1500 positioning axis and synchronous axis technology objects (S7-1500T V5 §3.1, §6.1, §9.3, §A.1).
+
+They share the kernel's motion with the S7-1200 axis and differ where the S7-1500 does: every job
+brings its own dynamics (limited by ``DynamicLimits``), ``MC_Stop`` locks the axis while its Execute is
+TRUE, a superimposed motion can run on top of any basic motion, jobs override each other by the tables
+of §9.3, and the synchronous axis follows leading values (``kernel.sync_axis``).
+"""
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any, Mapping
+
+from . import faults as F
+from . import override as O
+from . import tags1500 as T
+from .axis import DISABLED, ENABLED, ENABLING, PositioningAxis
+from .faults import Fault, Reaction
+from .jobs import POSITIONING_KINDS, Job, JobKind, JobState
+from .leading import LeadingValueMixin
+from .motion import limits
+from .parameters1500 import S7_1500
+from .profiles import INF, Planner, Profile
+from .superimposed import SuperimposedMixin
+from .sync_axis import SynchronousMixin
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .runtime import Controller
+
+_EPS_T = 1e-9
+#: MC_Stop modes and their stop response (a new MC_Stop aborts one with the same or a lower one, §9.3.1 B)
+STOP_MODES = {0: 2, 2: 1}      # 0 emergency stop ramp (strongest), 2 maximum dynamic values
+
+
+class PositioningAxis1500(SuperimposedMixin, LeadingValueMixin, PositioningAxis):
+    """Positioning axis technology object of the S7-1500 (TO_PositioningAxis)."""
+
+    schema = S7_1500
+    family = "S7-1500"
+    _dynamic = T.DYNAMIC
+    _dynamic_types = T.TYPES
+    _dynamic_aliases: dict[str, str] = {}
+    _status_groups = T.GROUPS
+    _read_param_tags = frozenset(T.DYNAMIC)
+    # defaults read before __init__ has set everything up
+    _sup_carry = None
+    coupling = None
+    stop_job: Job | None = None
+
+    def __init__(self, ctl: "Controller", name: str, cfg: Mapping[str, Any], **kw: Any):
+        self._sup_init()
+        self.stop_job = None
+        self.warnings: set[str] = set()          # dynamic values limited (alarms 501-504)
+        self._decoupled_state = None
+        self._lv_init()
+        super().__init__(ctl, name, cfg, **kw)
+
+    # --- state ------------------------------------------------------------------------------------------
+    def _state_at(self, t: float) -> tuple[float, float, float]:
+        p, v, a = super()._state_at(t)
+        carry = self._sup_carry
+        if carry is not None:
+            p, v, a = p + carry[0], v + carry[1], a + carry[2]
+        return p, v, a
+
+    def _start_profile(self, profile: Profile, plan=None) -> None:
+        super()._start_profile(profile, plan)
+        self._sup_carry = None
+
+    def actual_acceleration(self) -> float:
+        return float(self.ctl.bank.sp_a[self.index])
+
+    # --- alarms -----------------------------------------------------------------------------------------
+    def _blocking_alarm(self) -> Fault | None:
+        """Alarms without a reaction (warnings, SynchronousError) do not block new jobs."""
+        for a in self.alarms:
+            if a.reaction != Reaction.NONE or a.kind not in (F.SYNC_MASTER,):
+                return Fault(F.PENDING_ALARM, a.kind + "/" + a.detail, False, text=str(a))
+        return None
+
+    def raise_alarm(self, fault: Fault, job: Job | None = None) -> None:
+        if fault.reaction == Reaction.NONE and fault.kind in (F.SYNC_MASTER,):
+            if fault not in self.alarms:
+                self.alarms.append(fault)
+            return
+        t = self.now
+        if fault.reaction != Reaction.NONE:
+            self._abort_sync(t, fault=fault)
+            if self.sup_job is not None and self.sup_job.busy:
+                self._finish_job(self.sup_job, JobState.ERROR, t, fault)
+            self._sup_take_over(t)
+            stop = self.stop_job
+            if stop is not None and stop.busy and fault.reaction == Reaction.REMOVE_ENABLE:
+                self._finish_job(stop, JobState.ERROR, t, fault)
+        super().raise_alarm(fault, job)
+
+    def acknowledge(self) -> Fault | None:
+        self.warnings.clear()
+        return super().acknowledge()
+
+    # synchronous operation hooks (no-ops on the positioning axis) -------------------------------------
+    def _abort_sync(self, t: float, *, waiting: bool = True, active: bool = True, fault: Fault | None = None) -> None:
+        return None
+
+    def _override_sync(self, new: str, t: float, new_job: Job | None) -> None:
+        return None
+
+    # --- jobs -------------------------------------------------------------------------------------------
+    def check_start(self, job: Job) -> Fault | None:
+        if self.ctl.mode != "RUN":
+            return F.reject(F.REJECTED, "starting_up")
+        if self.state != ENABLED:
+            return F.reject(F.NOT_ENABLED)
+        blocking = self._blocking_alarm()
+        if blocking is not None:
+            return blocking
+        if self.stop_job is not None and job.kind != JobKind.STOP:
+            return F.reject(F.STOP_ACTIVE)
+        if len(self.busy_commands) >= self.max_commands:
+            return F.reject(F.TOO_MANY_COMMANDS)
+        if job.kind == JobKind.ABSOLUTE and not self.homed:
+            return F.reject(F.NOT_HOMED)
+        needs_control = job.kind in POSITIONING_KINDS or job.kind == JobKind.HOME_ACTIVE or (
+            job.kind in (JobKind.VELOCITY, JobKind.JOG) and job.position_controlled)
+        if self.servo and needs_control and not self.sensor_valid:
+            return F.reject(F.REJECTED, "position_control_required")
+        return None
+
+    def submit(self, job: Job) -> None:
+        """Start a single-axis job with the override response of §9.3.1 / §9.3.2."""
+        fault = self.check_start(job)
+        if fault is not None:
+            job.finish(JobState.ERROR, fault)
+            return
+        t = self.now
+        if job.kind == JobKind.SUPERIMPOSED:
+            lim = limits(self, job.velocity, job=job)
+            self._note_limits(lim)
+            self.start_superimposed(job, lim)
+            return
+        cls = O.job_class(job)
+        if job.kind == JobKind.HOME_ACTIVE and self._sync_blocks_homing():
+            job.finish(JobState.ERROR, F.reject(F.SYNC_ACTIVE))
+            return
+        if job.kind == JobKind.STOP and self.stop_job is not None:
+            old = self.stop_job
+            if STOP_MODES[job.mode] < STOP_MODES.get(old.mode, 0):
+                job.finish(JobState.ERROR, F.reject(F.STOP_ACTIVE, "weaker"))
+                return
+            if old.busy:
+                self._finish_job(old, JobState.ABORTED, t)
+            self.stop_job = None
+        self._override(cls, t, job)
+        p, v, a = self._state_now()
+        if job.kind == JobKind.RELATIVE:
+            job.target = p + job.position
+            if abs(job.target) > 1e12:
+                job.finish(JobState.ERROR, F.reject(F.REJECTED, "numeric_limit"))
+                return
+        elif job.kind == JobKind.ABSOLUTE:
+            job.target = self._absolute_target(job, p, v, a)
+        elif job.kind == JobKind.VELOCITY and job.current:
+            job.velocity = v
+        self.holding_zero_velocity = False
+        self._stop_positioning_monitor()
+        if job.kind == JobKind.STOP:
+            self.stop_job = job
+            self.job = None
+            self._interpolating = True
+            self._plan_stop(job, t)
+            return
+        self.job = job
+        if job.kind in POSITIONING_KINDS or job.kind == JobKind.HOME_ACTIVE or job.kind == JobKind.HALT:
+            self._set_position_control(True)
+        elif job.kind in (JobKind.VELOCITY, JobKind.JOG):
+            self._set_position_control(job.position_controlled)
+        if job.kind == JobKind.HOME_ACTIVE:
+            if self not in self.ctl._input_axes:
+                self.ctl._input_axes.append(self)
+            self._homing_start(job, t)
+            return
+        if self._plan_job(job, t):
+            self._note_limits(self.motion.last_limits)
+
+    def _note_limits(self, lim) -> None:
+        self.warnings = set(lim.limited) if lim is not None else set()
+
+    def _sync_blocks_homing(self) -> bool:
+        return False
+
+    def _override(self, new: str, t: float, new_job: Job | None) -> None:
+        """End what the new job of class ``new`` aborts (§9.3.1, §9.3.2)."""
+        run = self.job
+        if run is not None and run.busy and run is not new_job and O.aborts(new, O.job_class(run)):
+            self._finish_job(run, JobState.ABORTED, t)
+        passive = self.passive_home
+        if passive is not None and passive.busy and O.aborts(new, O.HOME_PASSIVE):
+            self._finish_job(passive, JobState.ABORTED, t)
+            self.passive_home = None
+        self._override_sync(new, t, new_job)
+        if self.sup_profile is not None and O.aborts(new, O.SUPERIMPOSED):
+            self._sup_take_over(t)
+
+    def _plan_stop(self, job: Job, t: float) -> None:
+        if job.mode == 0:
+            plan = self.motion.stop(t, *self._state_now(), emergency=True, jerk=False)
+            self._start_profile(plan.profile, plan)
+        else:
+            job.extra["max_dynamics"] = True
+            self._plan_job(job, t)
+
+    def release_stop(self, job: Job) -> None:
+        """MC_Stop.Execute went FALSE: the axis accepts jobs again once the stop has ended (§9.3.1)."""
+        job.extra["released"] = True
+        if self.stop_job is job and not job.busy:
+            self.stop_job = None
+
+    def _on_milestone(self, name: str, t: float) -> None:
+        stop = self.stop_job
+        if name == "end" and stop is not None and stop.busy:
+            self._interpolating = False
+            self._finish_job(stop, JobState.DONE, t)
+            if stop.extra.get("released"):
+                self.stop_job = None
+            return
+        if name == "end" and self.coupling is not None and self.coupling.applied:
+            self._on_sync_profile_end(t)
+            return
+        super()._on_milestone(name, t)
+
+    def _on_timer(self, name: str, t: float) -> None:
+        if name == "superimposed":
+            self._on_superimposed_timer(t)
+            return
+        if name == "phase":
+            c = self.coupling
+            if c is not None and c.phase is not None:
+                self._phase_segment(c, t)
+            return
+        super()._on_timer(name, t)
+
+    def _on_sync_profile_end(self, t: float) -> None:
+        return None
+
+    # --- enable / disable (MC_Power StopMode: 0 emergency stop, 1 immediate stop, 2 maximum dynamics) ----
+    def _disable(self, stop_mode: int) -> None:
+        t = self.now
+        self._abort_all(t)
+        if self.state == ENABLING:
+            self._remove_enable(t, by_power=True)
+            return
+        self.state = "disabling"
+        p, v, a = self._state_now()
+        self._after_stop = "disable"
+        if stop_mode == 1:
+            self._remove_enable(t, by_power=True)
+            return
+        if stop_mode == 2:
+            lim = self._max_dynamics()
+            plan_profile = self.motion.planner.stop(t, p, v, a, lim)
+            self._start_profile(plan_profile)
+        else:
+            plan = self.motion.stop(t, p, v, a, emergency=True, jerk=False)
+            self._start_profile(plan.profile, plan)
+        if self.profile.t_end <= t + _EPS_T:
+            self._remove_enable(t, by_power=True)
+
+    def _max_dynamics(self):
+        from .motion import max_dynamics
+        return max_dynamics(self)
+
+    def _abort_all(self, t: float, *, keep_simulated: bool = True) -> None:
+        if self.sup_job is not None and self.sup_job.busy:
+            self._finish_job(self.sup_job, JobState.ABORTED, t)
+        self._sup_take_over(t)
+        stop = self.stop_job
+        if stop is not None and stop.busy:
+            self._finish_job(stop, JobState.ABORTED, t)
+        self.stop_job = None
+        self._abort_sync(t)
+        super()._abort_all(t)
+
+    def reinitialize(self, reason: str) -> None:
+        self._abort_all(self.now, keep_simulated=False)
+        self._sup_clear()
+        self.warnings.clear()
+        super().reinitialize(reason)
+
+
+class SynchronousAxis(SynchronousMixin, PositioningAxis1500):
+    """Synchronous axis technology object (TO_SynchronousAxis): a positioning axis that can follow a
+    leading value (§3.1).  ``leading_values``: the possible leading values, as names or
+    ``(name, "setpoint" | "actual" | "delayed")`` pairs (§6.1.3)."""
+
+    _dynamic = T.SYNC_DYNAMIC
+    _dynamic_types = T.SYNC_TYPES
+    _status_groups = T.SYNC_GROUPS
+    _read_param_tags = frozenset(T.SYNC_DYNAMIC)
+    waiting = None
+
+    def __init__(self, ctl: "Controller", name: str, cfg: Mapping[str, Any], *, leading_values=(), **kw: Any):
+        self._sync_init(leading_values)
+        super().__init__(ctl, name, cfg, **kw)
+
+    def _state_at(self, t: float) -> tuple[float, float, float]:
+        c = self.coupling
+        if c is not None and c.applied:
+            p, v, a = self._coupled_state_at(t)
+            sp, sv, sa = self.sup_state_at(t)
+            p, v, a = p - sp, v - sv, a - sa
+            carry = self._sup_carry
+            if carry is not None:
+                p, v, a = p + carry[0], v + carry[1], a + carry[2]
+            return p, v, a
+        return super()._state_at(t)
+
+    def _sync_blocks_homing(self) -> bool:
+        # §9.3.2: active homing does not abort an active GearInPos/CamIn; the homing job is rejected
+        c = self.coupling
+        return c is not None and not c.simulated and c.job.kind in (JobKind.GEAR_IN_POS, JobKind.CAM_IN)
+
+    def _override_sync(self, new: str, t: float, new_job: Job | None) -> None:
+        c = self.coupling
+        if c is not None and not c.simulated and c.job is not new_job:
+            column = O.GEAR_IN if c.job.kind == JobKind.GEAR_IN else O.SYNC_ACTIVE
+            if O.aborts(new, column):
+                self._end_coupling(c, JobState.ABORTED, t, replan=True)
+        w = self.waiting
+        if w is not None and w.job is not new_job:
+            column = O.GEAR_IN if w.job.kind == JobKind.GEAR_IN else O.SYNC_WAITING
+            if O.aborts(new, column):
+                self.waiting = None
+                self.ctl.sync.remove(w)
+                self._finish_coupling_job(w, JobState.ABORTED, t)
+        ph = self.phasing_job
+        if ph is not None and ph.busy and ph is not new_job and O.aborts(new, O.PHASING):
+            self._finish_job(ph, JobState.ABORTED, t)
+            c = self.coupling
+            if c is not None and c.phase is not None:
+                p = c.phase.at(t)[0]
+                c.phase = Planner.hold(t, p)
+                c.phase_seg = 0
+                self._phase_segment(c, t)
+        add = self.lv_additive_job
+        if add is not None and add.busy and add is not new_job and O.aborts(new, O.LV_ADDITIVE):
+            self.lv_additive_job = None
+            self.lv_additive = None
+            self._push_additive()
+            self._finish_job(add, JobState.ABORTED, t)
+
+    def _abort_sync(self, t: float, *, waiting: bool = True, active: bool = True, fault: Fault | None = None,
+                    keep_simulated: bool = True) -> None:
+        c = self.coupling
+        if c is not None and c.simulated and keep_simulated and fault is None:
+            active = False                       # a simulated synchronous operation survives (§9.1.6)
+        SynchronousMixin._abort_sync(self, t, waiting=waiting, active=active, fault=fault)
+
+    def _abort_all(self, t: float, *, keep_simulated: bool = True) -> None:
+        if not keep_simulated:
+            if self.sim_job is not None:
+                job = self.sim_job
+                self.sim_job = None
+                if job.busy:
+                    self._finish_job(job, JobState.ABORTED, t)
+            c = self.coupling
+            if c is not None:
+                c.simulated = False
+                self.ctl.sync.changed()
+        add = self.lv_additive_job
+        if add is not None and not keep_simulated:
+            self.lv_additive_job = None
+            self.lv_additive = None
+            if add.busy:
+                self._finish_job(add, JobState.ABORTED, t)
+        super()._abort_all(t, keep_simulated=keep_simulated)
+        if not keep_simulated:
+            SynchronousMixin._abort_sync(self, t)
+
+    def _set_loop_flags(self) -> None:
+        super()._set_loop_flags()
+
+    def _remove_enable(self, t: float, by_power: bool = False) -> None:
+        c = self.coupling
+        if c is not None and not c.simulated:
+            self._abort_sync(t)
+        super()._remove_enable(t, by_power)
+
+    def _on_sync_profile_end(self, t: float) -> None:
+        SynchronousMixin._on_sync_profile_end(self, t)
+
+
+__all__ = ["PositioningAxis1500", "SynchronousAxis", "DISABLED", "INF", "math"]

@@ -1,0 +1,716 @@
+"""Synchronous operation jobs of a following axis (S7-1500T V5 §3 - §5, §9.1, §9.3.2).
+
+A following axis has at most one active synchronous operation (GearIn, GearInPos or CamIn, or one that
+is simulated) and at most one waiting job (GearInPos/CamIn before its start condition).  The active one
+is a :class:`~plcmotion.kernel.sync.Coupling` evaluated by the controller's sync stage.  Synchronization
+runs either over time with the job's dynamics (MC_GearIn, SyncProfileReference 0: the offset to the
+synchronous operation function is planned once with ruckig) or over a leading value distance
+(SyncProfileReference 1, 3, 4: a quintic in the leading value).
+
+Leading values of modulo axes are unwrapped internally; a synchronous position given in modulo
+coordinates refers to its next occurrence in the direction the leading value moves when the job starts
+(the manual gives the positive direction only, catalog §11.2 item 3; docs/decisions_s7_1500.md).
+"""
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from . import faults as F
+from . import override as O
+from .faults import Fault, Reaction
+from .jobs import Job, JobKind, JobState
+from .profiles import INF, Planner, PlanningError, Profile
+from .sync import APPENDING, CAM, GEAR, ONCE, Coupling, CouplingCycle, quintic
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .axis1500 import PositioningAxis1500 as Axis
+
+_EPS = 1e-12
+COUPLING_TYPES = ("setpoint", "actual", "delayed")
+
+
+class SynchronousMixin:
+    """Following axis behaviour, mixed into the S7-1500 synchronous axis."""
+
+    def _sync_init(self: "Axis", leading_values) -> None:
+        self.coupling: Coupling | None = None
+        self.waiting: Coupling | None = None
+        self.phasing_job: Job | None = None
+        self.lv_additive: tuple[float, float, float] | None = None
+        self.lv_additive_job: Job | None = None
+        self.sim_job: Job | None = None
+        self._leading_values: dict[str, str] = {}
+        for item in leading_values or ():
+            name, mode = (item, "setpoint") if isinstance(item, str) else tuple(item)
+            if mode not in COUPLING_TYPES:
+                raise ValueError(f"{self.name}: leading value {name!r}: type of coupling {mode!r} is not one of "
+                                 f"{', '.join(COUPLING_TYPES)}")
+            self._leading_values[str(name)] = mode
+
+    @property
+    def possible_leading_values(self: "Axis") -> dict[str, str]:
+        """Configured leading value interconnections: source name -> type of coupling (§6.1.3)."""
+        return dict(self._leading_values)
+
+    # --- status -----------------------------------------------------------------------------------------
+    @property
+    def sync_job(self: "Axis") -> Job | None:
+        c = self.coupling
+        return c.job if c is not None else None
+
+    @property
+    def synchronizing(self: "Axis") -> bool:
+        c = self.coupling
+        return c is not None and not c.simulated and not c.job.in_sync
+
+    @property
+    def synchronous(self: "Axis") -> bool:
+        c = self.coupling
+        return c is not None and c.job.in_sync
+
+    def function_state(self: "Axis") -> int:
+        c = self.coupling
+        if c is None:
+            return 0
+        return {JobKind.GEAR_IN: 1, JobKind.GEAR_IN_POS: 2, JobKind.CAM_IN: 3}[c.job.kind]
+
+    def waiting_function_state(self: "Axis") -> int:
+        w = self.waiting
+        if w is None or w.job.kind == JobKind.GEAR_IN:
+            return 0
+        return 2 if w.job.kind == JobKind.GEAR_IN_POS else 3
+
+    def phase_shift(self: "Axis", t: float | None = None) -> float:
+        c = self.coupling
+        if c is None or c.phase is None:
+            return 0.0
+        return c.phase.at(self.now if t is None else t)[0]
+
+    def effective_leading_value(self: "Axis") -> tuple[float, float, float]:
+        c = self.coupling or self.waiting
+        if c is None:
+            return 0.0, 0.0, 0.0
+        return self.ctl.sync.effective_lv(c)
+
+    # --- leading value ----------------------------------------------------------------------------------
+    def _resolve_master(self: "Axis", master: Any) -> tuple[Any, str] | Fault:
+        name = getattr(master, "name", None)
+        mode = self._leading_values.get(name) if name is not None else None
+        if mode is None or self.ctl._lookup(name) is not master:
+            self.raise_alarm(F.alarm(F.SYNC_MASTER, str(name), Reaction.NONE,
+                                     f"{name} is not configured as a possible leading value of {self.name}"))
+            return F.reject(F.SYNC_MASTER, str(name))
+        if master is self:
+            return F.reject(F.COUPLING_CYCLE, "self")
+        if mode != "setpoint" and not getattr(master, "provides_actual_values", False):
+            return F.reject(F.LV_NOT_READY, "no_actual_values")
+        if mode == "setpoint" and not getattr(master, "provides_setpoints", False):
+            return F.reject(F.LV_NOT_READY, "no_setpoints")
+        if mode != "setpoint" and not self.ctl.family_t:
+            return F.reject(F.NOT_AVAILABLE, "actual_value_coupling")
+        return master, mode
+
+    def _lv_now(self: "Axis", source: Any, mode: str, t: float) -> tuple[float, float, float]:
+        """Effective leading value (source value plus additive value) at time ``t``."""
+        p, v, a = source.lv_value(mode, t)
+        add = self.lv_additive
+        if add is not None:
+            p, v, a = p + add[0], v + add[1], a + add[2]
+        return p, v, a
+
+    # --- the current state of the following axis -------------------------------------------------------
+    def _coupled_state_at(self: "Axis", t: float) -> tuple[float, float, float]:
+        """Setpoint of a coupled axis at ``t``: the last servo cycle's values carried forward."""
+        b, i = self.ctl.bank, self.index
+        p, v, a = float(b.sp_p[i]), float(b.sp_v[i]), float(b.sp_a[i])
+        dt = t - self.ctl._bank_time
+        if dt > 0.0:
+            p, v = p + dt * (v + 0.5 * dt * a), v + dt * a
+        return p, v, a
+
+    def total_state_at(self: "Axis", t: float) -> tuple[float, float, float]:
+        """Total setpoint (basic motion, synchronous operation and superimposed motion)."""
+        if self.coupling is not None and self.coupling.applied:
+            return self._coupled_state_at(t)
+        p, v, a = self._state_at(t)
+        sp, sv, sa = self.sup_state_at(t)
+        return p + sp, v + sv, a + sa
+
+    # --- job entry ---------------------------------------------------------------------------------------
+    def sync_submit(self: "Axis", job: Job) -> None:
+        """Start MC_GearIn, MC_GearInPos, MC_CamIn or a phasing job."""
+        t = self.now
+        if job.kind in (JobKind.GEAR_IN_POS, JobKind.CAM_IN) and not self.ctl.family_t:
+            job.finish(JobState.ERROR, F.reject(F.NOT_AVAILABLE, job.kind.value))
+            return
+        fault = self._sync_check(job)
+        if fault is not None:
+            job.finish(JobState.ERROR, fault)
+            return
+        if job.kind == JobKind.PHASING:
+            self._start_phasing(job, t)
+            return
+        resolved = self._resolve_master(job.extra["master"])
+        if isinstance(resolved, Fault):
+            job.finish(JobState.ERROR, resolved)
+            return
+        source, mode = resolved
+        if self.ctl.sync.would_cycle(self, source, mode):
+            job.finish(JobState.ERROR, F.reject(F.COUPLING_CYCLE))
+            return
+        if job.kind == JobKind.CAM_IN:
+            fault = self._check_cam(job)
+            if fault is not None:
+                job.finish(JobState.ERROR, fault)
+                return
+        c = Coupling(self, source, job, mode)
+        if mode != "setpoint":
+            c.extra["ext_slot"] = source.lv_slot(mode)
+        if job.kind == JobKind.GEAR_IN:
+            self._start_gear_in(c, t)
+        else:
+            self._prepare_positioned(c, t)
+
+    def _sync_check(self: "Axis", job: Job) -> Fault | None:
+        if self.ctl.mode != "RUN":
+            return F.reject(F.REJECTED, "starting_up")
+        if self.state != "enabled":
+            return F.reject(F.NOT_ENABLED)
+        fault = self._blocking_alarm()
+        if fault is not None:
+            return fault
+        if self.stop_job is not None:
+            return F.reject(F.STOP_ACTIVE)
+        if self.sim_job is not None and self.sim_job.busy:
+            return F.reject(F.SYNC_SIMULATION)
+        if job.kind == JobKind.PHASING:
+            c = self.coupling
+            if c is None or not c.job.in_sync or c.job.kind == JobKind.CAM_IN or c.simulated:
+                return F.reject(F.NOT_SYNCHRONOUS, "gearing")
+            if job.extra.get("master") is not c.source:
+                return F.reject(F.NOT_SYNCHRONOUS, "master")
+        return None
+
+    def _check_cam(self: "Axis", job: Job) -> Fault | None:
+        cam = job.extra["cam"]
+        if cam.curve is None:
+            return F.reject(F.CAM_NOT_INTERPOLATED)
+        x = job.extra
+        span = cam.curve.length * x["master_scaling"]
+        if x["spr"] in (0, 1, 2, 3) and not (-1e-9 * max(1.0, abs(span)) <= x["master_sync"] <= span * (1 + 1e-12)):
+            return F.reject(F.SYNC_POSITION_RANGE, "", f"MasterSyncPosition {x['master_sync']!r} outside 0 .. {span!r}")
+        return None
+
+    # --- MC_GearIn: synchronization over time with the job's dynamics --------------------------------
+    def _start_gear_in(self: "Axis", c: Coupling, t: float) -> None:
+        c.law = GEAR
+        c.ratio = c.job.extra["ratio"]
+        if c.mode == "setpoint" and not c.source.lv_position_controlled():
+            # §3.3.5: with setpoint coupling the job waits until the leading axis is position-controlled
+            c.waiting = c.poll = True
+            self._set_waiting(c, t)
+            self._override(O.GEAR_IN, t, c.job)
+            return
+        self._override(O.GEAR_IN, t, c.job)
+        self._activate_gear_in(c, t)
+
+    def _activate_gear_in(self: "Axis", c: Coupling, t: float) -> None:
+        x, xv, xa = self._lv_now(c.source, c.mode, t)
+        p, v, a = self._take_over(t)
+        c.offset = p - c.ratio * x
+        ev, ea = v - c.ratio * xv, a - c.ratio * xa
+        job = c.job
+        target = c.ratio * xv
+        speeding_up = abs(target) > abs(v)
+        up, down = job.acceleration, job.deceleration
+        lim_up = up if speeding_up else down
+        lim_other = down if speeding_up else up
+        if ev <= 0.0:          # the offset velocity must rise
+            amax, amin = lim_up, -lim_other
+        else:
+            amax, amin = lim_other, -lim_up
+        try:
+            rel = self.motion.planner.free(t, 0.0, ev, ea, target_p=None, vmin=-INF, vmax=INF, amin=amin,
+                                           amax=amax, jerk=job.jerk if job.jerk is not None else INF)
+        except PlanningError as exc:
+            self.raise_alarm(F.alarm(F.INTERNAL, "planning", Reaction.EMERGENCY, str(exc)), job=job)
+            return
+        self._couple(c, t, rel)
+
+    # --- MC_GearInPos / MC_CamIn: synchronous positions -------------------------------------------------
+    def _prepare_positioned(self: "Axis", c: Coupling, t: float) -> None:
+        job = c.job
+        x = job.extra
+        spr = x["spr"]
+        lv, lvv, _ = self._lv_now(c.source, c.mode, t)
+        d = -1.0 if lvv < -_EPS else 1.0
+        c.direction = d
+        modulo = c.source.lv_modulo()
+        if job.kind == JobKind.GEAR_IN_POS:
+            c.law = GEAR
+            c.ratio = x["ratio"]
+            sync = x["master_sync"]
+        else:
+            c.law = CAM
+            cam = x["cam"]
+            c.cam = cam
+            c.curve = cam.curve
+            c.master_scaling = x["master_scaling"]
+            c.slave_scaling = x["slave_scaling"]
+            c.master_offset = x["master_offset"]
+            c.slave_offset = x["slave_offset"]
+            c.app_mode = x["app_mode"]
+            sync = c.curve.start * c.master_scaling + c.master_offset + x["master_sync"]
+        length = x["start_distance"]
+        if spr == 2:                                  # CamIn: direct synchronous setting
+            self._override(O.SYNC_ACTIVE, t, job)
+            self._activate_direct(c, t)
+            return
+        if spr == 4:                                  # CamIn: subsequent from the current leading value
+            self._override(O.SYNC_ACTIVE, t, job)
+            self._activate_blend(c, t, lv + d * length, sync_offset_ref=None)
+            return
+        # the occurrence of the synchronous position ahead in the direction of travel
+        start = sync - d * length if spr == 1 else sync
+        if modulo is not None:
+            m_len = modulo[1]
+            k = math.ceil(((lv - start) * d) / m_len - 1e-12) if (start - lv) * d < 0 else 0
+            shift = d * k * m_len
+            sync += shift
+            start += shift
+            if c.law == CAM:
+                c.master_offset += shift
+        elif spr == 1 and (sync - lv) * d < length * (1 - 1e-12):
+            job.finish(JobState.ERROR, F.reject(F.START_DISTANCE))
+            return
+        x["sync_u"] = sync
+        x["start_u"] = start
+        if c.law == GEAR:
+            c.offset = x["slave_sync"] - c.ratio * sync
+        c.waiting = True
+        c.trigger = start
+        c.extra["wprev"] = (lv - start) * d if (lv - start) * d < 0 else math.nan
+        c.poll = spr == 0 or (c.mode == "setpoint" and not c.source.lv_position_controlled())
+        if spr == 0:
+            c.extra["armed"] = False
+        self._set_waiting(c, t)
+
+    def _set_waiting(self: "Axis", c: Coupling, t: float) -> None:
+        """A new waiting job replaces a waiting one (§9.3.2); the active synchronous operation goes on."""
+        old = self.waiting
+        if old is not None:
+            self._finish_coupling_job(old, JobState.ABORTED, t)
+            self.ctl.sync.remove(old)
+        if c.job.kind != JobKind.GEAR_IN:
+            for name in ("cam",):
+                cam = c.job.extra.get(name)
+                if cam is not None:
+                    cam.acquire(c.job)
+        self.waiting = c
+        try:
+            self.ctl.sync.add(c)
+        except CouplingCycle:
+            self.waiting = None
+            c.job.finish(JobState.ERROR, F.reject(F.COUPLING_CYCLE))
+
+    def _poll(self: "Axis", c: Coupling, t: float) -> None:
+        """Waiting condition checked every cycle: a position-controlled leading axis; SPR 0 start time."""
+        if c.mode == "setpoint" and not c.source.lv_position_controlled():
+            return
+        if c.job.kind == JobKind.GEAR_IN:
+            self.waiting = None
+            c.waiting = c.poll = False
+            self.ctl.sync.remove(c)
+            self._activate_gear_in(c, t)
+            return
+        spr = c.job.extra["spr"]
+        if spr != 0:
+            c.poll = False                      # from now on the vectorised trigger watches the start
+            self.ctl.sync.changed()
+            return
+        x, xv, xa = self._lv_now(c.source, c.mode, t)
+        d = c.direction
+        remaining = (c.job.extra["sync_u"] - x) * d
+        speed = xv * d
+        if speed <= _EPS:
+            c.extra["armed"] = remaining > 0.0
+            return
+        plan = self._plan_dynamic_sync(c, t, x, xv, xa, None)
+        if plan is None:
+            return
+        need = plan.t_end - t
+        margin = 2.0 * self.ctl.servo_cycle
+        if remaining > speed * (need + margin):
+            c.extra["armed"] = True
+            return
+        if not c.extra.get("armed"):
+            return                              # §5.4.1: the start position must be crossed first
+        self._activate_dynamic(c, t, remaining / speed)
+
+    def _plan_dynamic_sync(self: "Axis", c: Coupling, t: float, x: float, xv: float, xa: float,
+                           duration: float | None) -> Profile | None:
+        """Offset to the synchronous operation function, planned with the job's dynamics (SPR 0)."""
+        job = c.job
+        p, v, a = self.total_state_at(t)
+        y, yv, ya = self.ctl.sync.law_at(c, x, xv, xa)
+        e0 = self._slave_correction(c, p - y, self.ctl.sync.law_at(c, job.extra["sync_u"], 0.0, 0.0)[0] - y)
+        vmax = job.velocity
+        try:
+            return self.motion.planner.free(t, e0, v - yv, a - ya, target_p=0.0, vmin=-vmax - yv, vmax=vmax - yv,
+                                            amin=-job.deceleration, amax=job.acceleration,
+                                            jerk=job.jerk if job.jerk is not None else INF, duration=duration)
+        except PlanningError:
+            return None
+
+    def _activate_dynamic(self: "Axis", c: Coupling, t: float, duration: float) -> None:
+        x, xv, xa = self._lv_now(c.source, c.mode, t)
+        self._override(O.SYNC_ACTIVE, t, c.job)
+        p, v, a = self._take_over(t)
+        y, yv, ya = self.ctl.sync.law_at(c, x, xv, xa)
+        delta = self.ctl.sync.law_at(c, c.job.extra["sync_u"], 0.0, 0.0)[0] - y
+        e0 = self._slave_correction(c, p - y, delta, shift_law=True)
+        job = c.job
+        vmax = job.velocity
+        try:
+            rel = self.motion.planner.free(t, e0, v - yv, a - ya, target_p=0.0, vmin=-vmax - yv, vmax=vmax - yv,
+                                           amin=-job.deceleration, amax=job.acceleration,
+                                           jerk=job.jerk if job.jerk is not None else INF, duration=duration)
+        except PlanningError as exc:
+            self.raise_alarm(F.alarm(F.INTERNAL, "planning", Reaction.EMERGENCY, str(exc)), job=job)
+            return
+        self._leave_waiting(c)
+        self._couple(c, t, rel)
+
+    def _slave_correction(self: "Axis", c: Coupling, e0: float, law_delta: float, shift_law: bool = False) -> float:
+        """Position error to remove during synchronization; on a modulo following axis the revolution
+        of the synchronous position follows ``SyncDirection`` (1 positive, 2 negative, 3 shortest)."""
+        if not self.eff["Modulo.Enable"]:
+            return e0
+        length = self.eff["Modulo.Length"]
+        direction = c.job.extra.get("sync_direction", 3)
+        if direction == 1:           # the following axis travels law_delta - e0' >= 0, as little as possible
+            k = math.ceil((e0 - law_delta) / length - 1e-12)
+        elif direction == 2:
+            k = math.floor((e0 - law_delta) / length + 1e-12)
+        else:
+            k = round(e0 / length)
+        if shift_law and k:
+            if c.law == GEAR:
+                c.offset += k * length
+            else:
+                c.slave_offset += k * length
+        return e0 - k * length
+
+    def _activate_direct(self: "Axis", c: Coupling, t: float) -> None:
+        """CamIn SyncProfileReference 2: InSync at once at the present positions (§5.4.4)."""
+        x, xv, xa = self._lv_now(c.source, c.mode, t)
+        job = c.job
+        p, v, a = self._take_over(t)
+        curve = c.curve
+        u_sync = curve.start + job.extra["master_sync"] / c.master_scaling
+        c.master_offset = x - curve.start * c.master_scaling - job.extra["master_sync"]
+        c.slave_offset = p - float(curve.value(u_sync)) * c.slave_scaling
+        if c.app_mode != ONCE:
+            c.master_offset = x - u_sync * c.master_scaling
+        rel = Planner.hold(t, 0.0)
+        job.in_sync = True
+        self._couple(c, t, rel)
+
+    def _activate_blend(self: "Axis", c: Coupling, t: float, x_end: float, sync_offset_ref) -> None:
+        """Synchronize over the leading value distance up to ``x_end`` (SPR 1, 3, 4)."""
+        x, xv, xa = self._lv_now(c.source, c.mode, t)
+        p, v, a = self._take_over(t)
+        y, dy, ddy = self.ctl.sync.law_at(c, x, 1.0, 0.0)        # law and its derivatives in x
+        law_end = self.ctl.sync.law_at(c, x_end, 0.0, 0.0)[0]
+        e0 = self._slave_correction(c, p - y, law_end - y, shift_law=True)
+        length = x_end - x
+        if abs(length) <= _EPS:
+            length = math.copysign(_EPS, c.direction)
+        if abs(xv) > 1e-9:
+            sx = v / xv
+            sxx = (a - sx * xa) / (xv * xv)
+        else:
+            sx, sxx = dy, ddy
+        c.blend = quintic(e0, (sx - dy) * length, (sxx - ddy) * length * length)
+        c.blend_x0 = x
+        c.blend_len = length
+        if c.law == CAM:
+            c.extra["inside"] = self._cam_inside(c, x)
+        self._couple(c, t, Planner.hold(t, 0.0))
+
+    def _cam_inside(self: "Axis", c: Coupling, x: float) -> bool:
+        u = (x - c.master_offset) / c.master_scaling
+        return bool(c.curve.start < u < c.curve.end)
+
+    def _trigger(self: "Axis", c: Coupling, t: float) -> None:
+        """The leading value crossed the start position of a waiting GearInPos/CamIn (SPR 1, 3)."""
+        if c is not self.waiting:
+            return
+        if c.mode == "setpoint" and not c.source.lv_position_controlled():
+            c.poll = True                       # §3.3.5: wait for a position-controlled leading axis
+            self.ctl.sync.changed()
+            return
+        job = c.job
+        spr = job.extra["spr"]
+        d = c.direction
+        self._override(O.SYNC_ACTIVE, t, job)
+        self._leave_waiting(c)
+        end = job.extra["sync_u"] if spr == 1 else job.extra["sync_u"] + d * job.extra["start_distance"]
+        self._activate_blend(c, t, end, None)
+
+    def _leave_waiting(self: "Axis", c: Coupling) -> None:
+        if self.waiting is c:
+            self.waiting = None
+        c.waiting = c.poll = False
+
+    # --- coupling in force -------------------------------------------------------------------------------
+    def _couple(self: "Axis", c: Coupling, t: float, relative: Profile) -> None:
+        """Make ``c`` the active synchronous operation: the own profile becomes the offset ``relative``."""
+        old = self.coupling
+        if old is not None and old is not c:
+            self._end_coupling(old, JobState.ABORTED, t, replan=False)
+        if c.law == CAM and c.cam is not None:
+            c.cam.acquire(c.job)
+            if c.app_mode != ONCE:
+                x = self._lv_now(c.source, c.mode, t)[0]
+                u = (x - c.master_offset) / c.master_scaling
+                c.cam_cycle = math.floor((u - c.curve.start) / c.curve.length)
+        self.coupling = c
+        c.waiting = c.poll = False
+        c.job.start_sync = True
+        self._set_position_control(True)
+        self.holding_zero_velocity = False
+        if c not in self.ctl.sync.couplings:
+            self.ctl.sync.add(c)
+        else:
+            self.ctl.sync.changed()
+        self._interpolating = False
+        self._start_profile(relative)
+
+    def _take_over(self: "Axis", t: float) -> tuple[float, float, float]:
+        """The total setpoint now; the superimposed part is handed over (it is aborted, §9.3.1)."""
+        p, v, a = self.total_state_at(t)
+        self._sup_clear()
+        return p, v, a
+
+    def _on_sync_profile_end(self: "Axis", t: float) -> None:
+        """The time-based synchronization offset has reached its end: synchronous (GearIn, SPR 0)."""
+        c = self.coupling
+        if c is None or c.job.in_sync or c.blend is not None:
+            return
+        e_end = self.profile.final.p
+        if c.law == GEAR:
+            c.offset += e_end
+        else:
+            c.slave_offset += e_end
+        c.job.in_sync = True
+        self.ctl.sync.changed()
+        self._start_profile(Planner.hold(t, 0.0))
+
+    def _sync_event(self: "Axis", kind: str, c: Coupling, arg: Any, t: float) -> None:
+        """Events of the sync stage (called inside the servo cycle)."""
+        if kind == "trigger":
+            self._trigger(c, t)
+        elif kind == "poll":
+            if c is self.waiting:
+                self._poll(c, t)
+        elif kind == "blend_end":
+            if c is self.coupling and c.blend is not None:
+                c.blend = None
+                c.job.in_sync = True
+                self.ctl.sync.changed()
+        elif kind == "cam_wrap":
+            if c is self.coupling:
+                c.job.end_of_profile += 1
+                c.cam_cycle = arg
+        elif kind == "cam_end":
+            if c is self.coupling and c.job.in_sync:
+                self._cam_end(c, t)
+
+    def _cam_end(self: "Axis", c: Coupling, t: float) -> None:
+        """Non-cyclic camming ends at the cam's end point (§5.3): EndOfProfile, Busy and InSync FALSE."""
+        c.job.end_of_profile += 1
+        p, v, a = self._coupled_state_at(t)
+        sp, _, _ = self.sup_state_at(t)
+        job = c.job
+        self._end_coupling(c, JobState.DONE, t, replan=False)
+        self._start_profile(Planner.hold(t, p - sp))
+        job.in_sync = False
+
+    def _end_coupling(self: "Axis", c: Coupling, state: JobState, t: float, *, replan: bool = True,
+                      fault: Fault | None = None) -> None:
+        """The active synchronous operation ends (overridden, stopped, disabled, cam end)."""
+        if self.coupling is not c:
+            return
+        if replan:
+            p, v, a = self._coupled_state_at(t) if c.applied else self.total_state_at(t)
+            sp, sv, sa = self.sup_state_at(t)
+            self._decoupled_state = (p - sp, v - sv, a - sa)
+        self.coupling = None
+        self.ctl.sync.remove(c)
+        if self.phasing_job is not None and self.phasing_job.busy:
+            self._finish_job(self.phasing_job, JobState.ABORTED, t)
+        self.phasing_job = None
+        self._finish_coupling_job(c, state, t, fault)
+        if replan:
+            p, v, a = self._decoupled_state
+            self._decoupled_state = None
+            # the motion goes on from where the synchronous operation left it (braked by the caller)
+            self._start_profile(Planner.cruise(t, p, v) if abs(a) < 1e-12 else
+                                _constant_accel(t, p, v, a))
+
+    def _finish_coupling_job(self: "Axis", c: Coupling, state: JobState, t: float,
+                             fault: Fault | None = None) -> None:
+        job = c.job
+        if c.cam is not None:
+            c.cam.release(job)
+        else:
+            cam = job.extra.get("cam")
+            if cam is not None:
+                cam.release(job)
+        if job.busy:
+            self._finish_job(job, state, t, fault)
+        if state != JobState.DONE:
+            job.in_sync = False
+
+    def _abort_sync(self: "Axis", t: float, *, waiting: bool = True, active: bool = True,
+                    fault: Fault | None = None) -> None:
+        state = JobState.ERROR if fault is not None else JobState.ABORTED
+        if waiting and self.waiting is not None:
+            w = self.waiting
+            self.waiting = None
+            self.ctl.sync.remove(w)
+            self._finish_coupling_job(w, state, t, fault)
+        if active and self.coupling is not None:
+            self._end_coupling(self.coupling, state, t, replan=True, fault=fault)
+
+    # --- phasing (MC_PhasingRelative / -Absolute, §4.5) ---------------------------------------------------
+    def _start_phasing(self: "Axis", job: Job, t: float) -> None:
+        c = self.coupling
+        assert c is not None
+        now_p, now_v, now_a = c.phase.at(t) if c.phase is not None else (0.0, 0.0, 0.0)
+        target = job.extra["shift"] if job.extra.get("absolute") else now_p + job.extra["shift"]
+        job.extra["phase_start"] = now_p
+        scale = max(abs(c.ratio), 1e-12)     # the dynamics are those of the following axis (§9.1.3)
+        jerk = job.jerk if job.jerk is not None else INF
+        try:
+            prof = self.motion.planner.free(t, now_p, now_v, now_a, target_p=target, vmin=-job.velocity / scale,
+                                            vmax=job.velocity / scale, amin=-job.deceleration / scale,
+                                            amax=job.acceleration / scale, jerk=jerk / scale)
+        except PlanningError as exc:
+            self.raise_alarm(F.alarm(F.INTERNAL, "planning", Reaction.EMERGENCY, str(exc)), job=job)
+            return
+        if self.phasing_job is not None and self.phasing_job.busy:
+            self._finish_job(self.phasing_job, JobState.ABORTED, t)
+        self.phasing_job = job
+        c.phase = prof
+        c.phase_seg = 0
+        self._phase_segment(c, t)
+
+    def _phase_segment(self: "Axis", c: Coupling, t: float) -> None:
+        prof = c.phase
+        while prof.end_of(c.phase_seg) <= t + 1e-9:
+            c.phase_seg += 1
+        lv = self.ctl.sync.level_of(c)
+        if lv is not None:
+            lv.set_phase(c)
+        else:
+            self.ctl.sync.changed()
+        nxt = prof.end_of(c.phase_seg)
+        if nxt < INF:
+            self._timers["phase"] = nxt
+        else:
+            self._timers.pop("phase", None)
+            job = self.phasing_job
+            if job is not None and job.busy:
+                self._finish_job(job, JobState.DONE, t)
+        self._schedule()
+
+    def covered_phase_shift(self: "Axis", job: Job) -> float:
+        c = self.coupling
+        if c is None or c.phase is None:
+            return job.extra.get("covered", 0.0)
+        return c.phase.at(self.now)[0] - job.extra.get("phase_start", 0.0)
+
+    # --- additive leading value (MC_LeadingValueAdditive, §3.5) ---------------------------------------
+    def set_lv_additive(self: "Axis", job: Job, p: float, v: float, a: float) -> Fault | None:
+        """Apply an additive leading value (each call while Enable is TRUE)."""
+        if job is not self.lv_additive_job:
+            if self.ctl.mode != "RUN":
+                return F.reject(F.REJECTED, "starting_up")
+            if self.state != "enabled" and not (self.sim_job is not None and self.sim_job.busy):
+                return F.reject(F.NOT_ENABLED)
+            old = self.lv_additive_job
+            if old is not None and old.busy:
+                self._finish_job(old, JobState.ABORTED, self.now)
+            self.lv_additive_job = job
+        self.lv_additive = (p, v, a)
+        self._push_additive()
+        return None
+
+    def end_lv_additive(self: "Axis", job: Job) -> None:
+        if job is self.lv_additive_job:
+            self.lv_additive_job = None
+            self.lv_additive = None
+            self._push_additive()
+            if job.busy:
+                self._finish_job(job, JobState.DONE, self.now)
+
+    def _push_additive(self: "Axis") -> None:
+        for c in (self.coupling, self.waiting):
+            if c is None:
+                continue
+            lv = self.ctl.sync.level_of(c)
+            if lv is not None:
+                lv.set_additive(c)
+            else:
+                self.ctl.sync.changed()
+
+    # --- simulation of synchronous operation (MC_SynchronizedMotionSimulation, §3.4) -----------------
+    def start_simulation(self: "Axis", job: Job) -> Fault | None:
+        if not self.ctl.family_t:
+            return F.reject(F.NOT_AVAILABLE, "simulation")
+        c = self.coupling
+        if c is None or not c.job.in_sync:
+            return F.reject(F.NOT_SYNCHRONOUS, "simulation")
+        t = self.now
+        p, v, a = self._coupled_state_at(t)
+        sp, _, _ = self.sup_state_at(t)
+        c.simulated = True
+        self.ctl.sync.changed()
+        self.sim_job = job
+        # the setpoint from the synchronous operation stands still; superimposed motion goes on
+        self._start_profile(Planner.hold(t, p - sp))
+        return None
+
+    def end_simulation(self: "Axis", job: Job) -> None:
+        if job is not self.sim_job:
+            return
+        t = self.now
+        self.sim_job = None
+        if job.busy:
+            self._finish_job(job, JobState.DONE, t)
+        c = self.coupling
+        if c is None:
+            return
+        running = self.job
+        if running is not None and running.busy:
+            self._finish_job(running, JobState.ABORTED, t)
+        c.simulated = False
+        self.ctl.sync.changed()
+        if self.state in ("enabled", "disabling"):
+            self._set_position_control(True)
+        # the synchronous setpoints act at once, without a new synchronization (§9.1.6)
+        self._start_profile(Planner.hold(t, 0.0))
+
+
+def _constant_accel(t: float, p: float, v: float, a: float) -> Profile:
+    from .profiles import Segment
+
+    return Profile([Segment(t, p, v, a, 0.0)], t)
+
+
+__all__ = ["SynchronousMixin", "COUPLING_TYPES", "APPENDING", "np"]

@@ -1,0 +1,297 @@
+"""Status tags of the S7-1500 positioning and synchronous axis (S7-1500T V5 §A.1).
+
+Computed when read from the kernel state, like the S7-1200 tags (nothing is copied per cycle).  The
+status words are DWORDs whose bits read as ``axis.StatusWord.X22`` or by name
+(``axis.StatusWord.Synchronous``).
+
+Technology alarm numbers (``ErrorDetail.Number``): the manual names 501-503 (dynamic values limited),
+521/522 (following error / warning), 531 (hardware limit switch), 541 (positioning) and 900 (leading
+axis proxy); the other numbers are plcmotion's, listed in docs/errorids_s7_1500.md.
+"""
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any, Callable
+
+import numpy as np
+
+from . import faults as F
+from .faults import Reaction
+from .jobs import JobKind
+from .tags import DYNAMIC as _DYN1200
+from .words import pack, word_type
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .axis1500 import PositioningAxis1500 as Axis
+
+StatusWord = word_type("StatusWord", {
+    "Enable": 0, "Error": 1, "RestartActive": 2, "OnlineStartValuesChanged": 3, "ControlPanelActive": 4,
+    "HomingDone": 5, "Done": 6, "StandStill": 7, "PositioningCommand": 8, "JogCommand": 9,
+    "VelocityCommand": 10, "HomingCommand": 11, "ConstantVelocity": 12, "Accelerating": 13, "Decelerating": 14,
+    "SWLimitMinActive": 15, "SWLimitMaxActive": 16, "HWLimitMinActive": 17, "HWLimitMaxActive": 18,
+    "Synchronizing": 21, "Synchronous": 22, "SuperimposedMotionCommand": 23, "PhasingCommand": 24,
+    "AxisSimulation": 25, "TorqueLimitingCommand": 26, "InLimitation": 27, "NonPositionControlled": 28,
+    "KinematicsMotionCommand": 29, "InClamping": 30, "MotionInCommand": 31})
+StatusWord2 = word_type("StatusWord2", {"StopCommand": 0})
+ErrorWord = word_type("ErrorWord", {
+    "SystemFault": 0, "ConfigFault": 1, "UserFault": 2, "CommandNotAccepted": 3, "DriveFault": 4,
+    "SensorFault": 5, "DynamicError": 6, "CommunicationFault": 7, "SWLimit": 8, "HWLimit": 9, "HomingError": 10,
+    "FollowingErrorFault": 11, "PositioningFault": 12, "PeripheralError": 13, "SynchronousError": 14,
+    "AdaptionError": 15})
+WarningWord = word_type("WarningWord", {
+    "SystemWarning": 0, "ConfigWarning": 1, "UserWarning": 2, "CommandNotAccepted": 3, "DriveWarning": 4,
+    "SensorWarning": 5, "DynamicWarning": 6, "CommunicationWarning": 7, "SWLimitMin": 8, "SWLimitMax": 9,
+    "HomingWarning": 10, "FollowingErrorWarning": 11, "PositioningWarning": 12, "PeripheralWarning": 13,
+    "SynchronousWarning": 14, "AdaptionWarning": 15})
+SyncStatusWord = word_type("StatusSynchronizedMotion.StatusWord", {
+    "MaxVelocityExceeded": 0, "MaxAccelerationExceeded": 1, "MaxDecelerationExceeded": 2, "InSimulation": 3,
+    "LeadingValueAdditiveCommand": 4})
+
+#: technology alarm number per kernel fault kind
+ALARM_NUMBERS = {
+    F.INTERNAL: 101, F.CONFIG: 401, F.DRIVE_NOT_READY: 201, F.DRIVE_ALARM: 202, F.ENCODER: 203,
+    F.SW_LIMIT_MIN: 533, F.SW_LIMIT_MAX: 533, F.SW_LIMIT_ORDER: 401, F.HW_LIMIT_MIN: 531, F.HW_LIMIT_MAX: 531,
+    F.HW_LIMIT_FREE: 531, F.FOLLOWING_ERROR: 521, F.POSITIONING: 541, F.REFERENCE_NOT_FOUND: 551,
+    F.HOMING_APPROACH_ZERO: 551, F.HOMING_REFERENCING_ZERO: 551, F.POSITION_RANGE: 552, F.DIRECTION: 401,
+    F.SYNC_MASTER: 601, F.LV_INVALID: 900,
+}
+#: ErrorDetail.Reaction: 0 none, 1 stop with current dynamics, 3 emergency stop ramp, 4 remove enable
+REACTION_CODES = {Reaction.NONE: 0, Reaction.STOP: 1, Reaction.EMERGENCY: 3, Reaction.REMOVE_ENABLE: 4}
+
+
+def _b(ax: "Axis"):
+    return ax.ctl.bank
+
+
+def _kind(ax: "Axis") -> JobKind | None:
+    job = ax.job
+    return job.kind if job is not None and job.busy else None
+
+
+def _kinds(ax: "Axis") -> set[str]:
+    return {a.kind for a in ax.alarms}
+
+
+def _fe_limit(ax: "Axis") -> float:
+    b, i = _b(ax), ax.index
+    speed = abs(float(b.sp_v[i]))
+    return min(float(b.fe_max[i]), float(b.fe_min[i]) + float(b.fe_slope[i]) * max(speed - float(b.fe_vmin[i]), 0.0))
+
+
+def _fe_warning(ax: "Axis") -> bool:
+    b, i = _b(ax), ax.index
+    if not b.fe_on[i]:
+        return False
+    level = ax.eff.get("FollowingError.WarningLevel", 100.0) / 100.0
+    return abs(float(b.fe[i])) > level * _fe_limit(ax)
+
+
+def status_word(ax: "Axis") -> int:
+    d = _DYN1200
+    kind = _kind(ax)
+    sync = getattr(ax, "coupling", None)
+    enabled = ax.state in ("enabled", "disabling")
+    moving_job = kind is not None or ax.superimposed_active or sync is not None or (
+        getattr(ax, "waiting", None) is not None)
+    bits = {
+        0: enabled,
+        1: bool(ax.alarms),
+        5: ax.homed,
+        6: not moving_job,
+        7: d["StatusBits.StandStill"](ax),
+        8: kind in (JobKind.ABSOLUTE, JobKind.RELATIVE),
+        9: kind == JobKind.JOG,
+        10: kind == JobKind.VELOCITY or ax.holding_zero_velocity,
+        11: kind == JobKind.HOME_ACTIVE or (ax.passive_home is not None and ax.passive_home.busy),
+        12: d["StatusBits.ConstantVelocity"](ax),
+        13: d["StatusBits.Accelerating"](ax),
+        14: d["StatusBits.Decelerating"](ax),
+        15: d["StatusBits.SWLimitMinActive"](ax),
+        16: d["StatusBits.SWLimitMaxActive"](ax),
+        17: ax.hw_approached["min"],
+        18: ax.hw_approached["max"],
+        21: bool(sync is not None and getattr(ax, "synchronizing", False)),
+        22: bool(sync is not None and getattr(ax, "synchronous", False)),
+        23: ax.superimposed_active,
+        24: bool(getattr(ax, "phasing_job", None) is not None and ax.phasing_job.busy),
+        25: ax.ueff["Simulation.Mode"] == 1,
+        28: ax.servo and enabled and not ax.position_controlled,
+    }
+    return StatusWord(pack(bits))
+
+
+def error_word(ax: "Axis") -> int:
+    k = _kinds(ax)
+    bits = {
+        0: F.INTERNAL in k,
+        1: bool(k & {F.CONFIG, F.HOMING_APPROACH_ZERO, F.HOMING_REFERENCING_ZERO, F.SW_LIMIT_ORDER}),
+        4: bool(k & {F.DRIVE_NOT_READY, F.DRIVE_ALARM}),
+        5: F.ENCODER in k,
+        7: any(a.kind == F.DRIVE_ALARM and a.detail in ("station", "sign_of_life") for a in ax.alarms),
+        8: bool(k & {F.SW_LIMIT_MIN, F.SW_LIMIT_MAX}),
+        9: bool(k & {F.HW_LIMIT_MIN, F.HW_LIMIT_MAX, F.HW_LIMIT_FREE}),
+        10: bool(k & {F.REFERENCE_NOT_FOUND, F.POSITION_RANGE}),
+        11: F.FOLLOWING_ERROR in k,
+        12: F.POSITIONING in k,
+        14: F.SYNC_MASTER in k,
+    }
+    return ErrorWord(pack(bits))
+
+
+def warning_word(ax: "Axis") -> int:
+    bits = {6: bool(ax.warnings), 11: _fe_warning(ax)}
+    return WarningWord(pack(bits))
+
+
+def sync_status_word(ax: "Axis") -> int:
+    b, i = _b(ax), ax.index
+    c = getattr(ax, "coupling", None)
+    e = ax.eff
+    exceeded = {}
+    if c is not None and c.applied:
+        v, a = float(b.sp_v[i]), float(b.sp_a[i])
+        exceeded = {0: abs(v) > e["DynamicLimits.MaxVelocity"] * (1 + 1e-9),
+                    1: a * v > 0 and abs(a) > e["DynamicLimits.MaxAcceleration"] * (1 + 1e-9),
+                    2: a * v < 0 and abs(a) > e["DynamicLimits.MaxDeceleration"] * (1 + 1e-9)}
+    bits = dict(exceeded)
+    bits[3] = c is not None and c.simulated
+    job = getattr(ax, "lv_additive_job", None)
+    bits[4] = job is not None and job.busy
+    return SyncStatusWord(pack(bits))
+
+
+def _coupling_value(ax: "Axis", name: str, default: float) -> float:
+    c = getattr(ax, "coupling", None)
+    if c is None or c.cam is None:
+        return default
+    return getattr(c, name)
+
+
+def _target(ax: "Axis") -> float:
+    job = ax.job
+    if job is not None and job.busy and job.kind in (JobKind.ABSOLUTE, JobKind.RELATIVE):
+        return ax._wrap(job.target)
+    return 0.0
+
+
+def _distance(ax: "Axis") -> float:
+    job = ax.job
+    if job is not None and job.busy and job.kind in (JobKind.ABSOLUTE, JobKind.RELATIVE):
+        return job.target - float(_b(ax).sp_p[ax.index])
+    return 0.0
+
+
+def _modulo_cycle(ax: "Axis", value: float) -> int:
+    if not ax.eff["Modulo.Enable"]:
+        return 0
+    return int(np.floor((value - ax.eff["Modulo.StartValue"]) / ax.eff["Modulo.Length"]))
+
+
+def _setpoint_execution_time(ax: "Axis") -> float:
+    """T_Ipo + (T_vtc with velocity precontrol, 1/Kv without) + send/output delays (none simulated)."""
+    e = ax.ueff
+    if e["PositionControl.Kpc"] > 0.0:
+        lag = e["DynamicAxisModel.VelocityTimeConstant"]
+    else:
+        lag = 1.0 / e["PositionControl.Kv"]
+    return ax.ctl.servo_cycle + lag
+
+
+DYNAMIC: dict[str, Callable[["Axis"], Any]] = {
+    "Position": _DYN1200["Position"],
+    "Velocity": _DYN1200["Velocity"],
+    "Acceleration": _DYN1200["Acceleration"],
+    "ActualPosition": _DYN1200["ActualPosition"],
+    "ActualVelocity": _DYN1200["ActualVelocity"],
+    "ActualAcceleration": lambda ax: float(_b(ax).sp_a[ax.index]) if not ax.servo else ax.actual_acceleration(),
+    "ActualSpeed": lambda ax: float(_b(ax).act_v[ax.index]) / ax.eff["Mechanics.LeadScrew"] * 60.0
+    if ax.servo else 0.0,
+    "VelocitySetpoint": lambda ax: float(_b(ax).cmd_v[ax.index]) if ax.servo else float(_b(ax).sp_v[ax.index]),
+    "OperativeSensor": lambda ax: 1,
+    "ModuloCycle": lambda ax: _modulo_cycle(ax, float(_b(ax).sp_p[ax.index])),
+    "ActualModuloCycle": lambda ax: _modulo_cycle(ax, float(_b(ax).act_p[ax.index])),
+    "StatusWord": status_word,
+    "StatusWord2": lambda ax: StatusWord2(pack({0: ax.stop_job is not None})),
+    "ErrorWord": error_word,
+    "WarningWord": warning_word,
+    "ErrorDetail.Number": lambda ax: ALARM_NUMBERS.get(ax.alarms[0].kind, 100) if ax.alarms else 0,
+    "ErrorDetail.Reaction": lambda ax: REACTION_CODES[ax.alarms[0].reaction] if ax.alarms else 0,
+    "StatusPositioning.Distance": _distance,
+    "StatusPositioning.TargetPosition": _target,
+    "StatusPositioning.TargetPositionModuloCycle": lambda ax: _modulo_cycle(ax, _target(ax)),
+    "StatusPositioning.FollowingError": lambda ax: float(_b(ax).fe[ax.index]) if ax.servo else 0.0,
+    "StatusPositioning.SetpointExecutionTime": _setpoint_execution_time,
+    "StatusDrive.InOperation": _DYN1200["StatusDrive.InOperation"],
+    "StatusDrive.CommunicationOK": _DYN1200["StatusDrive.CommunicationOK"],
+    "StatusDrive.Disabled": lambda ax: ax.state == "disabled",
+    "StatusDrive.Error": lambda ax: bool(_kinds(ax) & {F.DRIVE_ALARM, F.DRIVE_NOT_READY}),
+    "StatusDrive.AdaptionState": lambda ax: 3,
+    "StatusServo.BalancedPosition": lambda ax: float(_b(ax).sp_p[ax.index]),
+    "StatusServo.ControlDifference": lambda ax: float(_b(ax).fe[ax.index]) if ax.servo else 0.0,
+    "StatusSensor[1].State": lambda ax: 2 if (ax.sim or ax.sensor_valid) else 0,
+    "StatusSensor[1].CommunicationOK": _DYN1200["StatusSensor.CommunicationOK"],
+    "StatusSensor[1].Error": lambda ax: F.ENCODER in _kinds(ax),
+    "StatusSensor[1].AbsEncoderOffset": lambda ax: ax.abs_offset,
+    "StatusSensor[1].Control": lambda ax: True,
+    "StatusSensor[1].Position": _DYN1200["ActualPosition"],
+    "StatusSensor[1].Velocity": _DYN1200["ActualVelocity"],
+    "StatusSensor[1].AdaptionState": lambda ax: 3,
+    "StatusSensor[1].ModuloCycle": lambda ax: _modulo_cycle(ax, float(_b(ax).act_p[ax.index])),
+}
+
+#: the synchronous axis adds its synchronous operation status (§A.1.33)
+SYNC_DYNAMIC: dict[str, Callable[["Axis"], Any]] = dict(DYNAMIC)
+SYNC_DYNAMIC.update({
+    "StatusSynchronizedMotion.FunctionState": lambda ax: ax.function_state(),
+    "StatusSynchronizedMotion.WaitingFunctionState": lambda ax: ax.waiting_function_state(),
+    "StatusSynchronizedMotion.PhaseShift": lambda ax: ax.phase_shift(),
+    "StatusSynchronizedMotion.ActualMaster": lambda ax: ax.coupling.source.db_number if ax.coupling else 0,
+    "StatusSynchronizedMotion.ActualCam": lambda ax: ax.coupling.cam.db_number
+    if ax.coupling is not None and ax.coupling.cam is not None else 0,
+    "StatusSynchronizedMotion.MasterOffset": lambda ax: _coupling_value(ax, "master_offset", 0.0),
+    "StatusSynchronizedMotion.MasterScaling": lambda ax: _coupling_value(ax, "master_scaling", 1.0),
+    "StatusSynchronizedMotion.SlaveOffset": lambda ax: _coupling_value(ax, "slave_offset", 0.0),
+    "StatusSynchronizedMotion.SlaveScaling": lambda ax: _coupling_value(ax, "slave_scaling", 1.0),
+    "StatusSynchronizedMotion.EffectiveLeadingValue.Position": lambda ax: ax.effective_leading_value()[0],
+    "StatusSynchronizedMotion.EffectiveLeadingValue.Velocity": lambda ax: ax.effective_leading_value()[1],
+    "StatusSynchronizedMotion.EffectiveLeadingValue.Acceleration": lambda ax: ax.effective_leading_value()[2],
+    "StatusSynchronizedMotion.StatusWord": sync_status_word,
+})
+
+#: leading value tags every S7-1500 axis has (extrapolation, provided leading value)
+_LV_DYNAMIC: dict[str, Callable[["Axis"], Any]] = {
+    "StatusExtrapolation.FilteredPosition": lambda ax: ax.extrapolation_status()[0],
+    "StatusExtrapolation.FilteredVelocity": lambda ax: ax.extrapolation_status()[1],
+    "StatusExtrapolation.ExtrapolatedPosition": lambda ax: ax.extrapolation_status()[2],
+    "StatusExtrapolation.ExtrapolatedVelocity": lambda ax: ax.extrapolation_status()[3],
+    "Extrapolation.LeadingAxisDependentTime": lambda ax: ax.leading_axis_dependent_time(),
+    "StatusProvidedLeadingValue.DelayedLeadingValue.Position": lambda ax: ax.delayed_leading_value()[0],
+    "StatusProvidedLeadingValue.DelayedLeadingValue.Velocity": lambda ax: ax.delayed_leading_value()[1],
+    "StatusProvidedLeadingValue.DelayedLeadingValue.Acceleration": lambda ax: ax.delayed_leading_value()[2],
+}
+DYNAMIC.update(_LV_DYNAMIC)
+SYNC_DYNAMIC.update(_LV_DYNAMIC)
+
+_WORDS = ("StatusWord", "StatusWord2", "ErrorWord", "WarningWord", "StatusSynchronizedMotion.StatusWord")
+
+
+def _type(path: str) -> str:
+    if path in _WORDS:
+        return "DWord"
+    if path.endswith(("State", "FunctionState", "ModuloCycle", "Reaction")) and "Status" in path or path.endswith(
+            ("ModuloCycle", "Reaction")):
+        return "DInt"
+    if path in ("OperativeSensor", "ErrorDetail.Number"):
+        return "UDInt"
+    if path.endswith(("ActualMaster", "ActualCam")):
+        return "DB_ANY"
+    if path.startswith(("StatusDrive.", "StatusSensor[1].")) and path.rsplit(".", 1)[1] in (
+            "InOperation", "CommunicationOK", "Disabled", "Error", "Control"):
+        return "Bool"
+    return "LReal"
+
+
+TYPES = {p: _type(p) for p in DYNAMIC}
+SYNC_TYPES = {p: _type(p) for p in SYNC_DYNAMIC}
+GROUPS = ("StatusPositioning", "StatusDrive", "StatusServo", "ErrorDetail", "StatusExtrapolation",
+          "StatusProvidedLeadingValue")
+SYNC_GROUPS = GROUPS + ("StatusSynchronizedMotion",)

@@ -256,3 +256,131 @@ class ExecuteInstruction(Instruction):
         if "ErrorInfo" in self.OUTPUTS:
             values["ErrorInfo"] = error_info
         self._out(**values)
+
+
+class JogInstruction(Instruction):
+    """MC_MoveJog machinery: a jog job runs while JogForward or JogBackward is TRUE.
+
+    Velocity changes are taken over while a jog input is TRUE.  Both inputs TRUE brake the axis and end
+    in an error.  A dialect provides ``_jog_velocity`` (validated speed), ``_jog_both`` (ErrorID,
+    ErrorInfo) and ``_jog_job`` (the kernel job).
+    """
+
+    def _jog_velocity(self, axis: Any) -> float:
+        raise NotImplementedError  # pragma: no cover
+
+    def _jog_both(self) -> tuple[int, int]:
+        raise NotImplementedError  # pragma: no cover
+
+    def _jog_job(self, axis: Any, velocity: float, controlled: bool) -> Job:
+        raise NotImplementedError  # pragma: no cover
+
+    def _reinit(self) -> None:
+        super()._reinit()
+        for name, value in (("_prev_f", False), ("_prev_b", False), ("_job", None), ("_final", None),
+                            ("_latched", False), ("_shown", False), ("_busy_axis", None)):
+            object.__setattr__(self, name, value)
+
+    def _set_busy(self, busy: bool) -> None:
+        ExecuteInstruction._set_busy(self, busy)  # type: ignore[arg-type]
+
+    def _clear(self) -> None:
+        for name, default in self.OUTPUTS.items():
+            object.__setattr__(self, name, default)
+
+    def _fail(self, error_id: int, error_info: int, held: bool) -> None:
+        object.__setattr__(self, "_final", ("Error", error_id, error_info))
+        object.__setattr__(self, "_latched", held)
+        object.__setattr__(self, "_shown", False)
+        self._set_busy(False)
+
+    def _evaluate(self) -> None:
+        fwd = as_bool(self, "JogForward", self.JogForward)
+        bwd = as_bool(self, "JogBackward", self.JogBackward)
+        rise = (fwd and not self._prev_f) or (bwd and not self._prev_b)
+        object.__setattr__(self, "_prev_f", fwd)
+        object.__setattr__(self, "_prev_b", bwd)
+        held = fwd or bwd
+        job: Job | None = self._job
+        try:
+            axis = self._axis()
+        except InstructionError as err:
+            if rise:
+                self._clear()
+                self._fail(err.error_id, err.error_info, held)
+            self._update(held)
+            return
+        if fwd and bwd:
+            if job is not None and job.busy:
+                axis.release_jog(job)
+                object.__setattr__(self, "_job", None)
+                self._clear()
+                self._fail(*self._jog_both(), True)
+            elif rise:
+                self._clear()
+                self._fail(*self._jog_both(), True)
+        elif rise:
+            self._clear()
+            object.__setattr__(self, "_final", None)
+            object.__setattr__(self, "_job", None)
+            try:
+                v = self._jog_velocity(axis)
+                controlled = as_bool(self, "PositionControlled", self.PositionControlled)
+                new = self._jog_job(axis, v if fwd else -v, controlled)
+            except InstructionError as err:
+                self._fail(err.error_id, err.error_info, True)
+            else:
+                axis.submit(new)
+                object.__setattr__(self, "_job", new)
+        elif job is not None and job.busy and not job.jog_released:
+            if not held:
+                axis.release_jog(job)
+            else:
+                v = as_real(self.Velocity)
+                if v is not None and abs(v) != abs(job.velocity):
+                    try:
+                        v = self._jog_velocity(axis)
+                    except InstructionError as err:
+                        axis.release_jog(job)
+                        object.__setattr__(self, "_job", None)
+                        self._clear()
+                        self._fail(err.error_id, err.error_info, True)
+                    else:
+                        axis.change_jog_velocity(job, v if job.velocity > 0 else -v)
+        self._update(held)
+
+    def _update(self, held: bool) -> None:
+        job: Job | None = self._job
+        if job is not None and self._final is None:
+            if job.state == JobState.BUSY:
+                self._set_busy(True)
+                self._out(InVelocity=job.in_velocity)
+                return
+            object.__setattr__(self, "_job", None)
+            self._set_busy(False)
+            self._clear()
+            if job.state == JobState.DONE:
+                return
+            if job.state == JobState.ABORTED:
+                final = ("CommandAborted", 0, 0)
+            else:
+                assert job.fault is not None
+                final = ("Error", *self._fault_codes(job.fault))
+            object.__setattr__(self, "_final", final)
+            object.__setattr__(self, "_latched", held)
+            object.__setattr__(self, "_shown", False)
+        final = self._final
+        if final is None:
+            return
+        show = held if self._latched else not self._shown
+        if show:
+            self._clear()
+            output, error_id, error_info = final
+            values = {output: True, "ErrorID": error_id}
+            if "ErrorInfo" in self.OUTPUTS:
+                values["ErrorInfo"] = error_info
+            self._out(**values)
+            object.__setattr__(self, "_shown", True)
+        else:
+            self._clear()
+            object.__setattr__(self, "_final", None)

@@ -291,7 +291,7 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisT
             self.raise_alarm(F.alarm(kind, plan.limit_detail))
         elif job is not None and job.busy:
             if job.kind in (JobKind.VELOCITY, JobKind.JOG):
-                if job.velocity == 0.0 or job.jog_released:
+                if (job.velocity == 0.0 and not job.extra.get("hold_zero")) or job.jog_released:
                     job.in_velocity = True
                     # §11.1.7: after MC_MoveVelocity(0) ConstantVelocity is shown at standstill
                     self.holding_zero_velocity = job.kind == JobKind.VELOCITY

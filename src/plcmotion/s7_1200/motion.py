@@ -11,7 +11,8 @@ from typing import Any
 from ..kernel.axis import PositioningAxis
 from ..kernel.jobs import Job, JobKind, JobState
 from . import errors as E
-from .base import ExecuteInstruction, Instruction, InstructionError, as_bool, as_int, as_real
+from .. import fb
+from .base import ExecuteInstruction, Instruction, InstructionError, _S71200, as_bool, as_int, as_real
 from .homing import check_position
 
 
@@ -130,7 +131,7 @@ class MC_MoveVelocity(ExecuteInstruction):  # noqa: N801
         super()._show(output, error_id, error_info)
 
 
-class MC_MoveJog(Instruction):  # noqa: N801
+class MC_MoveJog(_S71200, fb.JogInstruction):  # noqa: N801
     """Jog while JogForward or JogBackward is TRUE (§11.1.8, status rules §9.5.4).
 
     Velocity changes are taken over while a jog input is TRUE.  Both inputs TRUE stop the axis with the
@@ -142,111 +143,11 @@ class MC_MoveJog(Instruction):  # noqa: N801
     OUTPUTS = {"InVelocity": False, "Busy": False, "CommandAborted": False, "Error": False, "ErrorID": 0,
                "ErrorInfo": 0}
 
-    def _reinit(self) -> None:
-        super()._reinit()
-        for name, value in (("_prev_f", False), ("_prev_b", False), ("_job", None), ("_final", None),
-                            ("_latched", False), ("_shown", False), ("_busy_axis", None)):
-            object.__setattr__(self, name, value)
+    def _jog_velocity(self, axis: PositioningAxis) -> float:
+        return check_velocity(axis, self.Velocity, zero_ok=axis.eff["DynamicLimits.MinVelocity"] == 0.0)
 
-    def _set_busy(self, busy: bool) -> None:
-        ExecuteInstruction._set_busy(self, busy)  # type: ignore[arg-type]
+    def _jog_both(self) -> tuple[int, int]:
+        return E.JOG_BOTH, 0x0001
 
-    def _clear(self) -> None:
-        for name, default in self.OUTPUTS.items():
-            object.__setattr__(self, name, default)
-
-    def _fail(self, error_id: int, error_info: int, held: bool) -> None:
-        object.__setattr__(self, "_final", ("Error", error_id, error_info))
-        object.__setattr__(self, "_latched", held)
-        object.__setattr__(self, "_shown", False)
-        self._set_busy(False)
-
-    def _evaluate(self) -> None:
-        fwd = as_bool(self, "JogForward", self.JogForward)
-        bwd = as_bool(self, "JogBackward", self.JogBackward)
-        rise = (fwd and not self._prev_f) or (bwd and not self._prev_b)
-        object.__setattr__(self, "_prev_f", fwd)
-        object.__setattr__(self, "_prev_b", bwd)
-        held = fwd or bwd
-        job: Job | None = self._job
-        try:
-            axis = self._axis()
-        except InstructionError as err:
-            if rise:
-                self._clear()
-                self._fail(err.error_id, err.error_info, held)
-            self._update(held)
-            return
-        if fwd and bwd:
-            if job is not None and job.busy:
-                axis.release_jog(job)
-                object.__setattr__(self, "_job", None)
-                self._clear()
-                self._fail(E.JOG_BOTH, 0x0001, True)
-            elif rise:
-                self._clear()
-                self._fail(E.JOG_BOTH, 0x0001, True)
-        elif rise:
-            self._clear()
-            object.__setattr__(self, "_final", None)
-            object.__setattr__(self, "_job", None)
-            try:
-                v = check_velocity(axis, self.Velocity, zero_ok=axis.eff["DynamicLimits.MinVelocity"] == 0.0)
-                controlled = as_bool(self, "PositionControlled", self.PositionControlled)
-            except InstructionError as err:
-                self._fail(err.error_id, err.error_info, True)
-            else:
-                new = Job(JobKind.JOG, velocity=v if fwd else -v, position_controlled=controlled or axis.pto,
-                          owner=self)
-                axis.submit(new)
-                object.__setattr__(self, "_job", new)
-        elif job is not None and job.busy and not job.jog_released:
-            if not held:
-                axis.release_jog(job)
-            else:
-                v = as_real(self.Velocity)
-                if v is not None and abs(v) != abs(job.velocity):
-                    try:
-                        v = check_velocity(axis, self.Velocity,
-                                           zero_ok=axis.eff["DynamicLimits.MinVelocity"] == 0.0)
-                    except InstructionError as err:
-                        axis.release_jog(job)
-                        object.__setattr__(self, "_job", None)
-                        self._clear()
-                        self._fail(err.error_id, err.error_info, True)
-                    else:
-                        axis.change_jog_velocity(job, v if job.velocity > 0 else -v)
-        self._update(held)
-
-    def _update(self, held: bool) -> None:
-        job: Job | None = self._job
-        if job is not None and self._final is None:
-            if job.state == JobState.BUSY:
-                self._set_busy(True)
-                self._out(InVelocity=job.in_velocity)
-                return
-            object.__setattr__(self, "_job", None)
-            self._set_busy(False)
-            self._clear()
-            if job.state == JobState.DONE:
-                return
-            if job.state == JobState.ABORTED:
-                final = ("CommandAborted", 0, 0)
-            else:
-                assert job.fault is not None
-                final = ("Error", *E.codes(job.fault))
-            object.__setattr__(self, "_final", final)
-            object.__setattr__(self, "_latched", held)
-            object.__setattr__(self, "_shown", False)
-        final = self._final
-        if final is None:
-            return
-        show = held if self._latched else not self._shown
-        if show:
-            self._clear()
-            output, error_id, error_info = final
-            self._out(**{output: True}, ErrorID=error_id, ErrorInfo=error_info)
-            object.__setattr__(self, "_shown", True)
-        else:
-            self._clear()
-            object.__setattr__(self, "_final", None)
+    def _jog_job(self, axis: PositioningAxis, velocity: float, controlled: bool) -> Job:
+        return Job(JobKind.JOG, velocity=velocity, position_controlled=controlled or axis.pto, owner=self)

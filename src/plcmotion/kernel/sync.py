@@ -430,7 +430,7 @@ class SyncStage:
         if lv.wait_idx.size:
             wi = lv.wait_idx
             s_now = (x[wi] - lv.wtrig) * lv.wdir
-            crossed = (s_now >= 0.0) & (lv.wprev < 0.0)
+            crossed = (s_now >= 0.0) & (lv.wprev <= 0.0)
             lv.wprev = s_now
             if crossed.any():
                 for k in np.flatnonzero(crossed):

@@ -246,9 +246,8 @@ class SynchronousMixin:
         x = job.extra
         spr = x["spr"]
         lv, lvv, _ = self._lv_now(c.source, c.mode, t)
-        d = -1.0 if lvv < -_EPS else 1.0
-        c.direction = d
         modulo = c.source.lv_modulo()
+        c.direction = d = self._travel_direction(job, lv, lvv, modulo)
         if job.kind == JobKind.GEAR_IN_POS:
             c.law = GEAR
             c.ratio = x["ratio"]
@@ -273,8 +272,30 @@ class SynchronousMixin:
             self._override(O.SYNC_ACTIVE, t, job)
             self._activate_blend(c, t, lv + d * length, sync_offset_ref=None)
             return
-        # the occurrence of the synchronous position ahead in the direction of travel
+        x["sync_raw"] = sync
+        c.extra["base_master_offset"] = c.master_offset
+        c.extra["direction_guessed"] = abs(lvv) <= 1e-9 and modulo is not None
+        if not self._place(c, lv, d):
+            job.finish(JobState.ERROR, F.reject(F.START_DISTANCE))
+            return
+        c.waiting = True
+        c.poll = spr == 0 or c.extra["direction_guessed"] or (
+            c.mode == "setpoint" and not c.source.lv_position_controlled())
+        if spr == 0:
+            c.extra["armed"] = False
+        self._set_waiting(c, t)
+
+    def _place(self: "Axis", c: Coupling, lv: float, d: float) -> bool:
+        """Unwrapped start and synchronous positions ahead of the leading value in direction ``d``."""
+        x = c.job.extra
+        spr = x["spr"]
+        length = x["start_distance"]
+        sync = x["sync_raw"]
+        c.direction = d
+        if c.law == CAM:
+            c.master_offset = c.extra["base_master_offset"]
         start = sync - d * length if spr == 1 else sync
+        modulo = c.source.lv_modulo()
         if modulo is not None:
             m_len = modulo[1]
             k = math.ceil(((lv - start) * d) / m_len - 1e-12) if (start - lv) * d < 0 else 0
@@ -284,19 +305,29 @@ class SynchronousMixin:
             if c.law == CAM:
                 c.master_offset += shift
         elif spr == 1 and (sync - lv) * d < length * (1 - 1e-12):
-            job.finish(JobState.ERROR, F.reject(F.START_DISTANCE))
-            return
+            return False
         x["sync_u"] = sync
         x["start_u"] = start
         if c.law == GEAR:
             c.offset = x["slave_sync"] - c.ratio * sync
-        c.waiting = True
         c.trigger = start
-        c.extra["wprev"] = (lv - start) * d if (lv - start) * d < 0 else math.nan
-        c.poll = spr == 0 or (c.mode == "setpoint" and not c.source.lv_position_controlled())
-        if spr == 0:
-            c.extra["armed"] = False
-        self._set_waiting(c, t)
+        # the start must be crossed (or reached) in direction d; a leading value already past it waits
+        c.extra["wprev"] = (lv - start) * d if (lv - start) * d <= 0 else math.nan
+        return True
+
+    def _travel_direction(self: "Axis", job: Job, lv: float, lvv: float, modulo) -> float:
+        """Direction in which the leading value is expected to travel (catalog §11.2 item 3).
+
+        The direction of a moving leading axis; at standstill the direction towards the synchronous
+        position (positive on a modulo axis, where every position lies ahead)."""
+        if abs(lvv) > 1e-9:
+            return 1.0 if lvv > 0 else -1.0
+        x = job.extra
+        if job.kind == JobKind.GEAR_IN_POS and modulo is None and x["spr"] in (0, 1, 3):
+            gap = x["master_sync"] - lv
+            if abs(gap) > 1e-12:
+                return 1.0 if gap > 0 else -1.0
+        return 1.0
 
     def _set_waiting(self: "Axis", c: Coupling, t: float) -> None:
         """A new waiting job replaces a waiting one (§9.3.2); the active synchronous operation goes on."""
@@ -327,11 +358,19 @@ class SynchronousMixin:
             self._activate_gear_in(c, t)
             return
         spr = c.job.extra["spr"]
+        x, xv, xa = self._lv_now(c.source, c.mode, t)
+        if c.extra.get("direction_guessed"):
+            if abs(xv) <= 1e-9:
+                return                          # direction still unknown: wait for the leading axis to move
+            c.extra["direction_guessed"] = False
+            d = 1.0 if xv > 0 else -1.0
+            if d != c.direction:
+                self._place(c, x, d)
+                self.ctl.sync.changed()
         if spr != 0:
             c.poll = False                      # from now on the vectorised trigger watches the start
             self.ctl.sync.changed()
             return
-        x, xv, xa = self._lv_now(c.source, c.mode, t)
         d = c.direction
         remaining = (c.job.extra["sync_u"] - x) * d
         speed = xv * d

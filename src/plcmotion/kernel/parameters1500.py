@@ -45,8 +45,10 @@ _PARAMS_1500: list[Param] = [
     Param("Actor.Interface.EnableDriveOutputAddress", ADDR, "", R, (), choices=("Q",)),
     Param("Actor.Interface.DriveReadyInput", BOOL, False, R, doc="analog drive: ready input used"),
     Param("Actor.Interface.DriveReadyInputAddress", ADDR, "", R, (), choices=("I",)),
-    Param("Actor.DriveParameter.ReferenceSpeed", REAL, 3000.0, R, (), 0.0, E12, lo_open=True),
-    Param("Actor.DriveParameter.MaxSpeed", REAL, 3000.0, R, (), 0.0, E12, lo_open=True),
+    Param("Actor.DriveParameter.ReferenceSpeed", REAL, 6000.0, R, (), 0.0, E12, lo_open=True,
+          doc="motor speed [1/min] of 100 % speed setpoint"),
+    Param("Actor.DriveParameter.MaxSpeed", REAL, 6000.0, R, (), 0.0, E12, lo_open=True,
+          doc="maximum motor speed [1/min]: the only limit of a synchronized following axis"),
     Param("Actor.DriveParameter.ReferenceTorque", REAL, 1.0, R, (), 0.0, E12),
     # --- encoder Sensor[1] §A.1.8 ---------------------------------------------------------------------
     Param(f"{_S}.Type", INT, 0, R, (), choices=(0, 1, 2), doc="0 incremental, 1 absolute, 2 cyclic absolute"),

@@ -24,9 +24,11 @@ if TYPE_CHECKING:  # pragma: no cover
 
 
 def _pt1(y: float, x: float, dt: float, T: float) -> float:
+    """First-order lag, discretized so that it lags a ramp by exactly T (the time the extrapolation
+    adds back)."""
     if T <= 0.0:
         return x
-    return y + (1.0 - math.exp(-dt / T)) * (x - y)
+    return y + dt / (T + dt) * (x - y)
 
 
 class Extrapolator:
@@ -191,6 +193,28 @@ class LeadingValueMixin:
 
     def local_delay_time(self: "PositioningAxis1500") -> float:
         return self.eff.get("CrossPlcSynchronousOperation.LocalLeadingValueDelayTime", 0.0)
+
+    def provide_leading_value(self: "PositioningAxis1500", sink) -> None:
+        """Send this axis's leading value to another controller every servo cycle (cross-PLC, §8):
+        needs ``CrossPlcSynchronousOperation.Interface[1].EnableLeadingValueOutput`` = TRUE."""
+        if not self.eff.get("CrossPlcSynchronousOperation.Interface[1].EnableLeadingValueOutput"):
+            raise ValueError(f"{self.name}: set CrossPlcSynchronousOperation.Interface[1].EnableLeadingValueOutput "
+                             f"to provide a cross-PLC leading value")
+        from .leading_value import LeadingValueSample
+        ctl = self.ctl
+        counter = [0]
+
+        def send(t: float) -> None:
+            b, i = ctl.bank, self.index
+            e = self.eff
+            counter[0] += 1
+            sink.send(LeadingValueSample(
+                t, float(b.sp_p[i]), float(b.sp_v[i]), float(b.sp_a[i]),
+                valid=self.state in ("enabled", "disabling") and self._blocking_alarm() is None,
+                tracking=self.servo and not b.closed_loop[i],
+                modulo_length=e["Modulo.Length"] if e["Modulo.Enable"] else 0.0,
+                modulo_start=e["Modulo.StartValue"], sequence=counter[0]))
+        ctl.sync.register_post(send)
 
     # --- tags -------------------------------------------------------------------------------------------
     def leading_axis_dependent_time(self: "PositioningAxis1500") -> float:

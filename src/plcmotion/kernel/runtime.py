@@ -91,6 +91,7 @@ class Controller:
         self._db_counter = 0
         self._deferred: list[Callable[[float], None]] = []
         self.sync = SyncStage(self)                 # leading value couplings (synchronous axes)
+        self._encoders: list[Any] = []              # external encoders: measured every servo cycle
         self._by_index: list[PositioningAxis] = []
         self._groups: dict[str, DriveGroup] = {}
         self._group_list: list[DriveGroup] = []
@@ -148,6 +149,34 @@ class Controller:
         self._need_1500("a synchronous axis")
         from .axis1500 import SynchronousAxis
         return self._add_axis(SynchronousAxis, name, params, source, leading_values=leading_values)
+
+    def add_external_encoder(self, name: str, params: Mapping[str, Any] | None = None, *,
+                             source: str | None = None):
+        """Create an external encoder (S7-1500T): a leading value source with actual values; the measured
+        machine moves with ``Plant.Velocity`` (see :class:`~plcmotion.kernel.external_encoder.ExternalEncoder`)."""
+        self._need_1500("an external encoder", t_only=True)
+        from .external_encoder import ENCODER_SCHEMA, ExternalEncoder
+        self._check_name(name)
+        cfg, issues = ENCODER_SCHEMA.validate(P.flatten(params or {}))
+        if issues:
+            raise ConfigurationError(source or f"external encoder {name}", issues)
+        enc = ExternalEncoder(self, name, cfg)
+        self.objects[name] = enc
+        return enc
+
+    def add_leading_axis_proxy(self, name: str, params: Mapping[str, Any] | None = None, *,
+                               source_link: Any = None, source: str | None = None):
+        """Create a leading axis proxy (S7-1500T) that takes the leading value of an axis of another
+        controller from ``source_link`` (a transport, see ``plcmotion.crossplc``)."""
+        self._need_1500("a leading axis proxy", t_only=True)
+        from .proxy import PROXY_SCHEMA, LeadingAxisProxy
+        self._check_name(name)
+        cfg, issues = PROXY_SCHEMA.validate(P.flatten(params or {}))
+        if issues:
+            raise ConfigurationError(source or f"leading axis proxy {name}", issues)
+        proxy = LeadingAxisProxy(self, name, cfg, source_link)
+        self.objects[name] = proxy
+        return proxy
 
     def _need_1500(self, what: str, t_only: bool = False) -> None:
         if self.family == "S7-1200" or (t_only and not self.family_t):
@@ -345,6 +374,8 @@ class Controller:
         dt = self.servo_cycle
         for g in self._group_list:
             g.read(b, t, dt)
+        for enc in self._encoders:
+            enc.read(t, dt)
         self.inputs.begin_cycle(t)
         if self.plant.items:
             self.plant.update(t)

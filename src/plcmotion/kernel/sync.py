@@ -159,10 +159,10 @@ class _Level:
         self.couplings = couplings
         n = len(couplings)
         self.fidx = np.array([c.follower.index for c in couplings], dtype=np.int64)
-        self.use_ext = np.array([c.mode != "setpoint" for c in couplings], dtype=bool)
-        self.src_axis = np.array([c.source.index if c.mode == "setpoint" else 0 for c in couplings], dtype=np.int64)
-        self.src_ext = np.array([c.extra.get("ext_slot", 0) if c.mode != "setpoint" else 0 for c in couplings],
-                                dtype=np.int64)
+        # setpoints of axes come from the bank; everything else (actual, delayed, proxy values) from a slot
+        self.use_ext = np.array(["ext_slot" in c.extra for c in couplings], dtype=bool)
+        self.src_axis = np.array([0 if "ext_slot" in c.extra else c.source.index for c in couplings], dtype=np.int64)
+        self.src_ext = np.array([c.extra.get("ext_slot", 0) for c in couplings], dtype=np.int64)
         self.any_ext = bool(self.use_ext.any())
         self.add = np.zeros((3, n))
         self.ph = np.zeros((5, n))            # phase segment: t, p, v, a, j
@@ -283,7 +283,7 @@ class SyncStage:
             if key in stack:
                 raise CouplingCycle(f"{c.follower.name} would follow its own leading value")
             lvl = 1
-            if c.mode == "setpoint":
+            if "ext_slot" not in c.extra:
                 up = by_follower.get(id(c.source))
                 if up is not None:
                     lvl = level(up, stack + (key,)) + 1

@@ -105,9 +105,9 @@ class SynchronousMixin:
             return F.reject(F.SYNC_MASTER, str(name))
         if master is self:
             return F.reject(F.COUPLING_CYCLE, "self")
-        if mode != "setpoint" and not getattr(master, "provides_actual_values", False):
+        if mode == "actual" and not getattr(master, "provides_actual_values", False):
             return F.reject(F.LV_NOT_READY, "no_actual_values")
-        if mode == "setpoint" and not getattr(master, "provides_setpoints", False):
+        if mode != "actual" and not getattr(master, "provides_setpoints", False):
             return F.reject(F.LV_NOT_READY, "no_setpoints")
         if mode != "setpoint" and not self.ctl.family_t:
             return F.reject(F.NOT_AVAILABLE, "actual_value_coupling")
@@ -167,7 +167,7 @@ class SynchronousMixin:
                 job.finish(JobState.ERROR, fault)
                 return
         c = Coupling(self, source, job, mode)
-        if mode != "setpoint":
+        if mode != "setpoint" or getattr(source, "index", None) is None:
             c.extra["ext_slot"] = source.lv_slot(mode)
         if job.kind == JobKind.GEAR_IN:
             self._start_gear_in(c, t)

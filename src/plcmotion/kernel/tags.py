@@ -242,6 +242,9 @@ class _ConfigView:
     def __getattr__(self, name: str) -> Any:
         node = self._tree.get(name)
         if node is None:
+            getter = self._axis._dynamic.get(f"{self._prefix}.{name}")
+            if getter is not None:                  # a read-only tag inside a configuration structure
+                return getter(self._axis)
             raise AttributeError(_unknown(self._axis, f"{self._prefix}.{name}"))
         if isinstance(node, dict):
             return _ConfigView(self._axis, f"{self._prefix}.{name}", node)
@@ -305,27 +308,6 @@ class AxisTagsMixin:
     _dynamic_aliases: dict[str, str] = _DYNAMIC_ALIASES
     _status_groups: tuple[str, ...] = _STATUS_GROUPS
     _read_param_tags: frozenset[str] = READ_PARAM_TAGS
-
-    @property
-    def Position(self) -> float:  # noqa: N802 - manual tag names
-        return self._dynamic["Position"](self)
-
-    @property
-    def Velocity(self) -> float:  # noqa: N802
-        return self._dynamic["Velocity"](self)
-
-    @property
-    def Acceleration(self) -> float:  # noqa: N802
-        """Setpoint acceleration (not a tag of the S7-1200 TO; the S7-1500 name, for traces)."""
-        return self._dynamic["Acceleration"](self)
-
-    @property
-    def ActualPosition(self) -> float:  # noqa: N802
-        return self._dynamic["ActualPosition"](self)
-
-    @property
-    def ActualVelocity(self) -> float:  # noqa: N802
-        return self._dynamic["ActualVelocity"](self)
 
     @property
     def Sensor(self) -> _SensorArray:  # noqa: N802

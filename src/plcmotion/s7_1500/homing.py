@@ -10,6 +10,8 @@ from __future__ import annotations
 
 from typing import Any
 
+from ..kernel.axis1500 import PositioningAxis1500
+from ..kernel.external_encoder import ExternalEncoder
 from ..kernel.jobs import Job, JobKind, JobState
 from . import errors as E
 from .base import ExecuteInstruction, InstructionError, as_int, real
@@ -21,10 +23,11 @@ class MC_Home(ExecuteInstruction):  # noqa: N801
     INPUTS = {"Axis": None, "Execute": False, "Position": 0.0, "Mode": 0}
     OUTPUTS = {"Done": False, "Busy": False, "CommandAborted": False, "Error": False, "ErrorID": 0,
                "ReferenceMarkPosition": 0.0}
+    AXIS_TYPES = (PositioningAxis1500, ExternalEncoder)
 
     def _start(self, axis: Any) -> Job:
         mode = as_int(self.Mode)
-        if mode not in MODES:
+        if mode not in MODES or (isinstance(axis, ExternalEncoder) and mode not in (0, 1, 6, 7)):
             raise InstructionError(E.parameter("Mode"))
         position = real("Position", self.Position)
         if mode in (5, 10):

@@ -3,6 +3,8 @@ from __future__ import annotations
 
 from typing import Any, ClassVar
 
+from ..kernel.axis1500 import PositioningAxis1500
+from ..kernel.external_encoder import ExternalEncoder
 from ..kernel.jobs import Job, JobKind, JobState
 from . import errors as E
 from .base import ExecuteInstruction, Instruction, InstructionError, as_bool, as_int
@@ -20,6 +22,7 @@ class MC_Power(Instruction):  # noqa: N801 - instruction name of the manual
 
     INPUTS = {"Axis": None, "Enable": False, "StartMode": 1, "StopMode": 0}
     OUTPUTS = {"Status": False, "Busy": False, "Error": False, "ErrorID": 0}
+    AXIS_TYPES: ClassVar[tuple[type, ...]] = (PositioningAxis1500, ExternalEncoder)
 
     def _reinit(self) -> None:
         super()._reinit()

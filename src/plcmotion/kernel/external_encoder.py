@@ -1,0 +1,315 @@
+"""External encoder technology object (TO_ExternalEncoder, S7-1500T V5 §3.3, §6.1.5.8, §A.1.10).
+
+An encoder with no drive: it measures a machine (a conveyor, a printing cylinder driven by another
+machine) and offers its extrapolated actual value as leading value ("actual value coupling", S7-1500T).
+The measured machine is simulated: it moves with ``Plant.Velocity`` (changeable at run time with
+:meth:`ExternalEncoder.set_plant_velocity`) or follows a function of time given to
+:meth:`ExternalEncoder.drive_plant`; ``Plant.PositionNoise`` adds reproducible measuring noise.  The
+encoder counts whole increments of its resolution, like the encoder of an axis.
+"""
+from __future__ import annotations
+
+import math
+import zlib
+from typing import TYPE_CHECKING, Any, Callable, Mapping
+
+import numpy as np
+
+from . import faults as F
+from .axis import TagAccessError
+from .faults import Fault, Reaction
+from .jobs import Job, JobState
+from .leading import Extrapolator
+from .parameters import E12, P, R, REAL, AxisSchema, Param
+from .parameters1500 import _PARAMS_1500, canonical
+from .tags import AxisTagsMixin
+from .tags1500 import ALARM_NUMBERS, REACTION_CODES, ErrorWord, WarningWord
+from .words import pack, word_type
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .runtime import Controller
+
+_PREFIXES = ("Sensor[1].Type", "Sensor[1].InverseDirection", "Sensor[1].System", "Sensor[1].Parameter.",
+             "Properties.", "Units.LengthUnit", "Units.VelocityUnit", "Modulo.", "Extrapolation.",
+             "CrossPlcSynchronousOperation.", "LoadGear.", "Mechanics.")
+_PARAMS = [p for p in _PARAMS_1500 if p.path.startswith(_PREFIXES)] + [
+    Param("Plant.InitialPosition", REAL, 0.0, P, (), -E12, E12, doc="position of the measured machine at start"),
+    Param("Plant.Velocity", REAL, 0.0, P, (), -E12, E12, doc="velocity of the measured machine"),
+    Param("Plant.PositionNoise", REAL, 0.0, P, (), 0.0, E12,
+          doc="standard deviation of reproducible measuring noise on the position"),
+]
+
+ENCODER_SCHEMA = AxisSchema("external encoder", _PARAMS, canonical=canonical)
+
+EncoderStatusWord = word_type("StatusWord", {"Enable": 0, "Error": 1, "RestartActive": 2,
+                                             "OnlineStartValuesChanged": 3, "HomingDone": 5})
+
+
+def _status_word(enc: "ExternalEncoder") -> int:
+    return EncoderStatusWord(pack({0: enc.state == "enabled", 1: bool(enc.alarms), 5: enc.homed}))
+
+
+DYNAMIC: dict[str, Callable[["ExternalEncoder"], Any]] = {
+    "ActualPosition": lambda e: e._wrap(e.position),
+    "ActualVelocity": lambda e: e.velocity,
+    "ActualAcceleration": lambda e: e.acceleration,
+    "ActualModuloCycle": lambda e: e.modulo_cycle(),
+    "OperativeSensor": lambda e: 1,
+    "StatusWord": _status_word,
+    "ErrorWord": lambda e: ErrorWord(pack({5: any(a.kind == F.ENCODER for a in e.alarms),
+                                           0: any(a.kind == F.INTERNAL for a in e.alarms)})),
+    "WarningWord": lambda e: WarningWord(0),
+    "ErrorDetail.Number": lambda e: ALARM_NUMBERS.get(e.alarms[0].kind, 100) if e.alarms else 0,
+    "ErrorDetail.Reaction": lambda e: REACTION_CODES[e.alarms[0].reaction] if e.alarms else 0,
+    "StatusSensor[1].State": lambda e: 2 if e.state == "enabled" else 0,
+    "StatusSensor[1].Control": lambda e: e.state == "enabled",
+    "StatusSensor[1].Position": lambda e: e._wrap(e.position),
+    "StatusSensor[1].Velocity": lambda e: e.velocity,
+    "StatusExtrapolation.FilteredPosition": lambda e: e.extrapolation_status()[0],
+    "StatusExtrapolation.FilteredVelocity": lambda e: e.extrapolation_status()[1],
+    "StatusExtrapolation.ExtrapolatedPosition": lambda e: e.extrapolation_status()[2],
+    "StatusExtrapolation.ExtrapolatedVelocity": lambda e: e.extrapolation_status()[3],
+    "Extrapolation.LeadingAxisDependentTime": lambda e: e.leading_axis_dependent_time(),
+}
+
+
+class ExternalEncoder(AxisTagsMixin):
+    """External encoder technology object: a leading value source with actual values only."""
+
+    kind = "TO_ExternalEncoder"
+    family = "S7-1500"
+    schema = ENCODER_SCHEMA
+    _dynamic = DYNAMIC
+    _dynamic_types = {p: "LReal" for p in DYNAMIC}
+    _dynamic_aliases: dict[str, str] = {}
+    _status_groups = ("StatusSensor", "StatusExtrapolation", "ErrorDetail")
+    _read_param_tags = frozenset(DYNAMIC)
+    provides_setpoints = False
+    provides_actual_values = True
+
+    def __init__(self, ctl: "Controller", name: str, cfg: Mapping[str, Any]):
+        self.ctl = ctl
+        self.name = name
+        self.db_number = ctl._next_db_number()
+        self.cfg = dict(cfg)
+        self.load_cfg = dict(cfg)
+        self.eff = self.cfg
+        self.state = "disabled"
+        self.power_owner: Any = None
+        self.homed = cfg["Sensor[1].Type"] in (1, 2)
+        self.alarms: list[Fault] = []
+        self.busy_commands: set[int] = set()
+        self.passive_home = None
+        self._plant_fn: Callable[[float], float] | None = None
+        self._reset_plant()
+        self._extrapolator: Extrapolator | None = None
+        self._slots: dict[str, int] = {}
+        ctl._encoders.append(self)
+
+    def __repr__(self) -> str:
+        return f"<ExternalEncoder {self.name} {self.state}>"
+
+    # --- the measured machine ----------------------------------------------------------------------------
+    def _reset_plant(self) -> None:
+        e = self.cfg
+        self.plant_position = e["Plant.InitialPosition"]
+        self.plant_velocity = e["Plant.Velocity"]
+        self._rng = np.random.default_rng(zlib.crc32(self.name.encode()))
+        self.offset = 0.0                 # homing offset of the actual value
+        self.position = self.velocity = self.acceleration = 0.0
+        self._last: float | None = None
+
+    def set_plant_velocity(self, velocity: float) -> None:
+        """Let the measured machine move at ``velocity`` from now on."""
+        self._plant_fn = None
+        self.plant_velocity = float(velocity)
+
+    def drive_plant(self, position_of_time: Callable[[float], float] | None) -> None:
+        """Let the measured machine follow ``position_of_time(t)`` (None: constant velocity again)."""
+        self._plant_fn = position_of_time
+
+    def increment(self) -> float:
+        e = self.eff
+        fine = 2 ** e["Sensor[1].Parameter.FineResolutionXist1"]
+        if e["Sensor[1].System"] == 1:
+            return e["Sensor[1].Parameter.DistancePerRevolution"] / (e["Sensor[1].Parameter.StepsPerRevolution"] * fine)
+        return e["Sensor[1].Parameter.Resolution"] / fine
+
+    def read(self, t: float, dt: float) -> None:
+        """One servo cycle: the machine moves, the encoder counts (called by the controller)."""
+        # the encoder value of this cycle was sampled at the start of the previous one (T_i, §3.3.6)
+        x = self.plant_position
+        if self._plant_fn is not None:
+            self.plant_position = float(self._plant_fn(t))
+        else:
+            self.plant_position += self.plant_velocity * dt
+        if self.state != "enabled":
+            return
+        noise = self.eff["Plant.PositionNoise"]
+        if noise > 0.0:
+            x += float(self._rng.normal(0.0, noise))
+        q = self.increment()
+        sign = -1.0 if self.eff["Sensor[1].InverseDirection"] else 1.0
+        measured = math.floor(sign * x / q) * q + self.offset
+        prev_v = self.velocity
+        self.velocity = (measured - self._last) / dt if self._last is not None else 0.0
+        self.acceleration = (self.velocity - prev_v) / dt if self._last is not None else 0.0
+        self.position = measured
+        self._last = measured
+
+    # --- enable, acknowledge, restart (MC_Power, MC_Reset) -----------------------------------------------
+    def power(self, owner: Any, enable: bool, start_mode: int, stop_mode: int) -> Fault | None:
+        if self.power_owner is not None and self.power_owner is not owner:
+            return F.reject(F.ALREADY_ENABLED) if enable else None
+        if enable:
+            if self.ctl.mode != "RUN":
+                return F.reject(F.REJECTED, "starting_up")
+            self.power_owner = owner
+            if self.state == "disabled" and not self.alarms:
+                self.state = "enabled"
+                self._last = None
+                self.read(self.ctl.time, self.ctl.servo_cycle)
+        elif self.power_owner is owner:
+            self.state = "disabled"
+            self.power_owner = None
+        return None
+
+    def _blocking_alarm(self) -> Fault | None:
+        return self.alarms[0] if self.alarms else None
+
+    def acknowledge(self) -> Fault | None:
+        self.alarms.clear()
+        return None
+
+    def restart(self) -> Fault | None:
+        if self.state != "disabled" or self.power_owner is not None:
+            return F.reject(F.RESTART_IMPOSSIBLE, "enabled")
+        self.reinitialize("restart")
+        return None
+
+    def reinitialize(self, reason: str) -> None:
+        self.state = "disabled"
+        self.power_owner = None
+        self.cfg = dict(self.load_cfg)
+        self.eff = self.cfg
+        self.alarms.clear()
+        self.homed = self.cfg["Sensor[1].Type"] in (1, 2)
+        pos = self.plant_position
+        self._reset_plant()
+        self.plant_position = pos            # the machine keeps where it is
+
+    def raise_alarm(self, fault: Fault, job: Job | None = None) -> None:
+        if fault not in self.alarms:
+            self.alarms.append(fault)
+        if fault.reaction == Reaction.REMOVE_ENABLE:
+            self.state = "disabled"
+
+    def inject_fault(self, detail: str = "") -> None:
+        """Let the encoder fail (encoder error, the actual values are invalid until MC_Reset)."""
+        self.raise_alarm(F.alarm(F.ENCODER, detail, Reaction.REMOVE_ENABLE))
+
+    # --- homing (MC_Home Mode 0/1: set or shift the actual value) ----------------------------------------
+    def absolute_encoder(self) -> bool:
+        return self.cfg["Sensor[1].Type"] in (1, 2)
+
+    def home_direct(self, job: Job) -> None:
+        if self.state != "enabled":
+            job.finish(JobState.ERROR, F.reject(F.NOT_ENABLED))
+            return
+        here = self.position
+        target = self._wrap(job.position) if job.mode in (0, 7) else here + job.position
+        delta = target - here
+        self.offset += delta
+        self.position += delta
+        if self._last is not None:
+            self._last += delta
+        if self._extrapolator is not None:
+            self._extrapolator.ready = False          # restart the filters at the new coordinates
+        self.homed = True
+        job.reference_position = self._wrap(target)
+        job.finish(JobState.DONE)
+
+    # --- tags -------------------------------------------------------------------------------------------
+    def write_tag(self, path: str, value: Any, *, via_write_param: bool = False) -> None:
+        path = self.schema.canonical(path)
+        param = self.schema.params.get(path)
+        if param is None or param.access != "RW":
+            raise TagAccessError(f"{self.name}.{path} is not a writable tag of the external encoder")
+        reason, norm = param.check(value)
+        if reason is not None:
+            raise ValueError(f"{self.name}.{path} = {value!r}: allowed {param.allowed()}")
+        self.cfg[path] = norm
+
+    def _wrap(self, value: float) -> float:
+        e = self.eff
+        if not e["Modulo.Enable"]:
+            return value
+        from .motion import wrap
+        return wrap(value, e["Modulo.StartValue"], e["Modulo.Length"])
+
+    def modulo_cycle(self) -> int:
+        e = self.eff
+        if not e["Modulo.Enable"]:
+            return 0
+        return int(math.floor((self.position - e["Modulo.StartValue"]) / e["Modulo.Length"]))
+
+    # --- leading value source ------------------------------------------------------------------------------
+    def actual_values(self) -> tuple[float, float]:
+        return self.position, self.velocity
+
+    @property
+    def sim(self) -> bool:
+        return False
+
+    def lv_position_controlled(self) -> bool:
+        """Actual value coupling needs valid actual values (§3.3.5)."""
+        return self.state == "enabled" and not self.alarms
+
+    def lv_modulo(self) -> tuple[float, float] | None:
+        e = self.eff
+        return (e["Modulo.StartValue"], e["Modulo.Length"]) if e["Modulo.Enable"] else None
+
+    def lv_value(self, mode: str, t: float) -> tuple[float, float, float]:
+        ex = self._ensure_extrapolator()
+        dt = t - self.ctl._bank_time
+        return ex.position + ex.velocity * max(dt, 0.0), ex.velocity, 0.0
+
+    def lv_slot(self, mode: str) -> int:
+        slot = self._slots.get(mode)
+        if slot is None:
+            ex = self._ensure_extrapolator()
+            slot = self.ctl.sync.register_ext(lambda t, ex=ex: (ex.position, ex.velocity, 0.0))
+            self._slots[mode] = slot
+        return slot
+
+    def _ensure_extrapolator(self) -> Extrapolator:
+        if self._extrapolator is None:
+            ex = Extrapolator(self)
+            ex.step(self.ctl.time, self.ctl.servo_cycle)
+            self._extrapolator = ex
+            dt = self.ctl.servo_cycle
+            self.ctl.sync.register_ext(lambda t, ex=ex: ex.step(t, dt))
+        return self._extrapolator
+
+    def local_delay_time(self) -> float:
+        return self.eff["CrossPlcSynchronousOperation.LocalLeadingValueDelayTime"]
+
+    def leading_axis_dependent_time(self) -> float:
+        e = self.eff
+        return 2 * self.ctl.servo_cycle + e["Extrapolation.PositionFilter.T1"] + e["Extrapolation.PositionFilter.T2"]
+
+    def extrapolation_time(self) -> float:
+        e = self.eff
+        t = e["Extrapolation.FollowingAxisDependentTime"] + self.local_delay_time()
+        if e["Extrapolation.Settings.SystemDefinedExtrapolation"] == 1:
+            t += self.leading_axis_dependent_time()
+        return t
+
+    def extrapolation_status(self) -> tuple[float, float, float, float]:
+        ex = self._extrapolator
+        if ex is None:
+            return 0.0, 0.0, 0.0, 0.0
+        return ex.filtered_position, ex.filtered_velocity, ex.position, ex.velocity
+
+
+__all__ = ["ExternalEncoder", "ENCODER_SCHEMA", "R"]

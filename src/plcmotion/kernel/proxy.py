@@ -1,0 +1,246 @@
+"""Leading axis proxy technology object (TO_LeadingAxisProxy, S7-1500T V5 §8, §A.3).
+
+The proxy stands in for a leading axis of another controller.  Every servo cycle it takes the leading
+value telegrams that have arrived (from any :class:`~plcmotion.kernel.leading_value.LeadingValueSource`)
+and provides the leading value for the local time minus its delay ``Parameter.LocalLeadingValueDelayTime``:
+interpolated between received values when they reach that far (``StatusExternalLeadingValue.AdjustmentTime``
+< 0), extrapolated from the newest one when they do not (> 0).  The sender delays the leading value for
+its own followers by the same time (coupling type "delayed"), so that followers on all controllers move
+in step (§8.1.3).
+
+If no valid value newer than the tolerance ``Parameter.ToleranceTimeExternalLeadingValueInvalid`` has
+arrived, the proxy raises technology alarm 900: ``StatusWord.X4 (LeadingValueValid)`` goes FALSE, the
+error bits are set and the followers coupled to it are stopped.  Within the tolerance time the value is
+extrapolated and the followers keep moving (§8.2.3).
+"""
+from __future__ import annotations
+
+import math
+from collections import deque
+from typing import TYPE_CHECKING, Any, Callable, Mapping
+
+from . import faults as F
+from .axis import TagAccessError
+from .faults import Fault, Reaction
+from .leading_value import LeadingValueSample, LeadingValueSource
+from .parameters import E12, REAL, RW, AxisSchema, Param
+from .tags import AxisTagsMixin
+from .words import pack, word_type
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .runtime import Controller
+
+_PARAMS = [
+    Param("Parameter.LocalLeadingValueDelayTime", REAL, 0.0, RW, (10,), 0.0, E12,
+          doc="the proxy provides the leading value of this time ago [s]"),
+    Param("Parameter.ToleranceTimeExternalLeadingValueInvalid", REAL, 0.01, RW, (10,), 0.0, E12,
+          doc="time without a valid leading value before alarm 900 [s]"),
+]
+PROXY_SCHEMA = AxisSchema("leading axis proxy", _PARAMS)
+
+ProxyStatusWord = word_type("StatusWord", {"Control": 0, "Error": 1, "RestartActive": 2,
+                                           "OnlineStartValuesChanged": 3, "LeadingValueValid": 4,
+                                           "LeadingValueModulo": 5, "LeadingAxisControl": 6})
+ProxyErrorWord = word_type("ErrorWord", {"SystemFault": 0, "ConfigFault": 1, "UserFault": 2,
+                                         "CommandNotAccepted": 3, "CommunicationFault": 7})
+ProxyWarningWord = word_type("WarningWord", {"SystemWarning": 0, "ConfigWarning": 1, "UserWarning": 2,
+                                             "CommandNotAccepted": 3, "CommunicationWarning": 7})
+ALARM_INVALID = 900
+
+
+def _status(p: "LeadingAxisProxy") -> int:
+    s = p.newest
+    return ProxyStatusWord(pack({0: True, 1: bool(p.alarms), 4: p.valid, 5: s is not None and s.modulo_length > 0.0,
+                                 6: s is not None and not s.tracking}))
+
+
+DYNAMIC: dict[str, Callable[["LeadingAxisProxy"], Any]] = {
+    "Position": lambda p: p._wrap(p.value[0]),
+    "Velocity": lambda p: p.value[1],
+    "Acceleration": lambda p: p.value[2],
+    "StatusWord": _status,
+    "ErrorWord": lambda p: ProxyErrorWord(pack({7: bool(p.alarms)})),
+    "WarningWord": lambda p: ProxyWarningWord(pack({7: p.extrapolating_late})),
+    "ErrorDetail.Number": lambda p: ALARM_INVALID if p.alarms else 0,
+    "ErrorDetail.Reaction": lambda p: 13 if p.alarms else 0,
+    "StatusExternalLeadingValue.ModuloLength": lambda p: p.newest.modulo_length if p.newest else 0.0,
+    "StatusExternalLeadingValue.ModuloStartValue": lambda p: p.newest.modulo_start if p.newest else 0.0,
+    "StatusExternalLeadingValue.AdjustmentTime": lambda p: p.adjustment_time,
+}
+
+
+class LeadingAxisProxy(AxisTagsMixin):
+    """Leading axis proxy TO; ``source`` delivers the leading value telegrams (a transport)."""
+
+    kind = "TO_LeadingAxisProxy"
+    family = "S7-1500"
+    schema = PROXY_SCHEMA
+    _dynamic = DYNAMIC
+    _dynamic_types = {p: "LReal" for p in DYNAMIC}
+    _dynamic_aliases: dict[str, str] = {}
+    _status_groups = ("ErrorDetail", "StatusExternalLeadingValue", "Parameter")
+    _read_param_tags = frozenset(DYNAMIC)
+    provides_setpoints = True
+    provides_actual_values = False
+
+    def __init__(self, ctl: "Controller", name: str, cfg: Mapping[str, Any], source: LeadingValueSource | None):
+        self.ctl = ctl
+        self.name = name
+        self.db_number = ctl._next_db_number()
+        self.cfg = dict(cfg)
+        self.load_cfg = dict(cfg)
+        self.eff = self.cfg
+        self.source = source
+        self.alarms: list[Fault] = []
+        self._slot: int | None = None
+        self._reset()
+
+    def _reset(self) -> None:
+        self.samples: deque[LeadingValueSample] = deque()
+        self.newest: LeadingValueSample | None = None
+        self.value = (0.0, 0.0, 0.0)
+        self.value_time = 0.0
+        self.valid = False
+        self.adjustment_time = 0.0
+        self.extrapolating_late = False
+        self._last_valid_time: float | None = None
+
+    def __repr__(self) -> str:
+        return f"<LeadingAxisProxy {self.name} {'valid' if self.valid else 'invalid'}>"
+
+    def connect(self, source: LeadingValueSource) -> None:
+        """Take the leading value telegrams from ``source`` from now on."""
+        self.source = source
+
+    # --- each servo cycle ---------------------------------------------------------------------------------
+    def update(self, t: float) -> tuple[float, float, float]:
+        delay = self.eff["Parameter.LocalLeadingValueDelayTime"]
+        wanted = t - delay
+        if self.source is not None:
+            for s in self.source.fetch(wanted):
+                if self.newest is None or s.time > self.newest.time:
+                    self.samples.append(s)
+                    self.newest = s
+        keep = delay + 8 * self.ctl.servo_cycle
+        while len(self.samples) > 2 and self.samples[1].time < wanted - keep:
+            self.samples.popleft()
+        newest = self.newest
+        tolerance = self.eff["Parameter.ToleranceTimeExternalLeadingValueInvalid"]
+        if newest is None:
+            self.valid = False
+            self.value_time = t
+            return self.value
+        self.adjustment_time = wanted - newest.time
+        if newest.valid:
+            self._last_valid_time = newest.time
+        late = self._last_valid_time is None or wanted - self._last_valid_time > tolerance + 1e-12
+        self.extrapolating_late = self.adjustment_time > 0.0 and not late
+        if late:
+            if self.valid or not self.alarms:
+                self._invalid(t)
+            self.valid = False
+        else:
+            self.valid = newest.valid and not self.alarms
+        self.value = self._at(wanted)
+        self.value_time = t
+        return self.value
+
+    def _at(self, wanted: float) -> tuple[float, float, float]:
+        s = self.samples
+        newest = self.newest
+        assert newest is not None
+        if wanted >= newest.time:
+            dt = wanted - newest.time
+            return (newest.position + dt * (newest.velocity + 0.5 * dt * newest.acceleration),
+                    newest.velocity + dt * newest.acceleration, newest.acceleration)
+        prev = None
+        for sample in reversed(s):
+            if sample.time <= wanted:
+                prev = sample
+                break
+            nxt = sample
+        if prev is None:
+            first = s[0]
+            return first.position, first.velocity, first.acceleration
+        h = nxt.time - prev.time
+        w = (wanted - prev.time) / h
+        w2, w3 = w * w, w * w * w
+        p = ((2 * w3 - 3 * w2 + 1) * prev.position + (w3 - 2 * w2 + w) * h * prev.velocity
+             + (-2 * w3 + 3 * w2) * nxt.position + (w3 - w2) * h * nxt.velocity)
+        return p, prev.velocity + w * (nxt.velocity - prev.velocity), prev.acceleration + w * (
+            nxt.acceleration - prev.acceleration)
+
+    def _invalid(self, t: float) -> None:
+        fault = F.alarm(F.LV_INVALID, "", Reaction.NONE, f"no valid leading value at {self.name}")
+        if fault not in self.alarms:
+            self.alarms.append(fault)
+        # the followers coupled to an invalid leading value are stopped
+        stop = F.alarm(F.LV_INVALID, self.name, Reaction.STOP, f"leading value of {self.name} invalid")
+        for c in list(self.ctl.sync.couplings):
+            if c.source is self and not c.simulated:
+                c.follower.raise_alarm(stop)
+
+    # --- leading value source ------------------------------------------------------------------------------
+    def lv_value(self, mode: str, t: float) -> tuple[float, float, float]:
+        p, v, a = self.value
+        dt = t - self.value_time
+        if dt > 0.0:
+            p, v = p + dt * (v + 0.5 * dt * a), v + dt * a
+        return p, v, a
+
+    def lv_slot(self, mode: str) -> int:
+        if self._slot is None:
+            self._slot = self.ctl.sync.register_ext(self.update)
+        return self._slot
+
+    def lv_position_controlled(self) -> bool:
+        """A follower with setpoint coupling waits until the proxy has a valid leading value."""
+        if self._slot is None:
+            self.lv_slot("setpoint")
+            self.update(self.ctl.time)
+        return self.valid
+
+    def lv_modulo(self) -> tuple[float, float] | None:
+        s = self.newest
+        return (s.modulo_start, s.modulo_length) if s is not None and s.modulo_length > 0.0 else None
+
+    def _wrap(self, value: float) -> float:
+        m = self.lv_modulo()
+        if m is None:
+            return value
+        start, length = m
+        r = math.fmod(value - start, length)
+        return start + (r + length if r < 0 else r)
+
+    # --- MC_Reset -----------------------------------------------------------------------------------------
+    def acknowledge(self) -> Fault | None:
+        """Acknowledge alarm 900 once valid leading values arrive again."""
+        if self.newest is not None and self.newest.valid and self._last_valid_time is not None and \
+                self.ctl.time - self.eff["Parameter.LocalLeadingValueDelayTime"] - self._last_valid_time <= \
+                self.eff["Parameter.ToleranceTimeExternalLeadingValueInvalid"] + 1e-12:
+            self.alarms.clear()
+            self.valid = True
+            return None
+        return self.alarms[0] if self.alarms else None
+
+    def restart(self) -> Fault | None:
+        self.reinitialize("restart")
+        return None
+
+    def reinitialize(self, reason: str) -> None:
+        self.cfg = dict(self.load_cfg)
+        self.eff = self.cfg
+        self.alarms.clear()
+        self._reset()
+
+    def write_tag(self, path: str, value: Any, *, via_write_param: bool = False) -> None:
+        param = self.schema.params.get(path)
+        if param is None:
+            raise TagAccessError(f"{self.name}.{path} is not a writable tag of the leading axis proxy")
+        reason, norm = param.check(value)
+        if reason is not None:
+            raise ValueError(f"{self.name}.{path} = {value!r}: allowed {param.allowed()}")
+        self.cfg[path] = norm
+
+
+__all__ = ["LeadingAxisProxy", "PROXY_SCHEMA"]

@@ -1,0 +1,257 @@
+"""Leading value coupling (S7-1500T V5 §3.3, §8): setpoint, actual value (extrapolation), delayed and
+cross-PLC coupling; chains of couplings; cycles rejected; non-position-controlled leading axes."""
+import threading
+import time
+
+import pytest
+
+from plcmotion import Controller
+from plcmotion.crossplc import LocalLink
+from plcmotion.s7_1500 import (MC_GearIn, MC_GearInPos, MC_MoveVelocity, MC_Power, MC_Reset)
+
+from _s7_1500_rig import VIRTUAL, Rig
+
+
+def test_chain_master_slave_slave_in_one_servo_cycle_s3_3():
+    """A following axis that leads another one is interpolated first: the second follower sees the
+    first one's setpoint of the same servo cycle (no cycle of delay along the chain)."""
+    ctl = Controller(family="S7-1500T")
+    m = ctl.add_positioning_axis("M", VIRTUAL)
+    s1 = ctl.add_synchronous_axis("S1", VIRTUAL, leading_values=["M"])
+    s2 = ctl.add_synchronous_axis("S2", VIRTUAL, leading_values=["S1"])
+    power = [MC_Power() for _ in range(3)]
+    mv, g1, g2 = MC_MoveVelocity(), MC_GearInPos(), MC_GearInPos()
+
+    @ctl.program
+    def main():
+        for p, ax in zip(power, (m, s1, s2)):
+            p(Axis=ax, Enable=True)
+        mv(Axis=m, Execute=power[0].Status, Velocity=50.0)
+        g1(Master=m, Slave=s1, Execute=power[1].Status, RatioNumerator=2, MasterSyncPosition=40.0,
+           SlaveSyncPosition=0.0, MasterStartDistance=20.0)
+        g2(Master=s1, Slave=s2, Execute=power[2].Status, RatioNumerator=-1, MasterSyncPosition=40.0,
+           SlaveSyncPosition=10.0, MasterStartDistance=30.0)
+    ctl.run_until(lambda: g2.InSync, timeout=10.0)
+    for _ in range(30):
+        ctl.run(0.013)
+        mp = ctl.bank.sp_p[m.index]
+        assert ctl.bank.sp_p[s1.index] == pytest.approx(2 * (mp - 40.0), abs=1e-9)
+        assert ctl.bank.sp_p[s2.index] == pytest.approx(10.0 - (ctl.bank.sp_p[s1.index] - 40.0), abs=1e-9)
+
+
+def test_a_cycle_of_couplings_is_rejected_s8_1_3():
+    ctl = Controller(family="S7-1500T")
+    a = ctl.add_synchronous_axis("A", VIRTUAL, leading_values=["B"])
+    b = ctl.add_synchronous_axis("B", VIRTUAL, leading_values=["A"])
+    pa, pb, ga, gb = MC_Power(), MC_Power(), MC_GearIn(), MC_GearIn()
+
+    @ctl.program
+    def main():
+        pa(Axis=a, Enable=True)
+        pb(Axis=b, Enable=True)
+        ga(Master=b, Slave=a, Execute=pa.Status and pb.Status)
+        gb(Master=a, Slave=b, Execute=ga.InGear)
+    ctl.run_until(lambda: gb.Error or gb.InGear, timeout=2.0)
+    assert gb.Error and gb.ErrorID == 0x8306 and ga.InGear
+
+
+def test_master_not_configured_sets_synchronous_error_s3_3():
+    rig = Rig(masters=2)
+    other = rig.ctl.add_positioning_axis("Other", VIRTUAL)
+    gear = MC_GearIn()
+    reset = MC_Reset()
+    go = {"reset": False}
+    rig.steps.append(lambda: gear(Master=other, Slave=rig.slave, Execute=rig.enabled()))
+    rig.steps.append(lambda: reset(Axis=rig.slave, Execute=go["reset"]))
+    rig.run_until(lambda: gear.Error, timeout=1.0)
+    assert gear.ErrorID == 0x8301
+    assert rig.slave.ErrorWord.X14 and rig.slave.ErrorWord.SynchronousError
+    assert rig.slave.StatusWord.Error
+    go["reset"] = True
+    rig.run_until(lambda: reset.Done, timeout=1.0)
+    assert not rig.slave.ErrorWord.X14
+
+
+def test_setpoint_coupling_waits_for_a_position_controlled_leading_axis_s3_3_5():
+    rig = Rig()
+    rig.enable["Master1"] = False
+    gear = MC_GearIn()
+    rig.steps.append(lambda: gear(Master=rig.master, Slave=rig.slave, Execute=rig.powers["Slave1"].Status))
+    rig.run(0.2)
+    assert gear.Busy and not gear.InGear and rig.slave.StatusSynchronizedMotion.FunctionState == 0
+    rig.enable["Master1"] = True
+    rig.run_until(lambda: gear.InGear, timeout=2.0)
+
+
+def test_actual_value_coupling_to_an_external_encoder_compensates_the_delay_s3_3_4():
+    """An external encoder measures a conveyor; the following axis couples to its extrapolated actual
+    value and runs with it, the extrapolation making up for the filter and acquisition delays."""
+    ctl = Controller(family="S7-1500T")
+    enc = ctl.add_external_encoder("Conveyor", {
+        "Plant": {"Velocity": 200.0},
+        "Sensor": {"Sensor[1]": {"Parameter": {"DistancePerRevolution": 100.0, "StepsPerRevolution": 4096}}},
+        "Extrapolation": {"PositionFilter": {"T1": 0.002}, "VelocityFilter": {"T1": 0.01, "T2": 0.01}}})
+    s = ctl.add_synchronous_axis("Knife", VIRTUAL, leading_values=[("Conveyor", "actual")])
+    pe, ps, gear = MC_Power(), MC_Power(), MC_GearIn()
+
+    @ctl.program
+    def main():
+        pe(Axis=enc, Enable=True)
+        ps(Axis=s, Enable=True)
+        gear(Master=enc, Slave=s, Execute=pe.Status and ps.Status)
+    ctl.run_until(lambda: gear.InGear, timeout=2.0)
+    ctl.run(1.0)
+    assert enc.StatusWord.Enable and enc.StatusSensor[1].State == 2
+    assert enc.ActualVelocity == pytest.approx(200.0, rel=0.05)
+    # the extrapolated value is where the machine will be one interpolator cycle later: acquisition
+    # time, interpolator cycle and filter time are made up for (leading-axis-dependent time)
+    ahead = enc.plant_position + 200.0 * ctl.servo_cycle
+    assert enc.Extrapolation.LeadingAxisDependentTime == pytest.approx(0.004)
+    assert abs(enc.StatusExtrapolation.ExtrapolatedPosition - ahead) < 2 * enc.increment()
+    filtered_lag = enc.plant_position - enc.StatusExtrapolation.FilteredPosition
+    assert filtered_lag == pytest.approx(200.0 * (0.001 + 0.002), abs=2 * enc.increment())
+    assert s.Velocity == pytest.approx(200.0, rel=0.01)
+
+
+def test_actual_value_coupling_needs_the_t_cpu_s2_2():
+    ctl = Controller(family="S7-1500")
+    m = ctl.add_positioning_axis("M", {"Actor": {"Type": 1}})
+    s = ctl.add_synchronous_axis("S", VIRTUAL, leading_values=[("M", "actual")])
+    pm, ps, gear = MC_Power(), MC_Power(), MC_GearIn()
+
+    @ctl.program
+    def main():
+        pm(Axis=m, Enable=True)
+        ps(Axis=s, Enable=True)
+        gear(Master=m, Slave=s, Execute=pm.Status and ps.Status)
+    ctl.run_until(lambda: gear.Error, timeout=2.0)
+    assert gear.ErrorID == 0x8302
+
+
+def test_gear_in_pos_needs_the_t_cpu_s2_2():
+    rig = Rig(family="S7-1500")
+    gip = MC_GearInPos()
+    rig.steps.append(lambda: gip(Master=rig.master, Slave=rig.slave, Execute=rig.enabled()))
+    rig.run_until(lambda: gip.Error, timeout=1.0)
+    assert gip.ErrorID == 0x8302
+    with pytest.raises(ValueError):
+        rig.ctl.add_cam("Cam")
+
+
+def _cross_plc(link_a, link_b, delay=0.008):
+    a = Controller(family="S7-1500T")
+    b = Controller(family="S7-1500T")
+    m = a.add_positioning_axis("Master", {**VIRTUAL, "CrossPlcSynchronousOperation": {
+        "Interface[1]": {"EnableLeadingValueOutput": True}, "LocalLeadingValueDelayTime": delay}})
+    sa = a.add_synchronous_axis("SlaveA", VIRTUAL, leading_values=[("Master", "delayed")])
+    proxy = b.add_leading_axis_proxy("Proxy", {"Parameter": {"LocalLeadingValueDelayTime": delay,
+                                                             "ToleranceTimeExternalLeadingValueInvalid": 0.02}},
+                                     source_link=link_b)
+    sb = b.add_synchronous_axis("SlaveB", VIRTUAL, leading_values=["Proxy"])
+    m.provide_leading_value(link_a)
+    pm, pa, pb = MC_Power(), MC_Power(), MC_Power()
+    mv, ga, gb = MC_MoveVelocity(), MC_GearInPos(), MC_GearInPos()
+    sync = dict(RatioNumerator=1, MasterSyncPosition=100.0, SlaveSyncPosition=5.0, MasterStartDistance=50.0)
+
+    @a.program
+    def prog_a():
+        pm(Axis=m, Enable=True)
+        pa(Axis=sa, Enable=True)
+        mv(Axis=m, Execute=pm.Status, Velocity=100.0)
+        ga(Master=m, Slave=sa, Execute=pa.Status, **sync)
+
+    @b.program
+    def prog_b():
+        pb(Axis=sb, Enable=True)
+        gb(Master=proxy, Slave=sb, Execute=pb.Status, **sync)
+    return a, b, m, sa, sb, proxy, ga, gb
+
+
+def test_cross_plc_followers_on_both_controllers_move_in_step_s8_1_3():
+    link = LocalLink()
+    a, b, m, sa, sb, proxy, ga, gb = _cross_plc(link, link)
+    for _ in range(600):
+        a.step()
+        b.step()
+        if ga.InSync and gb.InSync:
+            assert sa.Position == pytest.approx(sb.Position, abs=1e-9)
+            assert sb.Position == pytest.approx(5.0 + (m.StatusProvidedLeadingValue.DelayedLeadingValue.Position
+                                                       - 100.0), abs=1e-9)
+    assert ga.InSync and gb.InSync
+    assert proxy.StatusWord.X4 and proxy.StatusExternalLeadingValue.AdjustmentTime < 0.0
+
+
+class LossyLink(LocalLink):
+    """A link that loses every telegram while ``lost`` is set (a communication failure)."""
+
+    lost = False
+
+    def send(self, sample):
+        if not self.lost:
+            super().send(sample)
+
+
+def test_proxy_extrapolates_late_values_and_raises_alarm_900_when_they_stop_s8_2_3():
+    link = LossyLink()
+    a, b, m, sa, sb, proxy, ga, gb = _cross_plc(link, link, delay=0.0)
+    for _ in range(500):
+        a.step()
+        b.step()
+    assert gb.InSync and proxy.StatusExternalLeadingValue.AdjustmentTime >= 0.0   # no delay: extrapolated
+    link.lost = True
+    for _ in range(2):                   # within the tolerance time the followers keep going
+        a.step()
+        b.step()
+    assert proxy.StatusWord.X4 and gb.InSync and proxy.WarningWord.X7
+    for _ in range(10):
+        a.step()
+        b.step()
+    assert not proxy.StatusWord.X4 and proxy.ErrorWord.X7 and proxy.ErrorDetail.Number == 900
+    assert gb.Error and gb.ErrorID == 0x8001 and sb.StatusWord.Error
+    reset = MC_Reset()
+    reset(Axis=proxy, Execute=True)
+    assert reset.Error                   # the leading value is still missing
+    link.lost = False
+    for _ in range(3):
+        a.step()
+        b.step()
+    reset(Axis=proxy, Execute=False)
+    reset(Axis=proxy, Execute=True)
+    assert reset.Done and proxy.StatusWord.X4 and not proxy.ErrorWord.X7
+
+
+@pytest.mark.timeout_guard
+def test_cross_plc_over_opc_ua_pubsub_on_loopback_s8_1_2():
+    """The leading value travels as OPC UA PubSub UADP messages over UDP (unicast on loopback); the
+    sending controller runs in its own thread, the receiver waits for its telegrams (lockstep)."""
+    pytest.importorskip("asyncua")
+    import socket
+
+    from plcmotion.crossplc import UadpLeadingValuePublisher, UadpLeadingValueSubscriber
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    url = f"opc.udp://127.0.0.1:{port}"
+    sub = UadpLeadingValueSubscriber(url, wait_timeout=2.0)
+    pub = UadpLeadingValuePublisher(url)
+    sub.start()
+    pub.start()
+    try:
+        a, b, m, sa, sb, proxy, ga, gb = _cross_plc(pub, sub, delay=0.008)
+        cycles = 400
+        sender = threading.Thread(target=lambda: [a.step() for _ in range(cycles)], daemon=True)
+        deadline = time.monotonic() + 60.0
+        sender.start()
+        errors = []
+        for _ in range(cycles - 3):
+            b.step()
+            if time.monotonic() > deadline:
+                break
+            if gb.InSync and abs(sb.Position - (5.0 + proxy.Position - 100.0)) > 1e-9:
+                errors.append(sb.Position)
+        sender.join(timeout=30.0)
+        assert gb.InSync and not errors
+        assert proxy.StatusWord.X4
+    finally:
+        pub.close()
+        sub.close()

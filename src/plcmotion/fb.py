@@ -81,10 +81,12 @@ class Instruction:
             object.__setattr__(self, name, default)
 
     def _set_inputs(self, inputs: dict[str, Any]) -> None:
-        for name, value in inputs.items():
+        if inputs.keys() <= self.INPUTS.keys():
+            self.__dict__.update(inputs)               # the common case, called every cycle: one update
+            return
+        for name in inputs:
             if name not in self.INPUTS:
                 raise TypeError(f"{type(self).__name__} has no input {name!r}; inputs: {', '.join(self.INPUTS)}")
-            object.__setattr__(self, name, value)
 
     def __setattr__(self, name: str, value: Any) -> None:
         if name in self.OUTPUTS:
@@ -92,8 +94,7 @@ class Instruction:
         object.__setattr__(self, name, value)
 
     def _out(self, **values: Any) -> None:
-        for name, value in values.items():
-            object.__setattr__(self, name, value)
+        self.__dict__.update(values)
 
     def __call__(self, **inputs: Any) -> "Instruction":
         self._set_inputs(inputs)
@@ -115,7 +116,9 @@ class Instruction:
         raise NotImplementedError  # pragma: no cover
 
     def _register(self, to: Any) -> None:
-        to.ctl._instances.setdefault(id(self), self)
+        instances = to.ctl._instances
+        if id(self) not in instances:
+            instances[id(self)] = self
 
     def _accept(self, value: Any, types: tuple[type, ...]) -> bool:
         return isinstance(value, types) and self._family_ok(value)

@@ -125,11 +125,13 @@ class _CamTable:
         self.has_sine = bool(np.any(sine_all[:, 0] != 0.0))
         self.s_amp, self.s_w, self.s_ph = sine_all[:, 0], sine_all[:, 1], sine_all[:, 2]
 
-    def evaluate(self, cid: np.ndarray, u: np.ndarray):
-        """f, f', f'' of the curves ``cid`` at cam coordinates ``u`` (inside the definition ranges)."""
-        key = cid + np.clip((u - self.start[cid]) / self.length[cid], 0.0, 1.0 - 1e-15)
+    def evaluate(self, cid: np.ndarray, u: np.ndarray, start: np.ndarray, inv_length: np.ndarray,
+                 first: np.ndarray, last: np.ndarray):
+        """f, f', f'' of the curves ``cid`` at cam coordinates ``u`` (inside the definition ranges);
+        ``start``, ``inv_length``, ``first``, ``last`` are the per-follower values of the curves."""
+        key = cid + np.minimum(np.maximum((u - start) * inv_length, 0.0), 1.0 - 1e-15)
         k = np.searchsorted(self.keys, key, side="right") - 1
-        k = np.clip(k, self.first[cid], self.last[cid])
+        k = np.minimum(np.maximum(k, first), last)
         dx = u - self.bp[k]
         f = _horner(self.c[k], dx)
         f1 = _horner(self.d1[k], dx)
@@ -165,6 +167,7 @@ class _Level:
         self.src_ext = np.array([c.extra.get("ext_slot", 0) for c in couplings], dtype=np.int64)
         self.any_ext = bool(self.use_ext.any())
         self.add = np.zeros((3, n))
+        self.any_add = False
         self.ph = np.zeros((5, n))            # phase segment: t, p, v, a, j
         self.any_phase = False
         self.apply = np.array([c.applied for c in couplings], dtype=bool)
@@ -181,6 +184,18 @@ class _Level:
         self.sscale = np.array([c.slave_scaling for c in cams])
         self.app_mode = np.array([c.app_mode for c in cams], dtype=np.int64)
         self.cam_once = self.app_mode == ONCE
+        self.all_cyclic = not bool(self.cam_once.any())
+        self.appending = self.app_mode == APPENDING
+        self.any_append = bool(self.appending.any())
+        self.inv_mscale = 1.0 / self.mscale if len(cams) else self.mscale
+        if table is not None and len(cams):
+            self.cstart = table.start[self.cid]
+            self.clength = table.length[self.cid]
+            self.inv_clength = 1.0 / self.clength
+            self.cend = self.cstart + self.clength
+            self.cstroke = table.f_end[self.cid] - table.f_start[self.cid]
+            self.cfirst = table.first[self.cid]
+            self.clast = table.last[self.cid]
         self.prev_cycle = np.array([c.cam_cycle for c in cams], dtype=np.int64)
         self.prev_inside = np.array([c.extra.get("inside", True) for c in cams], dtype=bool)
         self.blend_idx = np.flatnonzero([c.blend is not None for c in couplings])
@@ -203,6 +218,7 @@ class _Level:
     def set_additive(self, c: Coupling) -> None:
         add = c.follower.lv_additive
         self.add[:, c.slot] = add if add is not None else (0.0, 0.0, 0.0)
+        self.any_add = bool(self.add.any())
 
     def set_phase(self, c: Coupling) -> None:
         prof = c.phase
@@ -364,9 +380,10 @@ class SyncStage:
             x = np.where(lv.use_ext, e[0, lv.src_ext], x)
             xv = np.where(lv.use_ext, e[1, lv.src_ext], xv)
             xa = np.where(lv.use_ext, e[2, lv.src_ext], xa)
-        x = x + lv.add[0]
-        xv = xv + lv.add[1]
-        xa = xa + lv.add[2]
+        if lv.any_add:
+            x = x + lv.add[0]
+            xv = xv + lv.add[1]
+            xa = xa + lv.add[2]
         if lv.any_phase:
             ph = lv.ph
             tau = t - ph[0]
@@ -380,28 +397,39 @@ class SyncStage:
         events: list[tuple[str, Coupling, Any]] = []
         if lv.cam.size:
             ci = lv.cam
-            tab = lv.table
-            u = (x[ci] - lv.moff) / lv.mscale
-            uv = xv[ci] / lv.mscale
-            ua = xa[ci] / lv.mscale
-            start, length = tab.start[lv.cid], tab.length[lv.cid]
-            r = (u - start) / length
+            u = (x[ci] - lv.moff) * lv.inv_mscale
+            uv = xv[ci] * lv.inv_mscale
+            ua = xa[ci] * lv.inv_mscale
+            start, length = lv.cstart, lv.clength
+            r = (u - start) * lv.inv_clength
             cyc = np.floor(r).astype(np.int64)
-            cyclic = ~lv.cam_once
-            uw = np.where(cyclic, start + (r - cyc) * length, np.clip(u, start, start + length))
-            f, f1, f2 = tab.evaluate(lv.cid, uw)
-            inside = (u > start) & (u < start + length)
-            f1 = np.where(cyclic | inside, f1, 0.0)
-            f2 = np.where(cyclic | inside, f2, 0.0)
-            append = np.where(lv.app_mode == APPENDING, cyc * (tab.f_end[lv.cid] - tab.f_start[lv.cid]), 0.0)
-            y[ci] = lv.sscale * (f + append) + lv.soff
+            inside = (u > start) & (u < lv.cend)
+            if lv.all_cyclic:
+                uw = start + (r - cyc) * length
+            else:
+                cyclic = ~lv.cam_once
+                uw = np.where(cyclic, start + (r - cyc) * length, np.minimum(np.maximum(u, start), lv.cend))
+            f, f1, f2 = lv.table.evaluate(lv.cid, uw, start, lv.inv_clength, lv.cfirst, lv.clast)
+            if not lv.all_cyclic:
+                moving = cyclic | inside
+                f1 = np.where(moving, f1, 0.0)
+                f2 = np.where(moving, f2, 0.0)
+            if lv.any_append:
+                f = f + np.where(lv.appending, cyc * lv.cstroke, 0.0)
+            y[ci] = lv.sscale * f + lv.soff
             yv[ci] = lv.sscale * f1 * uv
             ya[ci] = lv.sscale * (f2 * uv * uv + f1 * ua)
-            wrapped = cyclic & (cyc != lv.prev_cycle)
-            left = lv.cam_once & lv.prev_inside & ~inside
-            if wrapped.any() or left.any():
-                for k in np.flatnonzero(wrapped | left):
-                    events.append(("cam_end" if left[k] else "cam_wrap", lv.couplings[ci[k]], int(cyc[k])))
+            if lv.all_cyclic:
+                changed = cyc != lv.prev_cycle
+                if changed.any():
+                    for k in np.flatnonzero(changed):
+                        events.append(("cam_wrap", lv.couplings[ci[k]], int(cyc[k])))
+            else:
+                wrapped = cyclic & (cyc != lv.prev_cycle)
+                left = lv.cam_once & lv.prev_inside & ~inside
+                if wrapped.any() or left.any():
+                    for k in np.flatnonzero(wrapped | left):
+                        events.append(("cam_end" if left[k] else "cam_wrap", lv.couplings[ci[k]], int(cyc[k])))
             lv.prev_cycle = cyc
             lv.prev_inside = inside
         if lv.blend_idx.size:

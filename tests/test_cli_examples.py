@@ -40,6 +40,8 @@ def test_demo_writes_trace_plot_and_summary(tmp_path, capsys):
 @pytest.mark.parametrize("project, program, duration", [
     ("pto_stepper.toml", "pto_stepper_program.py", 8.0),
     ("profidrive_servo.toml", "profidrive_servo_program.py", 12.0),
+    ("flying_saw.toml", "flying_saw_program.py", 8.0),
+    ("rotary_knife.toml", "rotary_knife_program.py", 4.0),
 ])
 def test_examples_run_without_errors(tmp_path, capsys, project, program, duration):
     csv, png = tmp_path / "t.csv", tmp_path / "t.png"

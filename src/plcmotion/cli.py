@@ -63,11 +63,21 @@ def cmd_check(args: argparse.Namespace) -> int:
     from .project import load_project
 
     ctl = load_project(args.project)
-    axes = ", ".join(f"{name} ({'PTO' if ax.pto else 'simulated' if ax.sim else 'PROFIdrive' if ax.cfg['Actor.Type'] == 1 else 'analog'})"
-                     for name, ax in ctl.axes.items())
-    print(f"{args.project}: OK - servo cycle {ctl.servo_cycle * 1000:g} ms, application cycle "
-          f"{ctl.app_cycle * 1000:g} ms, {len(ctl.axes)} axes: {axes or '-'}")
+    axes = ", ".join(f"{name} ({_describe(ax)})" for name, ax in ctl.axes.items())
+    others = [f"{name} ({type(to).__name__})" for name, to in {**ctl.objects, **ctl.cams}.items()]
+    more = f"; {', '.join(others)}" if others else ""
+    family = "" if ctl.family == "S7-1200" else f"{ctl.family}, "
+    print(f"{args.project}: OK - {family}servo cycle {ctl.servo_cycle * 1000:g} ms, application cycle "
+          f"{ctl.app_cycle * 1000:g} ms, {len(ctl.axes)} axes: {axes or '-'}{more}")
     return 0
+
+
+def _describe(ax) -> str:
+    kind = "synchronous axis, " if hasattr(ax, "possible_leading_values") else ""
+    if ax.eff.get("VirtualAxis.Mode"):
+        return kind + "virtual"
+    drive = "PTO" if ax.pto else "simulated" if ax.sim else "PROFIdrive" if ax.eff["Actor.Type"] == 1 else "analog"
+    return kind + drive
 
 
 def load_program(ctl, program: str) -> None:
@@ -137,6 +147,9 @@ def cmd_run(args: argparse.Namespace) -> int:
         errors = ", ".join(str(a) for a in ax.alarms) or "no error"
         print(f"  {name}: {ax.state}, Position {ax.Position:.6g}, ActualPosition {ax.ActualPosition:.6g}, "
               f"homed {ax.homed}, {errors}")
+    for name, to in ctl.objects.items():
+        errors = ", ".join(str(a) for a in to.alarms) or "no error"
+        print(f"  {name}: {type(to).__name__}, {errors}")
     if args.trace:
         print(f"trace: {args.trace}")
     if args.plot:

@@ -32,6 +32,18 @@ A project file has up to three sections::
 ``state_file``: where retentive data (the absolute encoder adjustment) is kept, relative to the project
 file; by default ``<project>.state.json`` next to it.
 
+``family = "S7-1500T"`` (or ``"S7-1500"``; default ``"S7-1200"``) makes it an S7-1500 controller.  Its
+axis tables then use the S7-1500 tag names (``plcmotion.kernel.parameters1500``) and may have
+``type = "synchronous"`` with ``leading_values = ["Master", { name = "Encoder", coupling = "actual" }]``,
+``type = "external_encoder"`` or ``type = "leading_axis_proxy"``; cams are declared in ``[cams.<name>]``::
+
+    [cams.Knife]
+    points = [[0.0, 0.0], [180.0, 50.0], [360.0, 0.0]]    # Point[1..n]
+    segments = [ { xmin = 0.0, xmax = 10.0, a0 = 0.0, a1 = 1.0 } ]
+    csv = "knife.csv"                                     # or a point list file (relative to the project)
+    interpolation_mode = 1                                # 0 linear, 1 cubic spline, 2 Bezier
+    boundary_conditions = 1
+
 Axis names are identifiers (letters, digits, underscore; not starting with a digit).  Inside an axis
 table the keys are the tag paths of the positioning axis (``plcmotion.kernel.parameters.SCHEMA``,
 S7-1200 Motion Control V6 §12.9, plus the ``Plant.*`` parameters of the simulated machine); the
@@ -70,12 +82,15 @@ from .kernel import parameters as P
 from .kernel.axis import ConfigurationError
 from .kernel.runtime import Controller
 
-SECTIONS = ("controller", "axes", "trace", "inputs", "command_tables")
+SECTIONS = ("controller", "axes", "trace", "inputs", "command_tables", "cams")
 CONTROLLER_DEFAULTS: dict[str, float] = {"servo_cycle": 0.001, "app_cycle": 0.004}
-CONTROLLER_KEYS = ("servo_cycle", "app_cycle", "input_filter", "state_file", "technology_version")
+CONTROLLER_KEYS = ("servo_cycle", "app_cycle", "input_filter", "state_file", "technology_version", "family")
 STEP_KEYS = ("Type", "Position", "Velocity", "Duration", "NextStep", "StepCode")
 TRACE_KEYS = ("signals", "every")
 AXIS_TYPES = ("positioning",)
+AXIS_TYPES_1500 = ("positioning", "synchronous", "external_encoder", "leading_axis_proxy")
+COUPLINGS = ("setpoint", "actual", "delayed")
+CAM_KEYS = ("points", "segments", "csv", "interpolation_mode", "boundary_conditions")
 
 _NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")       # the rule Controller.add_positioning_axis applies
 _POSITION = re.compile(r"line (\d+), column (\d+)")
@@ -212,6 +227,7 @@ class _Loader:
         ctl = self.controller(doc.get("controller"))
         self.inputs(ctl, doc.get("inputs"))
         declared = self.axes(ctl, doc.get("axes"))
+        self.cams(ctl, doc.get("cams"), declared)
         self.command_tables(ctl, doc.get("command_tables"), declared)
         trace = self.trace(ctl, doc.get("trace"), declared)
         ctl.project = {"path": self.label, "trace": trace}  # type: ignore[attr-defined]
@@ -260,15 +276,24 @@ class _Loader:
             if key not in CONTROLLER_KEYS:
                 self.unknown(f"controller.{key}", value, "key", list(CONTROLLER_KEYS))
         extra: dict[str, Any] = {}
+        from .kernel.runtime import FAMILIES
+        family = section.get("family", "S7-1200")
+        if family not in FAMILIES:
+            self.bad("controller.family", family, ", ".join(json.dumps(f) for f in FAMILIES))
+        else:
+            extra["family"] = family
         filt = section.get("input_filter", 0.0064)
         if isinstance(filt, bool) or not isinstance(filt, (int, float)) or not math.isfinite(filt) \
                 or not 0.0 <= filt <= 20.0:
             self.bad("controller.input_filter", filt, "a time in [0, 20] s, e.g. 0.0064")
         else:
             extra["input_filter"] = float(filt)
-        version = section.get("technology_version", 6)
-        if version not in (6, 7) or isinstance(version, bool):
-            self.bad("controller.technology_version", version, "6 or 7 (S7-1200 Motion Control V6.0 / V7.0)")
+        s71200 = extra.get("family", "S7-1200") == "S7-1200"
+        version = section.get("technology_version", 6 if s71200 else 5)
+        allowed = (6, 7) if s71200 else (5,)
+        if version not in allowed or isinstance(version, bool):
+            self.bad("controller.technology_version", version, "6 or 7 (S7-1200 Motion Control V6.0 / V7.0)"
+                     if s71200 else "5 (S7-1500 Motion Control V5.0)")
         else:
             extra["technology_version"] = version
         state = section.get("state_file", self.path.name.rsplit(".", 1)[0] + ".state.json")
@@ -394,19 +419,67 @@ class _Loader:
                 self.bad(key, table, f"a table of axis tags, e.g. [{key}] with \"Actor.Type\" = 2")
                 continue
             self.axis(ctl, name, key, table, create=valid_name)
-        return list(section)
+        names = list(section)
+        for name, table in section.items():
+            for source in (table.get("leading_values", []) if isinstance(table, dict) else []):
+                source_name = source.get("name") if isinstance(source, dict) else source
+                if isinstance(source_name, str) and source_name not in names:
+                    self.note(f"axes.{_key(name)}.leading_values: {json.dumps(source_name)} is not a technology "
+                              f"object of this file; allowed: {', '.join(n for n in names if n != name) or 'none'}")
+        return names
+
+    def _schema(self, ctl: Controller, kind: str) -> Any:
+        if ctl.family == "S7-1200":
+            return P.S7_1200
+        if kind == "external_encoder":
+            from .kernel.external_encoder import ENCODER_SCHEMA
+            return ENCODER_SCHEMA
+        if kind == "leading_axis_proxy":
+            from .kernel.proxy import PROXY_SCHEMA
+            return PROXY_SCHEMA
+        from .kernel.parameters1500 import S7_1500
+        return S7_1500
+
+    def _leading_values(self, key: str, value: Any) -> list[tuple[str, str]] | None:
+        if isinstance(value, dict):
+            value = [{"name": k, "coupling": v} for k, v in value.items()]
+        if not isinstance(value, list):
+            self.bad(key, value, 'a list of names or { name = "...", coupling = "setpoint" | "actual" | "delayed" }')
+            return None
+        out = []
+        for i, item in enumerate(value):
+            if isinstance(item, str):
+                out.append((item, "setpoint"))
+            elif isinstance(item, dict) and isinstance(item.get("name"), str) and \
+                    item.get("coupling", "setpoint") in COUPLINGS and set(item) <= {"name", "coupling"}:
+                out.append((item["name"], item.get("coupling", "setpoint")))
+            else:
+                self.bad(f"{key}[{i}]", item, 'a name or { name = "...", coupling = "setpoint" | "actual" | "delayed" }')
+                return None
+        return out
 
     def axis(self, ctl: Controller, name: str, key: str, table: dict[str, Any], *, create: bool) -> None:
         values = dict(table)
-        kind = values.pop("type", AXIS_TYPES[0])
-        if kind not in AXIS_TYPES:
-            self.bad(f"{key}.type", kind, "one of " + ", ".join(json.dumps(t) for t in AXIS_TYPES))
+        types = AXIS_TYPES if ctl.family == "S7-1200" else AXIS_TYPES_1500
+        kind = values.pop("type", types[0])
+        if kind not in types:
+            self.bad(f"{key}.type", kind, "one of " + ", ".join(json.dumps(t) for t in types))
             create = False
+        leading = None
+        if "leading_values" in values:
+            raw = values.pop("leading_values")
+            if kind != "synchronous":
+                self.note(f"{key}.leading_values: only an axis of type = \"synchronous\" has leading values")
+                create = False
+            else:
+                leading = self._leading_values(f"{key}.leading_values", raw)
+                create = create and leading is not None
+        schema = self._schema(ctl, kind)
         flat: dict[str, Any] = {}
         written: dict[str, str] = {}                # canonical tag path -> spelling in the file
         for path, value in _leaves(values):
-            canon = P.canonical(path)
-            if isinstance(value, Mapping) and any(tag.startswith(canon + ".") for tag in P.SCHEMA):
+            canon = schema.canonical(path)
+            if isinstance(value, Mapping) and any(tag.startswith(canon + ".") for tag in schema.params):
                 continue                            # an empty group of tags, e.g. [axes.A.Homing]
             if canon in written:
                 first = written[canon]
@@ -416,18 +489,88 @@ class _Loader:
                 continue
             written[canon] = path
             flat[path] = value
-        _cfg, issues = P.validate(flat)
+        _cfg, issues = schema.validate(flat)
         for issue in issues:
             self.issue(key, issue, written)
         if issues or not create:
             return
         try:
-            ctl.add_positioning_axis(name, flat, source=f"{self.label}: {key}")
+            where = f"{self.label}: {key}"
+            if kind == "synchronous":
+                ctl.add_synchronous_axis(name, flat, leading_values=leading or (), source=where)
+            elif kind == "external_encoder":
+                ctl.add_external_encoder(name, flat, source=where)
+            elif kind == "leading_axis_proxy":
+                ctl.add_leading_axis_proxy(name, flat, source=where)
+            else:
+                ctl.add_positioning_axis(name, flat, source=where)
         except ConfigurationError as exc:
             for issue in exc.issues:
                 self.issue(key, issue, written)
         except Exception as exc:  # noqa: BLE001 - report, never a traceback out of a project file
             self.note(f"{key}: the axis could not be created: {type(exc).__name__}: {exc}")
+
+    # --- [cams.<name>] -------------------------------------------------------------------------------
+    def cams(self, ctl: Controller, section: Any, declared: list[str]) -> None:
+        if section is None:
+            return
+        if not isinstance(section, dict):
+            self.bad("cams", section, "one table [cams.<name>] per cam")
+            return
+        if not ctl.family_t:
+            self.note('cams: cams need family = "S7-1500T" in [controller]')
+            return
+        from .kernel.cam_to import SEGMENT_FIELDS
+        for name, table in section.items():
+            key = f"cams.{_key(name)}"
+            if not _NAME.match(name) or name in declared:
+                self.note(f"{key}: the name must be an identifier not used by an axis")
+                continue
+            if not isinstance(table, dict):
+                self.bad(key, table, "a table with points, segments, interpolation_mode, boundary_conditions")
+                continue
+            ok = True
+            for extra, value in table.items():
+                if extra not in CAM_KEYS:
+                    self.unknown(f"{key}.{extra}", value, "key", CAM_KEYS)
+                    ok = False
+            points = table.get("points", [])
+            if not isinstance(points, list) or not all(
+                    isinstance(p, list) and len(p) == 2 and all(isinstance(v, (int, float)) and not isinstance(v, bool)
+                                                               for v in p) for p in points):
+                self.bad(f"{key}.points", points, "a list of [x, y] number pairs")
+                ok = False
+                points = []
+            if "csv" in table:
+                path = table["csv"]
+                if not isinstance(path, str):
+                    self.bad(f"{key}.csv", path, "a file name relative to the project file")
+                    ok = False
+                else:
+                    from .cams.io import PointListError, import_points
+                    try:
+                        points = list(points) + [list(p) for p in import_points(self.path.parent / path)]
+                    except (OSError, PointListError) as exc:
+                        self.note(f"{key}.csv = {toml_value(path)}: {exc}")
+                        ok = False
+            segments = table.get("segments", [])
+            if not isinstance(segments, list) or not all(
+                    isinstance(sg, dict) and set(sg) <= set(SEGMENT_FIELDS) for sg in segments):
+                self.bad(f"{key}.segments", segments, "a list of tables with " + ", ".join(SEGMENT_FIELDS))
+                ok = False
+                segments = []
+            settings = {}
+            for field, allowed in (("interpolation_mode", (0, 1, 2)), ("boundary_conditions", (0, 1))):
+                value = table.get(field, 0)
+                if isinstance(value, bool) or value not in allowed:
+                    self.bad(f"{key}.{field}", value, " or ".join(map(str, allowed)))
+                    ok = False
+                settings[field] = value
+            if ok:
+                try:
+                    ctl.add_cam(name, [tuple(p) for p in points], segments, **settings)
+                except (TypeError, ValueError) as exc:
+                    self.note(f"{key}: {exc}")
 
     # --- [trace] ------------------------------------------------------------------------------------
     def trace(self, ctl: Controller, section: Any, declared: list[str]) -> dict[str, Any]:
@@ -468,7 +611,7 @@ class _Loader:
             self.note(f"{key} = {toml_value(signal)}: unknown axis {name}{hint}; "
                       f"allowed: \"<axis>.<tag>\" with an axis of this file: {axes}")
             return False
-        axis = ctl.axes.get(name)
+        axis = ctl.axes.get(name) or ctl.objects.get(name)
         if axis is None:                            # the axis has problems of its own, reported above
             return False
         try:
@@ -483,4 +626,4 @@ class _Loader:
         return True
 
 
-__all__ = ["AXIS_TYPES", "SECTIONS", "ProjectError", "check_project", "load_project", "toml_value"]
+__all__ = ["AXIS_TYPES", "AXIS_TYPES_1500", "SECTIONS", "ProjectError", "check_project", "load_project", "toml_value"]

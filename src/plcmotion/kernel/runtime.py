@@ -374,8 +374,9 @@ class Controller:
         dt = self.servo_cycle
         for g in self._group_list:
             g.read(b, t, dt)
-        for enc in self._encoders:
-            enc.read(t, dt)
+        if self._encoders:
+            for enc in self._encoders:
+                enc.read(t, dt)
         self.inputs.begin_cycle(t)
         if self.plant.items:
             self.plant.update(t)

@@ -241,21 +241,24 @@ class SyncStage:
         self._ext: list[Callable[[float], tuple[float, float, float]]] = []
         self.ext = np.zeros((3, 0))
         self._post: list[Callable[[float], None]] = []     # after the couplings (delayed values, outputs)
+        self.active = False
 
-    @property
-    def active(self) -> bool:
-        return bool(self.couplings) or bool(self._ext) or bool(self._post)
+    def _update_active(self) -> None:
+        #: anything to do in the servo cycle (read every cycle: kept as a plain attribute)
+        self.active = bool(self.couplings) or bool(self._ext) or bool(self._post)
 
     # --- external leading values (actual values, delayed values, proxies) -------------------------------
     def register_ext(self, provider: Callable[[float], tuple[float, float, float]]) -> int:
         """A value provider evaluated every servo cycle before the couplings; returns its slot."""
         self._ext.append(provider)
         self.ext = np.zeros((3, len(self._ext)))
+        self._update_active()
         return len(self._ext) - 1
 
     def register_post(self, fn: Callable[[float], None]) -> None:
         if fn not in self._post:
             self._post.append(fn)
+        self._update_active()
 
     # --- coupling management ----------------------------------------------------------------------------
     def add(self, coupling: Coupling) -> None:
@@ -266,11 +269,13 @@ class SyncStage:
             self.couplings.remove(coupling)
             raise
         self._dirty = True
+        self._update_active()
 
     def remove(self, coupling: Coupling) -> None:
         if coupling in self.couplings:
             self.couplings.remove(coupling)
             self._dirty = True
+            self._update_active()
 
     def changed(self) -> None:
         """Coupling data changed (law, blend, waiting state): recompile before the next evaluation."""

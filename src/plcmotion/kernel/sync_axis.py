@@ -424,24 +424,13 @@ class SynchronousMixin:
         self._couple(c, t, rel)
 
     def _slave_correction(self: "Axis", c: Coupling, e0: float, law_delta: float, shift_law: bool = False) -> float:
-        """Position error to remove during synchronization; on a modulo following axis the revolution
-        of the synchronous position follows ``SyncDirection`` (1 positive, 2 negative, 3 shortest)."""
-        if not self.eff["Modulo.Enable"]:
-            return e0
-        length = self.eff["Modulo.Length"]
-        direction = c.job.extra.get("sync_direction", 3)
-        if direction == 1:           # the following axis travels law_delta - e0' >= 0, as little as possible
-            k = math.ceil((e0 - law_delta) / length - 1e-12)
-        elif direction == 2:
-            k = math.floor((e0 - law_delta) / length + 1e-12)
-        else:
-            k = round(e0 / length)
-        if shift_law and k:
-            if c.law == GEAR:
-                c.offset += k * length
-            else:
-                c.slave_offset += k * length
-        return e0 - k * length
+        """Position error to remove during a synchronization over time; on a modulo following axis the
+        revolution of the synchronous position follows ``SyncDirection`` (1 positive, 2 negative,
+        3 shortest)."""
+        k = self._revolutions(c, e0, law_delta)[0]
+        if shift_law:
+            self._shift_law(c, k)
+        return e0 - k * self._modulo_length()
 
     def _activate_direct(self: "Axis", c: Coupling, t: float) -> None:
         """CamIn SyncProfileReference 2: InSync at once at the present positions (§5.4.4)."""
@@ -462,9 +451,9 @@ class SynchronousMixin:
         """Synchronize over the leading value distance up to ``x_end`` (SPR 1, 3, 4)."""
         x, xv, xa = self._lv_now(c.source, c.mode, t)
         p, v, a = self._take_over(t)
-        y, dy, ddy = self.ctl.sync.law_at(c, x, 1.0, 0.0)        # law and its derivatives in x
-        law_end = self.ctl.sync.law_at(c, x_end, 0.0, 0.0)[0]
-        e0 = self._slave_correction(c, p - y, law_end - y, shift_law=True)
+        law = self.ctl.sync.law_at
+        y, dy, ddy = law(c, x, 1.0, 0.0)                       # law and its derivatives in x
+        law_delta = law(c, x_end, 0.0, 0.0)[0] - y
         length = x_end - x
         if abs(length) <= _EPS:
             length = math.copysign(_EPS, c.direction)
@@ -473,12 +462,64 @@ class SynchronousMixin:
             sxx = (a - sx * xa) / (xv * xv)
         else:
             sx, sxx = dy, ddy
-        c.blend = quintic(e0, (sx - dy) * length, (sxx - ddy) * length * length)
+        d0, dd0 = (sx - dy) * length, (sxx - ddy) * length * length
+        chosen = None
+        one_way = c.job.extra.get("sync_direction", 3) in (1, 2)   # 3: direction changes allowed
+        for k in self._revolutions(c, p - y, law_delta):
+            coef = quintic(p - y - k * self._modulo_length(), d0, dd0)
+            if chosen is None:
+                chosen = (k, coef)
+            if not one_way or self._monotonic(c, coef, x, length, law_delta):
+                chosen = (k, coef)
+                break
+        assert chosen is not None
+        k, c.blend = chosen
+        self._shift_law(c, k)
         c.blend_x0 = x
         c.blend_len = length
         if c.law == CAM:
             c.extra["inside"] = self._cam_inside(c, x)
         self._couple(c, t, Planner.hold(t, 0.0))
+
+    def _modulo_length(self: "Axis") -> float:
+        return self.eff["Modulo.Length"] if self.eff["Modulo.Enable"] else 0.0
+
+    def _revolutions(self: "Axis", c: Coupling, e0: float, law_delta: float) -> list[int]:
+        """Candidate revolutions k (the following axis's synchronous position shifted by k modulo
+        lengths), best first: the smallest correction that keeps the net travel in ``SyncDirection``."""
+        length = self._modulo_length()
+        if not length:
+            return [0]
+        direction = c.job.extra.get("sync_direction", 3)
+        base = round(e0 / length)
+        ks = [base + d for d in (0, -1, 1)]
+        # shortest correction; of two equally short ones the one travelling with the leading value
+        ks.sort(key=lambda k: (abs(e0 - k * length), -(law_delta - (e0 - k * length)) * (1 if law_delta >= 0 else -1)))
+        if direction == 1:
+            ks = sorted((k for k in range(base - 3, base + 4) if law_delta - (e0 - k * length) >= -1e-9),
+                        key=lambda k: law_delta - (e0 - k * length))
+        elif direction == 2:
+            ks = sorted((k for k in range(base - 3, base + 4) if law_delta - (e0 - k * length) <= 1e-9),
+                        key=lambda k: -(law_delta - (e0 - k * length)))
+        return ks[:3]
+
+    def _monotonic(self: "Axis", c: Coupling, coef, x0: float, length: float, law_delta: float) -> bool:
+        """Does the following axis move in one direction only during the blend (sampled)?"""
+        sign = 1.0 if c.job.extra.get("sync_direction", 3) == 1 else -1.0
+        s = np.linspace(0.0, 1.0, 33)
+        e = coef[0] + s * (coef[1] + s * (coef[2] + s * (coef[3] + s * (coef[4] + s * coef[5]))))
+        law = self.ctl.sync.law_at
+        ys = np.array([law(c, x0 + si * length, 0.0, 0.0)[0] for si in s]) + e
+        step = np.diff(ys) * sign
+        return bool(np.all(step >= -1e-9 * max(1.0, float(np.max(np.abs(ys))))))
+
+    def _shift_law(self: "Axis", c: Coupling, k: int) -> None:
+        if k:
+            shift = k * self._modulo_length()
+            if c.law == GEAR:
+                c.offset += shift
+            else:
+                c.slave_offset += shift
 
     def _cam_inside(self: "Axis", c: Coupling, x: float) -> bool:
         u = (x - c.master_offset) / c.master_scaling

@@ -341,6 +341,13 @@ class AxisTagsMixin:
         getter = self._dynamic.get(canon)
         if getter is not None:
             return lambda: getter(self)  # type: ignore[arg-type]
+        word, _, bit = canon.rpartition(".")
+        word_getter = self._dynamic.get(word)
+        if word_getter is not None and bit:
+            value = word_getter(self)  # type: ignore[arg-type]
+            if hasattr(value, "bits"):                    # a bit of a status word: "StatusWord.X22"
+                getattr(value, bit)                       # raises AttributeError for an unknown bit
+                return lambda: getattr(word_getter(self), bit)  # type: ignore[arg-type]
         schema = self.schema  # type: ignore[attr-defined]
         canon = schema.canonical(path)
         if canon in schema.params and schema.params[canon].access != P.P:

@@ -181,6 +181,17 @@ class PositioningAxis1500(SuperimposedMixin, LeadingValueMixin, PositioningAxis)
         if self._plan_job(job, t):
             self._note_limits(self.motion.last_limits)
 
+    def _replan(self) -> None:
+        """A changed tag (velocity override, dynamic limits) acts at once on the running job, with the
+        job's dynamics (§A.1.21)."""
+        job = self.job
+        if job is not None and job.busy and job.kind in (JobKind.VELOCITY, JobKind.JOG) and not self._interpolating \
+                and not job.jog_released:
+            job.in_velocity = False
+            self._plan_job(job, self.now)
+            return
+        super()._replan()
+
     def _note_limits(self, lim) -> None:
         self.warnings = set(lim.limited) if lim is not None else set()
 

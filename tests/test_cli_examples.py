@@ -108,3 +108,12 @@ def test_readme_python_example_runs():
     readme = (ROOT / "README.md").read_text()
     block = re.search(r"## Python API\n\n```python\n(.+?)\n```", readme, re.S).group(1)
     exec(compile(block, "README.md", "exec"), {})
+
+
+def test_readme_synchronous_operation_example_runs(capsys):
+    """The S7-1500T example of the README runs as shown and reaches synchronism at the positions."""
+    readme = (ROOT / "README.md").read_text()
+    block = re.search(r"## Synchronous operation \(S7-1500T\)\n\n```python\n(.+?)\n```", readme, re.S).group(1)
+    exec(compile(block, "README.md", "exec"), {})
+    flag, deviation = capsys.readouterr().out.split()
+    assert flag == "True" and abs(float(deviation)) < 1e-9

@@ -6,7 +6,7 @@ import pytest
 
 from plcmotion.s7_1500 import (MC_CamIn, MC_GearIn, MC_GearInPos, MC_Halt, MC_InterpolateCam,
                                MC_LeadingValueAdditive, MC_MoveVelocity, MC_PhasingAbsolute, MC_PhasingRelative,
-                               MC_Power, MC_SynchronizedMotionSimulation)
+                               MC_SynchronizedMotionSimulation)
 
 from _s7_1500_rig import Rig
 

@@ -387,3 +387,81 @@ class JogInstruction(Instruction):
         else:
             self._clear()
             object.__setattr__(self, "_final", None)
+
+
+class PowerInstruction(Instruction):
+    """MC_Power machinery: Enable, StartMode, StopMode -> Status, Busy, Error, ErrorID (dialects add
+    ErrorInfo).  A dialect provides ``_mode_error(input name)`` and ``_alarm_codes(axis)``."""
+
+    INPUTS = {"Axis": None, "Enable": False, "StartMode": 1, "StopMode": 0}
+
+    def _mode_error(self, name: str) -> tuple[int, int]:
+        raise NotImplementedError  # pragma: no cover
+
+    def _alarm_codes(self, axis: Any) -> tuple[int, int]:
+        raise NotImplementedError  # pragma: no cover
+
+    def _reinit(self) -> None:
+        super()._reinit()
+        object.__setattr__(self, "_stop_mode", 0)
+
+    def _evaluate(self) -> None:
+        enable = as_bool(self, "Enable", self.Enable)
+        try:
+            axis = self._axis()
+        except InstructionError as err:
+            self._status(None, enable, (err.error_id, err.error_info))
+            return
+        own: tuple[int, int] | None = None
+        stop_mode, start_mode = as_int(self.StopMode), as_int(self.StartMode)
+        if stop_mode not in (0, 1, 2):
+            own = self._mode_error("StopMode")
+        elif start_mode not in (0, 1):
+            own = self._mode_error("StartMode")
+        else:
+            object.__setattr__(self, "_stop_mode", stop_mode)   # taken over while Enable = TRUE
+        if own is not None and enable and axis.power_owner is not self and axis.state == "disabled":
+            # an invalid mode keeps the axis from being enabled; correct it and the enable proceeds
+            self._status(axis, enable, own)
+            return
+        reject = axis.power(self, enable, start_mode if start_mode in (0, 1) else 1, self._stop_mode)
+        if reject is not None:
+            self._status(axis, enable, self._fault_codes(reject))
+            return
+        self._status(axis, enable, own)
+
+    def _status(self, axis: Any, enable: bool, own: tuple[int, int] | None) -> None:
+        if axis is None:
+            status, busy = False, enable
+        else:
+            owner = axis.power_owner is self
+            status = owner and axis.state in ("enabled", "disabling")
+            busy = enable or (owner and axis.state == "disabling")
+            if own is None and axis.alarms:
+                own = self._alarm_codes(axis)        # the errors of the axis show here too
+        values = {"Status": status, "Busy": busy, "Error": own is not None, "ErrorID": own[0] if own else 0}
+        if "ErrorInfo" in self.OUTPUTS:
+            values["ErrorInfo"] = own[1] if own else 0
+        self._out(**values)
+
+
+class ReferenceMarkOutput:
+    """MC_Home's ReferenceMarkPosition: shown with Done and kept valid after Done has gone."""
+
+    def _show(self, output: str, error_id: int, error_info: int) -> None:
+        super()._show(output, error_id, error_info)  # type: ignore[misc]
+        if output == "Done" and self._done_job is not None:
+            self._out(ReferenceMarkPosition=self._done_job.reference_position)  # type: ignore[attr-defined]
+
+    def _clear_outputs(self) -> None:
+        keep = self.ReferenceMarkPosition  # type: ignore[attr-defined]
+        super()._clear_outputs()  # type: ignore[misc]
+        self._out(ReferenceMarkPosition=keep)  # type: ignore[attr-defined]
+
+    def _final_for(self, job: Job):
+        object.__setattr__(self, "_done_job", job)
+        return super()._final_for(job)  # type: ignore[misc]
+
+    def _reinit(self) -> None:
+        super()._reinit()  # type: ignore[misc]
+        object.__setattr__(self, "_done_job", None)

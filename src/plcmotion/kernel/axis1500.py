@@ -106,24 +106,11 @@ class PositioningAxis1500(SuperimposedMixin, LeadingValueMixin, PositioningAxis)
 
     # --- jobs -------------------------------------------------------------------------------------------
     def check_start(self, job: Job) -> Fault | None:
-        if self.ctl.mode != "RUN":
-            return F.reject(F.REJECTED, "starting_up")
-        if self.state != ENABLED:
-            return F.reject(F.NOT_ENABLED)
-        blocking = self._blocking_alarm()
-        if blocking is not None:
-            return blocking
-        if self.stop_job is not None and job.kind != JobKind.STOP:
+        """The kernel's start conditions, and the lock of a running or held MC_Stop."""
+        if self.stop_job is not None and job.kind != JobKind.STOP and self.ctl.mode == "RUN" \
+                and self.state == ENABLED and self._blocking_alarm() is None:
             return F.reject(F.STOP_ACTIVE)
-        if len(self.busy_commands) >= self.max_commands:
-            return F.reject(F.TOO_MANY_COMMANDS)
-        if job.kind == JobKind.ABSOLUTE and not self.homed:
-            return F.reject(F.NOT_HOMED)
-        needs_control = job.kind in POSITIONING_KINDS or job.kind == JobKind.HOME_ACTIVE or (
-            job.kind in (JobKind.VELOCITY, JobKind.JOG) and job.position_controlled)
-        if self.servo and needs_control and not self.sensor_valid:
-            return F.reject(F.REJECTED, "position_control_required")
-        return None
+        return super().check_start(job)
 
     def submit(self, job: Job) -> None:
         """Start a single-axis job with the override response of §9.3.1 / §9.3.2."""

@@ -15,7 +15,6 @@ of width ``Hysteresis.Value`` (continuous, lagging by half the width; docs/decis
 """
 from __future__ import annotations
 
-import math
 from collections import deque
 from typing import TYPE_CHECKING, Any
 
@@ -112,6 +111,17 @@ class DelayLine:
         return p, v0 + w * (v1 - v0), a0 + w * (a1 - a0)
 
 
+def setpoint_at(axis: Any, t: float) -> tuple[float, float, float]:
+    """The setpoint of ``axis`` at ``t``: the last servo cycle's values carried forward (for code that runs
+    between servo cycles or before the interpolator of the present one)."""
+    b, i = axis.ctl.bank, axis.index
+    p, v, a = float(b.sp_p[i]), float(b.sp_v[i]), float(b.sp_a[i])
+    dt = t - axis.ctl._bank_time
+    if dt > 0.0:
+        p, v = p + dt * (v + 0.5 * dt * a), v + dt * a
+    return p, v, a
+
+
 class LeadingValueMixin:
     """What a leading axis offers its followers (mixed into the S7-1500 axes)."""
 
@@ -141,12 +151,7 @@ class LeadingValueMixin:
     def lv_value(self: "PositioningAxis1500", mode: str, t: float) -> tuple[float, float, float]:
         """The leading value this TO provides with coupling type ``mode`` at time ``t``."""
         if mode == "setpoint":
-            b, i = self.ctl.bank, self.index
-            p, v, a = float(b.sp_p[i]), float(b.sp_v[i]), float(b.sp_a[i])
-            dt = t - self.ctl._bank_time
-            if dt > 0.0:
-                p, v = p + dt * (v + 0.5 * dt * a), v + dt * a
-            return p, v, a
+            return setpoint_at(self, t)
         if mode == "actual":
             ex = self._ensure_extrapolator()
             return ex.position, ex.velocity, 0.0

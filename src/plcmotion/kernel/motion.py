@@ -9,7 +9,6 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from . import faults as F
 from .jobs import Job, JobKind
 from .profiles import INF, Limits, Planner, Profile, ReversalRequired, first_time_at_velocity
 

@@ -317,15 +317,15 @@ def defaults() -> dict[str, Any]:
     return {p.path: p.start for p in _PARAMS}
 
 
-def check_values(values: Mapping[str, Any]) -> tuple[dict[str, Any], list[Issue]]:
-    """Normalise and check single values; returns (normalised values, issues)."""
+def _check(params: Mapping[str, Param], canon, suggest, values: Mapping[str, Any]
+           ) -> tuple[dict[str, Any], list[Issue]]:
     out: dict[str, Any] = {}
     issues: list[Issue] = []
     for raw_path, value in values.items():
-        path = canonical(raw_path)
-        param = SCHEMA.get(path)
+        path = canon(raw_path)
+        param = params.get(path)
         if param is None:
-            issues.append(Issue(raw_path, "unknown", value, _suggest(path)))
+            issues.append(Issue(raw_path, "unknown", value, suggest(path)))
             continue
         reason, norm = param.check(value)
         if reason is not None:
@@ -333,6 +333,11 @@ def check_values(values: Mapping[str, Any]) -> tuple[dict[str, Any], list[Issue]
         else:
             out[path] = norm
     return out, issues
+
+
+def check_values(values: Mapping[str, Any]) -> tuple[dict[str, Any], list[Issue]]:
+    """Normalise and check single values; returns (normalised values, issues)."""
+    return _check(SCHEMA, canonical, _suggest, values)
 
 
 # Conversion to pulses for the PTO limits of §2.1.1 (limits are given in pulses/s, pulses/s^2, pulses/s^3).
@@ -519,20 +524,7 @@ class AxisSchema:
         return "did you mean " + " or ".join(near) + "?" if near else f"not a tag of the {self.title}"
 
     def check_values(self, values: Mapping[str, Any]) -> tuple[dict[str, Any], list[Issue]]:
-        out: dict[str, Any] = {}
-        issues: list[Issue] = []
-        for raw_path, value in values.items():
-            path = self.canonical(raw_path)
-            param = self.params.get(path)
-            if param is None:
-                issues.append(Issue(raw_path, "unknown", value, self.suggest(path)))
-                continue
-            reason, norm = param.check(value)
-            if reason is not None:
-                issues.append(Issue(path, reason, value, "allowed: " + param.allowed()))
-            else:
-                out[path] = norm
-        return out, issues
+        return _check(self.params, self.canonical, self.suggest, values)
 
     def validate(self, values: Mapping[str, Any], base: Mapping[str, Any] | None = None
                  ) -> tuple[dict[str, Any], list[Issue]]:

@@ -22,6 +22,7 @@ from . import faults as F
 from . import override as O
 from .faults import Fault, Reaction
 from .jobs import Job, JobKind, JobState
+from .leading import setpoint_at
 from .profiles import INF, Planner, PlanningError, Profile
 from .sync import APPENDING, CAM, GEAR, ONCE, Coupling, CouplingCycle, quintic
 
@@ -124,12 +125,7 @@ class SynchronousMixin:
     # --- the current state of the following axis -------------------------------------------------------
     def _coupled_state_at(self: "Axis", t: float) -> tuple[float, float, float]:
         """Setpoint of a coupled axis at ``t``: the last servo cycle's values carried forward."""
-        b, i = self.ctl.bank, self.index
-        p, v, a = float(b.sp_p[i]), float(b.sp_v[i]), float(b.sp_a[i])
-        dt = t - self.ctl._bank_time
-        if dt > 0.0:
-            p, v = p + dt * (v + 0.5 * dt * a), v + dt * a
-        return p, v, a
+        return setpoint_at(self, t)
 
     def total_state_at(self: "Axis", t: float) -> tuple[float, float, float]:
         """Total setpoint (basic motion, synchronous operation and superimposed motion)."""

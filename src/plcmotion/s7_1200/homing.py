@@ -4,6 +4,7 @@ from __future__ import annotations
 from typing import Any
 
 from ..kernel.jobs import Job, JobKind
+from .. import fb
 from . import errors as E
 from .base import ExecuteInstruction, InstructionError, as_int, as_real
 
@@ -22,7 +23,7 @@ def check_position(value: Any, error_id: int = E.POSITION) -> float:
     return x
 
 
-class MC_Home(ExecuteInstruction):  # noqa: N801
+class MC_Home(fb.ReferenceMarkOutput, ExecuteInstruction):  # noqa: N801
     """Home the axis or set its reference point.
 
     Mode 0: position := Position; 1: position := position + Position; 2 passive and 3 active homing
@@ -61,21 +62,3 @@ class MC_Home(ExecuteInstruction):  # noqa: N801
         else:
             axis.home(job)
         return job
-
-    def _show(self, output: str, error_id: int, error_info: int) -> None:
-        super()._show(output, error_id, error_info)
-        if output == "Done" and self._done_job is not None:
-            self._out(ReferenceMarkPosition=self._done_job.reference_position)
-
-    def _clear_outputs(self) -> None:
-        keep = self.ReferenceMarkPosition            # stays valid after Done has gone
-        super()._clear_outputs()
-        self._out(ReferenceMarkPosition=keep)
-
-    def _final_for(self, job: Job):
-        object.__setattr__(self, "_done_job", job)
-        return super()._final_for(job)
-
-    def _reinit(self) -> None:
-        super()._reinit()
-        object.__setattr__(self, "_done_job", None)

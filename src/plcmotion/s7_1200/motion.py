@@ -12,7 +12,7 @@ from ..kernel.axis import PositioningAxis
 from ..kernel.jobs import Job, JobKind, JobState
 from . import errors as E
 from .. import fb
-from .base import ExecuteInstruction, Instruction, InstructionError, _S71200, as_bool, as_int, as_real
+from .base import ExecuteInstruction, InstructionError, _S71200, as_bool, as_int, as_real
 from .homing import check_position
 
 

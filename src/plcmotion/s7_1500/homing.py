@@ -13,13 +13,14 @@ from typing import Any
 from ..kernel.axis1500 import PositioningAxis1500
 from ..kernel.external_encoder import ExternalEncoder
 from ..kernel.jobs import Job, JobKind, JobState
+from .. import fb
 from . import errors as E
 from .base import ExecuteInstruction, InstructionError, as_int, real
 
 MODES = (0, 1, 2, 3, 5, 6, 7, 8, 9, 10)
 
 
-class MC_Home(ExecuteInstruction):  # noqa: N801
+class MC_Home(fb.ReferenceMarkOutput, ExecuteInstruction):  # noqa: N801
     INPUTS = {"Axis": None, "Execute": False, "Position": 0.0, "Mode": 0}
     OUTPUTS = {"Done": False, "Busy": False, "CommandAborted": False, "Error": False, "ErrorID": 0,
                "ReferenceMarkPosition": 0.0}
@@ -58,21 +59,3 @@ class MC_Home(ExecuteInstruction):  # noqa: N801
             axis.homed = False                  # passive homing with reset of the homing status
         axis.home(job)
         return job
-
-    def _show(self, output: str, error_id: int, error_info: int) -> None:
-        super()._show(output, error_id, error_info)
-        if output == "Done" and self._done_job is not None:
-            self._out(ReferenceMarkPosition=self._done_job.reference_position)
-
-    def _clear_outputs(self) -> None:
-        keep = self.ReferenceMarkPosition
-        super()._clear_outputs()
-        self._out(ReferenceMarkPosition=keep)
-
-    def _final_for(self, job: Job):
-        object.__setattr__(self, "_done_job", job)
-        return super()._final_for(job)
-
-    def _reinit(self) -> None:
-        super()._reinit()
-        object.__setattr__(self, "_done_job", None)

@@ -6,11 +6,12 @@ from typing import Any, ClassVar
 from ..kernel.axis1500 import PositioningAxis1500
 from ..kernel.external_encoder import ExternalEncoder
 from ..kernel.jobs import Job, JobKind, JobState
+from .. import fb
 from . import errors as E
-from .base import ExecuteInstruction, Instruction, InstructionError, as_bool, as_int
+from .base import ExecuteInstruction, _S71500, as_bool
 
 
-class MC_Power(Instruction):  # noqa: N801 - instruction name of the manual
+class MC_Power(_S71500, fb.PowerInstruction):  # noqa: N801 - instruction name of the manual
     """Enable or disable a technology object.
 
     StartMode: 0 not position-controlled, 1 position-controlled.  StopMode: 0 emergency stop
@@ -20,45 +21,14 @@ class MC_Power(Instruction):  # noqa: N801 - instruction name of the manual
     operation; disabling a leading axis does not (§9.1).
     """
 
-    INPUTS = {"Axis": None, "Enable": False, "StartMode": 1, "StopMode": 0}
     OUTPUTS = {"Status": False, "Busy": False, "Error": False, "ErrorID": 0}
     AXIS_TYPES: ClassVar[tuple[type, ...]] = (PositioningAxis1500, ExternalEncoder)
 
-    def _reinit(self) -> None:
-        super()._reinit()
-        object.__setattr__(self, "_stop_mode", 0)
+    def _mode_error(self, name: str) -> tuple[int, int]:
+        return E.parameter(name), 0
 
-    def _evaluate(self) -> None:
-        enable = as_bool(self, "Enable", self.Enable)
-        try:
-            axis = self._axis()
-        except InstructionError as err:
-            self._out(Status=False, Busy=enable, Error=True, ErrorID=err.error_id)
-            return
-        own: int | None = None
-        stop_mode, start_mode = as_int(self.StopMode), as_int(self.StartMode)
-        if stop_mode not in (0, 1, 2):
-            own = E.parameter("StopMode")
-        elif start_mode not in (0, 1):
-            own = E.parameter("StartMode")
-        else:
-            object.__setattr__(self, "_stop_mode", stop_mode)
-        if own is not None and enable and axis.power_owner is not self and axis.state == "disabled":
-            self._status(axis, enable, own)
-            return
-        reject = axis.power(self, enable, start_mode if start_mode in (0, 1) else 1, self._stop_mode)
-        if reject is not None:
-            self._status(axis, enable, E.code(reject))
-            return
-        self._status(axis, enable, own)
-
-    def _status(self, axis: Any, enable: bool, own: int | None) -> None:
-        owner = axis.power_owner is self
-        status = owner and axis.state in ("enabled", "disabling")
-        busy = enable or (owner and axis.state == "disabling")
-        if own is None and axis.alarms:
-            own = E.TO_ALARM                 # the cause is in <TO>.ErrorDetail / ErrorWord
-        self._out(Status=status, Busy=busy, Error=own is not None, ErrorID=own or 0)
+    def _alarm_codes(self, axis: Any) -> tuple[int, int]:
+        return E.TO_ALARM, 0                     # the cause is in <TO>.ErrorDetail / ErrorWord
 
 
 class MC_Reset(ExecuteInstruction):  # noqa: N801

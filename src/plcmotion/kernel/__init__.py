@@ -3,7 +3,8 @@
 The kernel knows no dialect, file format or network; dialects (``plcmotion.s7_1200``) map their
 instructions onto its jobs and its faults onto their ErrorIDs.
 """
-from .axis import ConfigurationError, PositioningAxis, TagAccessError
+from .axis import ConfigurationError, PositioningAxis
+from .config import TagAccessError
 from .faults import Fault, Reaction
 from .jobs import Job, JobKind, JobState
 from .runtime import RUN, STOP, Controller, ControllerStopped, RunTimeout

@@ -15,7 +15,7 @@ from .faults import Fault, Reaction
 from .jobs import MOTION_KINDS, POSITIONING_KINDS, Job, JobKind, JobState
 from .motion import DirectionFault, MotionPlanner, Plan, limits, modulo_target, wrap
 from .profiles import Planner, PlanningError, Profile
-from .config import ConfigMixin, TagAccessError
+from .config import ConfigMixin
 from .homing import HomingMixin
 from .switches import SwitchesMixin
 from .table_run import TableMixin

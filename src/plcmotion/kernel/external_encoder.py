@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any, Callable, Mapping
 import numpy as np
 
 from . import faults as F
-from .axis import TagAccessError
+from .config import TagAccessError
 from .faults import Fault, Reaction
 from .jobs import Job, JobState
 from .leading import Extrapolator

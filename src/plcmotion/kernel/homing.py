@@ -283,7 +283,6 @@ class HomingMixin:
         rising, falling = cam and not x.get("cam", cam), (not cam) and x.get("cam", cam)
         x["cam"] = cam
         phase = x.get("phase")
-        d = x["d"]
         latched = self.drive.zero_mark_latched() if x.get("method") in (0, 1) else None
         if latched is not None and phase == "zero_mark":
             self._homing_event(job, latched, t)

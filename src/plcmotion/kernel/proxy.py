@@ -20,7 +20,7 @@ from collections import deque
 from typing import TYPE_CHECKING, Any, Callable, Mapping
 
 from . import faults as F
-from .axis import TagAccessError
+from .config import TagAccessError
 from .faults import Fault, Reaction
 from .leading_value import LeadingValueSample, LeadingValueSource
 from .parameters import E12, REAL, RW, AxisSchema, Param

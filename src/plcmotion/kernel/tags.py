@@ -214,7 +214,7 @@ class _StatusView:
         return _StatusView(self._axis, path)
 
     def __setattr__(self, name: str, value: Any) -> None:
-        from .axis import TagAccessError
+        from .config import TagAccessError
 
         raise TagAccessError(f"{self._axis.name}.{self._prefix}.{name} is a status tag and cannot be written")
 

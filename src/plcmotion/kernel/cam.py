@@ -37,6 +37,7 @@ import numpy as np
 MAX_POINTS = 1000
 MAX_SEGMENTS = 50
 JOIN_GAP = 1.0e-4                 # §6.2.5.7: segment gaps below this are joined, not interpolated
+TAG_LIMIT = 1.0e12                # §A.2.2, §A.2.4: value range of Point[] and Segment[] elements
 LINEAR, CUBIC_SPLINE, BEZIER = 0, 1, 2
 _BEZIER_SUBPIECES = 8             # cubic Hermite pieces per B-spline span (exact values and slopes)
 _DEG = 7                          # coefficients per piece (degree 6)
@@ -358,21 +359,39 @@ def _spline_end_slopes(g: _Gap) -> tuple[float, float]:
     return float(d(g.nodes[0][0])), float(d(g.nodes[-1][0]))
 
 
+def _bezier_handle(node: tuple[float, float], towards: tuple[float, float], slope: float,
+                   lo: float, hi: float) -> tuple[float, float]:
+    """Control point on the tangent ``slope`` through ``node``: a third of the way to ``towards``, or
+    nearer where that would leave the value range (the tangent itself is kept: C1 with segments and
+    the boundary condition come first; a handle shorter than a tenth of that may leave the range)."""
+    (x0, y0), (x1, _) = node, towards
+    h = (x1 - x0) / 3.0
+    y = y0 + slope * h
+    if (y > hi or y < lo) and slope:
+        fit = ((hi if y > hi else lo) - y0) / slope
+        h = math.copysign(max(abs(fit), abs(h) / 10.0), h)
+    return x0 + h, y0 + slope * h
+
+
+def _bezier_slope_range(g: "_Gap", lo: float, hi: float, right: bool) -> tuple[float, float]:
+    """Slopes at one end of ``g`` whose full-length Bézier handle stays within [lo, hi]."""
+    (x0, y0), (x1, _) = (g.nodes[-1], g.nodes[-2]) if right else (g.nodes[0], g.nodes[1])
+    h = (x1 - x0) / 3.0
+    a, b = (lo - y0) / h, (hi - y0) / h
+    return (min(a, b), max(a, b))
+
+
 def _pieces_bezier(g: _Gap, lo: float, hi: float) -> tuple[list[float], list[np.ndarray]]:
     """Clamped cubic B-spline with the nodes as control points, as cubic Hermite pieces in x."""
     from scipy.interpolate import BSpline
 
     ctrl = list(g.nodes)
-    # end tangents: along the adjoining segment (or the cyclic slope); a control point is inserted on
-    # the tangent a third of the way to the next node, its value kept within the value range
+    # end tangents: along the adjoining segment (or the boundary-condition slope); a control point on
+    # the tangent, a third of the way to the next node or nearer so that it stays within the value range
     if g.slope_left is not None and len(ctrl) >= 2:
-        (x0, y0), (x1, _) = ctrl[0], ctrl[1]
-        dx = (x1 - x0) / 3.0
-        ctrl.insert(1, (x0 + dx, min(max(y0 + g.slope_left * dx, lo), hi)))
+        ctrl.insert(1, _bezier_handle(ctrl[0], ctrl[1], g.slope_left, lo, hi))
     if g.slope_right is not None and len(ctrl) >= 2:
-        (x0, _), (x1, y1) = ctrl[-2], ctrl[-1]
-        dx = (x1 - x0) / 3.0
-        ctrl.insert(len(ctrl) - 1, (x1 - dx, min(max(y1 - g.slope_right * dx, lo), hi)))
+        ctrl.insert(len(ctrl) - 1, _bezier_handle(ctrl[-1], ctrl[-2], g.slope_right, lo, hi))
     n = len(ctrl)
     if n == 2:
         return _pieces_linear(_Gap(ctrl, None, None, False, False))
@@ -394,6 +413,18 @@ def _pieces_bezier(g: _Gap, lo: float, hi: float) -> tuple[list[float], list[np.
     return bp, cs
 
 
+def _bezier_boundary_slope(first: "_Gap", last: "_Gap", lo: float, hi: float) -> float:
+    """The common end slope of a Bézier cam with BoundaryConditions = 1: the mean of the chords at
+    the two ends, moved into the slopes whose handles keep the value range (that interval always
+    holds 0, so both conditions can be met)."""
+    (x0, y0), (x1, y1) = first.nodes[0], first.nodes[1]
+    (xa, ya), (xb, yb) = last.nodes[-2], last.nodes[-1]
+    s = 0.5 * ((y1 - y0) / (x1 - x0) + (yb - ya) / (xb - xa))
+    a1, b1 = _bezier_slope_range(first, lo, hi, right=False)
+    a2, b2 = _bezier_slope_range(last, lo, hi, right=True)
+    return min(max(s, max(a1, a2)), min(b1, b2))
+
+
 def interpolate(points: Sequence[tuple[float, float]], segments: Sequence[SegmentDef],
                 mode: int = LINEAR, boundary: int = 0) -> CamCurve:
     """Close the gaps between points and segments (MC_InterpolateCam, §5.1, §9.2.1).
@@ -408,10 +439,14 @@ def interpolate(points: Sequence[tuple[float, float]], segments: Sequence[Segmen
     for i, (x, y) in enumerate(points):
         if not (math.isfinite(x) and math.isfinite(y)):
             raise CamDefinitionError("point", f"point {i + 1}: ({x!r}, {y!r}) is not a finite number pair")
+        if abs(x) > TAG_LIMIT or abs(y) > TAG_LIMIT:
+            raise CamDefinitionError("point", f"point {i + 1}: ({x!r}, {y!r}) outside -1.0E12 to 1.0E12")
     for i, s in enumerate(segments):
         values = (s.xmin, s.xmax, *s.a, s.sine_amplitude, s.sine_period, s.sine_phase)
         if not all(math.isfinite(v) for v in values):
             raise CamDefinitionError("segment", f"segment {i + 1}: values must be finite numbers")
+        if any(abs(v) > TAG_LIMIT for v in values):
+            raise CamDefinitionError("segment", f"segment {i + 1}: values outside -1.0E12 to 1.0E12")
         if not s.xmax > s.xmin:
             raise CamDefinitionError("segment", f"segment {i + 1}: xmax ({s.xmax!r}) must be greater than "
                                                 f"xmin ({s.xmin!r})")
@@ -447,6 +482,9 @@ def interpolate(points: Sequence[tuple[float, float]], segments: Sequence[Segmen
         if right is not None:
             order.append(right)
 
+    ys_all = [p[1] for p in pts] + [f.seg.value(v) for f in cover for v in (f.xa, f.xb)]
+    lo, hi = min(ys_all), max(ys_all)
+
     # cyclic boundary condition: equal slope (and for splines curvature) at the start and the end
     trend_periodic = False
     if boundary == 1 and mode != LINEAR:
@@ -456,9 +494,7 @@ def interpolate(points: Sequence[tuple[float, float]], segments: Sequence[Segmen
             if mode == CUBIC_SPLINE:
                 trend_periodic = True
             else:
-                (x0, y0), (x1, y1) = first.nodes[0], first.nodes[1]
-                (xa, ya), (xb, yb) = first.nodes[-2], first.nodes[-1]
-                s = 0.5 * ((y1 - y0) / (x1 - x0) + (yb - ya) / (xb - xa))
+                s = _bezier_boundary_slope(first, first, lo, hi)
                 first.slope_left = first.slope_right = s
         else:
             s_start = cover[0].seg.slope(cover[0].xa) if first is None and cover else None
@@ -467,17 +503,13 @@ def interpolate(points: Sequence[tuple[float, float]], segments: Sequence[Segmen
                 if mode == CUBIC_SPLINE:
                     s = 0.5 * (_spline_end_slopes(first)[0] + _spline_end_slopes(last)[1])
                 else:
-                    (x0, y0), (x1, y1) = first.nodes[0], first.nodes[1]
-                    (xa, ya), (xb, yb) = last.nodes[-2], last.nodes[-1]
-                    s = 0.5 * ((y1 - y0) / (x1 - x0) + (yb - ya) / (xb - xa))
+                    s = _bezier_boundary_slope(first, last, lo, hi)
                 first.slope_left = last.slope_right = s
             elif first is not None and s_end is not None:
                 first.slope_left = s_end
             elif last is not None and s_start is not None:
                 last.slope_right = s_start
 
-    ys_all = [p[1] for p in pts] + [f.seg.value(v) for f in cover for v in (f.xa, f.xb)]
-    lo, hi = min(ys_all), max(ys_all)
     bp: list[float] = []
     coef: list[np.ndarray] = []
     sine: list[tuple[float, float, float]] = []

@@ -408,7 +408,9 @@ class SyncStage:
             start, length = lv.cstart, lv.clength
             r = (u - start) * lv.inv_clength
             cyc = np.floor(r).astype(np.int64)
-            inside = (u > start) & (u < lv.cend)
+            # a leading value standing on a cam end is still inside; moving away past it, it has left
+            inside = (((u > start) | ((u == start) & (uv >= 0.0)))
+                      & ((u < lv.cend) | ((u == lv.cend) & (uv <= 0.0))))
             if lv.all_cyclic:
                 uw = start + (r - cyc) * length
             else:

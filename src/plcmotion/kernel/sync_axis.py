@@ -266,6 +266,15 @@ class SynchronousMixin(SyncModifiersMixin):
             self._activate_direct(c, t)
             return
         if spr == 4:                                  # CamIn: subsequent from the current leading value
+            if c.app_mode == ONCE:
+                # §5.4.3: a cam run once must define the leading values of the synchronization
+                u0 = (lv - c.master_offset) / c.master_scaling
+                u1 = (lv + d * length - c.master_offset) / c.master_scaling
+                tol = 1e-9 * max(1.0, abs(c.curve.length))
+                if not all(c.curve.start - tol <= u <= c.curve.end + tol for u in (u0, u1)):
+                    job.finish(JobState.ERROR, F.reject(
+                        F.SYNC_POSITION_RANGE, "", f"leading value {lv!r} (+ MasterStartDistance) outside the cam"))
+                    return
             self._override(O.SYNC_ACTIVE, t, job)
             self._activate_blend(c, t, lv + d * length, sync_offset_ref=None)
             return
@@ -418,6 +427,7 @@ class SynchronousMixin(SyncModifiersMixin):
             self.raise_alarm(F.alarm(F.INTERNAL, "planning", Reaction.EMERGENCY, str(exc)), job=job)
             return
         self._leave_waiting(c)
+        c.extra["sync_x"] = c.job.extra["sync_u"]
         self._couple(c, t, rel)
 
     def _slave_correction(self: "Axis", c: Coupling, e0: float, law_delta: float, shift_law: bool = False) -> float:
@@ -442,6 +452,8 @@ class SynchronousMixin(SyncModifiersMixin):
             c.master_offset = x - u_sync * c.master_scaling
         rel = Planner.hold(t, 0.0)
         job.in_sync = True
+        c.extra["inside"] = self._cam_inside(c, x)
+        c.extra["sync_x"] = x
         self._couple(c, t, rel)
 
     def _activate_blend(self: "Axis", c: Coupling, t: float, x_end: float, sync_offset_ref) -> None:
@@ -474,6 +486,7 @@ class SynchronousMixin(SyncModifiersMixin):
         self._shift_law(c, k)
         c.blend_x0 = x
         c.blend_len = length
+        c.extra["sync_x"] = x_end
         if c.law == CAM:
             c.extra["inside"] = self._cam_inside(c, x)
         self._couple(c, t, Planner.hold(t, 0.0))
@@ -520,7 +533,7 @@ class SynchronousMixin(SyncModifiersMixin):
 
     def _cam_inside(self: "Axis", c: Coupling, x: float) -> bool:
         u = (x - c.master_offset) / c.master_scaling
-        return bool(c.curve.start < u < c.curve.end)
+        return bool(c.curve.start <= u <= c.curve.end)
 
     def _trigger(self: "Axis", c: Coupling, t: float) -> None:
         """The leading value crossed the start position of a waiting GearInPos/CamIn (SPR 1, 3)."""
@@ -601,11 +614,25 @@ class SynchronousMixin(SyncModifiersMixin):
                 self.ctl.sync.changed()
         elif kind == "cam_wrap":
             if c is self.coupling:
-                c.job.end_of_profile += 1
+                # EndOfProfile reports a cam end passed in synchronous operation: the cycle boundary
+                # that a synchronization crosses (e.g. at MasterSyncPosition 0) is not one (§9.1.5)
+                if c.job.in_sync and self._cam_end_passed(c, arg):
+                    c.job.end_of_profile += 1
                 c.cam_cycle = arg
         elif kind == "cam_end":
             if c is self.coupling and c.job.in_sync:
                 self._cam_end(c, t)
+
+    def _cam_end_passed(self: "Axis", c: Coupling, cycle: int) -> bool:
+        """Is the cycle boundary just crossed (from ``c.cam_cycle`` to ``cycle``) the end of a cam cycle
+        the following axis has run in synchronism, i.e. does it lie beyond the synchronous position?"""
+        step = cycle - c.cam_cycle
+        if not step:
+            return False
+        u = c.curve.start + max(cycle, c.cam_cycle) * c.curve.length
+        x_b = c.master_offset + u * c.master_scaling
+        sync_x = c.extra.get("sync_x")
+        return sync_x is None or (x_b - sync_x) * step > 1e-9 * max(1.0, abs(c.curve.length * c.master_scaling))
 
     def _cam_end(self: "Axis", c: Coupling, t: float) -> None:
         """Non-cyclic camming ends at the cam's end point (§5.3): EndOfProfile, Busy and InSync FALSE."""

@@ -88,7 +88,9 @@ class _PositionedSync(_SyncInstruction):
         if spr in (1, 3, 4) and distance < 0.0:
             raise InstructionError(E.parameter("MasterStartDistance"))
         x["start_distance"] = distance
-        x["sync_direction"] = integer("SyncDirection", self.SyncDirection, (1, 2, 3))
+        # SyncDirection acts on a modulo following axis only (§9.1.2, §9.1.5): elsewhere it is not read
+        modulo = bool(slave.eff["Modulo.Enable"])
+        x["sync_direction"] = integer("SyncDirection", self.SyncDirection, (1, 2, 3)) if modulo else 3
         return x
 
 
@@ -147,8 +149,10 @@ class MC_CamIn(_PositionedSync):  # noqa: N801
             raise InstructionError(E.WRONG_TO if hasattr(cam, "ctl") else E.NOT_A_TO)
         self._register(cam)
         x = self._sync_inputs(slave, (0, 1, 2, 3, 4))
-        x["master_offset"] = real("MasterOffset", self.MasterOffset)
-        x["slave_offset"] = real("SlaveOffset", self.SlaveOffset)
+        # with direct synchronous setting the offsets come from the present positions (§5.4.4)
+        direct = x["spr"] == 2
+        x["master_offset"] = 0.0 if direct else real("MasterOffset", self.MasterOffset)
+        x["slave_offset"] = 0.0 if direct else real("SlaveOffset", self.SlaveOffset)
         ms = real("MasterScaling", self.MasterScaling)
         if ms <= 0.0:
             raise InstructionError(E.parameter("MasterScaling"))

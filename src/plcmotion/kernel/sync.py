@@ -28,6 +28,7 @@ from typing import TYPE_CHECKING, Any, Callable
 import numpy as np
 
 from .cam import CamCurve
+from .sync_limits import SwLimitWatch
 
 if TYPE_CHECKING:  # pragma: no cover
     from .runtime import Controller
@@ -241,6 +242,7 @@ class SyncStage:
         self._ext: list[Callable[[float], tuple[float, float, float]]] = []
         self.ext = np.zeros((3, 0))
         self._post: list[Callable[[float], None]] = []     # after the couplings (delayed values, outputs)
+        self.sw_limits = SwLimitWatch()                     # SW limit switches of coupled axes
         self.active = False
 
     def _update_active(self) -> None:
@@ -373,6 +375,11 @@ class SyncStage:
             self._run_level(lv, b, t)
             if self._dirty:                   # an event changed the couplings: rebuild, go on
                 self._compile()
+        for axis, side in self.sw_limits.check(b, self.ctl.servo_cycle):
+            try:
+                axis._sw_limit_in_reach(side, t)
+            except Exception as exc:   # isolate a defect to its axis
+                axis._internal_error(exc)
         for fn in self._post:
             fn(t)
 

@@ -23,6 +23,7 @@ from . import override as O
 from .faults import Fault, Reaction
 from .jobs import Job, JobKind, JobState
 from .leading import setpoint_at
+from .motion import limits
 from .profiles import INF, Planner, PlanningError, Profile
 from .sync import APPENDING, CAM, GEAR, ONCE, Coupling, CouplingCycle, quintic
 from .sync_modifiers import SyncModifiersMixin
@@ -140,7 +141,7 @@ class SynchronousMixin(SyncModifiersMixin):
     def sync_submit(self: "Axis", job: Job) -> None:
         """Start MC_GearIn, MC_GearInPos, MC_CamIn or a phasing job."""
         t = self.now
-        if job.kind in (JobKind.GEAR_IN_POS, JobKind.CAM_IN) and not self.ctl.family_t:
+        if job.kind in (JobKind.GEAR_IN_POS, JobKind.CAM_IN, JobKind.PHASING) and not self.ctl.family_t:
             job.finish(JobState.ERROR, F.reject(F.NOT_AVAILABLE, job.kind.value))
             return
         fault = self._sync_check(job)
@@ -203,6 +204,7 @@ class SynchronousMixin(SyncModifiersMixin):
 
     # --- MC_GearIn: synchronization over time with the job's dynamics --------------------------------
     def _start_gear_in(self: "Axis", c: Coupling, t: float) -> None:
+        self._limit_gear_in_dynamics(c.job)
         c.law = GEAR
         c.ratio = c.job.extra["ratio"]
         if c.mode == "setpoint" and not c.source.lv_position_controlled():
@@ -213,6 +215,13 @@ class SynchronousMixin(SyncModifiersMixin):
             return
         self._override(O.GEAR_IN, t, c.job)
         self._activate_gear_in(c, t)
+
+    def _limit_gear_in_dynamics(self: "Axis", job: Job) -> None:
+        """§4.4.1: MC_GearIn synchronizes within the configured dynamic limits of the following axis;
+        larger job values are limited and shown as a warning (WarningWord.X6, alarms 501-503)."""
+        lim = limits(self, None, job=job)
+        job.acceleration, job.deceleration, job.jerk = lim.acceleration, lim.deceleration, lim.jerk
+        self._note_limits(lim)
 
     def _activate_gear_in(self: "Axis", c: Coupling, t: float) -> None:
         x, xv, xa = self._lv_now(c.source, c.mode, t)
@@ -388,12 +397,13 @@ class SynchronousMixin(SyncModifiersMixin):
             return
         need = plan.t_end - t
         margin = 2.0 * self.ctl.servo_cycle
-        if remaining > speed * (need + margin):
+        arrival = _arrival_time(remaining, speed, xa * d)
+        if arrival > need + margin:
             c.extra["armed"] = True
             return
         if not c.extra.get("armed"):
             return                              # §5.4.1: the start position must be crossed first
-        self._activate_dynamic(c, t, remaining / speed)
+        self._activate_dynamic(c, t, arrival)
 
     def _plan_dynamic_sync(self: "Axis", c: Coupling, t: float, x: float, xv: float, xa: float,
                            duration: float | None) -> Profile | None:
@@ -569,6 +579,7 @@ class SynchronousMixin(SyncModifiersMixin):
                 u = (x - c.master_offset) / c.master_scaling
                 c.cam_cycle = math.floor((u - c.curve.start) / c.curve.length)
         self.coupling = c
+        self._watch_sw_limits()
         c.waiting = c.poll = False
         c.job.start_sync = True
         self._set_position_control(True)
@@ -623,6 +634,58 @@ class SynchronousMixin(SyncModifiersMixin):
             if c is self.coupling and c.job.in_sync:
                 self._cam_end(c, t)
 
+    # --- SW limit switches in synchronous operation (§4.4.1, §6.1.5.4) ------------------------------------
+    def _watch_sw_limits(self: "Axis") -> None:
+        """Have the sync stage watch the SW limit switches while the axis moves with a coupling."""
+        c = self.coupling
+        watch = self.ctl.sync.sw_limits
+        if c is not None and not c.simulated and self.sw_limits_effective():
+            e = self.eff
+            watch.set(self, e["PositionLimits_SW.MinPosition"], e["PositionLimits_SW.MaxPosition"],
+                      e["DynamicLimits.MaxDeceleration"], e["DynamicLimits.MaxJerk"] or INF)
+        else:
+            watch.clear(self)
+
+    def _replan(self: "Axis") -> None:
+        self._watch_sw_limits()              # limits, their activation or the homed state may have changed
+        super()._replan()                    # type: ignore[misc]
+
+    def _sw_limit_in_reach(self: "Axis", side: str, t: float) -> None:
+        """The coupled axis would pass a SW limit switch: the synchronous operation ends with the alarm
+        and the axis stops at the switch position with its configured dynamic limits (§4.4.1)."""
+        c = self.coupling
+        if c is None or c.simulated:
+            self._watch_sw_limits()
+            return
+        e = self.eff
+        limit = e["PositionLimits_SW.MaxPosition" if side == "max" else "PositionLimits_SW.MinPosition"]
+        fault = F.alarm(F.SW_LIMIT_MAX if side == "max" else F.SW_LIMIT_MIN, "reached")
+        if self.sup_job is not None and self.sup_job.busy:
+            self._finish_job(self.sup_job, JobState.ERROR, t, fault)
+        p, v, a = self._take_over(t)
+        self._end_coupling(c, JobState.ERROR, t, replan=False, fault=fault)
+        self._start_profile(self._stop_at(t, p, v, a, limit))
+        self.raise_alarm(fault)
+
+    def _stop_at(self: "Axis", t: float, p: float, v: float, a: float, limit: float) -> Profile:
+        """Braking to a standstill at ``limit`` without reversing; harder than the limits only where the
+        remaining distance needs it, and without a jerk limit before overshooting."""
+        e = self.eff
+        dec = e["DynamicLimits.MaxDeceleration"]
+        jerk = e["DynamicLimits.MaxJerk"] or INF
+        dist = limit - p
+        lo, hi = min(v, 0.0), max(v, 0.0)
+        planner = self.motion.planner
+        if dist * v > 0.0:
+            need = v * v / (2.0 * abs(dist))
+            for amax, j in ((max(dec, need), jerk), (max(dec, need) * (1 + 1e-6), INF)):
+                try:
+                    return planner.free(t, p, v, a, target_p=limit, vmin=lo, vmax=hi, amin=-amax, amax=amax,
+                                        jerk=j)
+                except PlanningError:
+                    continue
+        return planner.free(t, p, v, a, target_p=None, vmin=lo, vmax=hi, amin=-dec, amax=dec, jerk=INF)
+
     def _cam_end_passed(self: "Axis", c: Coupling, cycle: int) -> bool:
         """Is the cycle boundary just crossed (from ``c.cam_cycle`` to ``cycle``) the end of a cam cycle
         the following axis has run in synchronism, i.e. does it lie beyond the synchronous position?"""
@@ -654,6 +717,7 @@ class SynchronousMixin(SyncModifiersMixin):
             sp, sv, sa = self.sup_state_at(t)
             self._decoupled_state = (p - sp, v - sv, a - sa)
         self.coupling = None
+        self._watch_sw_limits()
         self.ctl.sync.remove(c)
         if self.phasing_job is not None and self.phasing_job.busy:
             self._finish_job(self.phasing_job, JobState.ABORTED, t)
@@ -690,6 +754,19 @@ class SynchronousMixin(SyncModifiersMixin):
             self._finish_coupling_job(w, state, t, fault)
         if active and self.coupling is not None:
             self._end_coupling(self.coupling, state, t, replan=True, fault=fault)
+
+
+def _arrival_time(remaining: float, speed: float, acc: float) -> float:
+    """Time the leading value needs for ``remaining`` at its present velocity and acceleration (§4.3.2:
+    synchronous when the leading axis reaches the synchronous position, also while it accelerates);
+    a leading value that would stop short is taken at its present velocity."""
+    if remaining <= 0.0:
+        return 0.0
+    if abs(acc) > 1e-12:
+        disc = speed * speed + 2.0 * acc * remaining
+        if disc >= 0.0:
+            return 2.0 * remaining / (speed + math.sqrt(disc))   # the root without cancellation
+    return remaining / speed
 
 
 def _constant_accel(t: float, p: float, v: float, a: float) -> Profile:

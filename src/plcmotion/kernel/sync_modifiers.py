@@ -112,6 +112,7 @@ class SyncModifiersMixin:
         p, v, a = self._coupled_state_at(t)
         sp, _, _ = self.sup_state_at(t)
         c.simulated = True
+        self._watch_sw_limits()
         self.ctl.sync.changed()
         self.sim_job = job
         # the setpoint from the synchronous operation stands still; superimposed motion goes on
@@ -132,6 +133,7 @@ class SyncModifiersMixin:
         if running is not None and running.busy:
             self._finish_job(running, JobState.ABORTED, t)
         c.simulated = False
+        self._watch_sw_limits()
         self.ctl.sync.changed()
         if self.state in ("enabled", "disabling"):
             self._set_position_control(True)

@@ -88,8 +88,11 @@ class _PositionedSync(_SyncInstruction):
         if spr in (1, 3, 4) and distance < 0.0:
             raise InstructionError(E.parameter("MasterStartDistance"))
         x["start_distance"] = distance
-        # SyncDirection acts on a modulo following axis only (§9.1.2, §9.1.5): elsewhere it is not read
-        modulo = bool(slave.eff["Modulo.Enable"])
+        # SyncDirection is in effect with modulo axes only (§9.1.2, §9.1.5): between linear axes it is
+        # not read
+        master = getattr(self, "Master", None)
+        lv_modulo = getattr(master, "lv_modulo", None)
+        modulo = bool(slave.eff["Modulo.Enable"]) or (callable(lv_modulo) and lv_modulo() is not None)
         x["sync_direction"] = integer("SyncDirection", self.SyncDirection, (1, 2, 3)) if modulo else 3
         return x
 

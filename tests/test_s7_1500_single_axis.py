@@ -256,3 +256,90 @@ def test_error_is_never_shown_with_errorid_zero_and_the_cycle_survives_property(
     assert ctl.mode == "RUN"
     assert not inst.Error or inst.ErrorID != 0
     assert all(math.isfinite(v) for v in (axis.Position, axis.Velocity))
+
+
+# --- active homing of a virtual / simulated axis (§6.1.5.5, §9.3.1, §9.3.2) -------------------------------
+SIMULATED = {"Simulation": {"Mode": 1}}
+
+
+@pytest.mark.parametrize("params", [V, SIMULATED], ids=["virtual", "simulated"])
+@pytest.mark.parametrize("mode, position, expect", [(3, 25.0, 25.0), (5, 0.0, 42.0)])
+def test_active_homing_of_a_virtual_axis_aborts_brakes_and_homes_at_standstill_s6_1_5_5(params, mode, position,
+                                                                                        expect):
+    """§6.1.5.5: active homing aborts the traversing motion.  A virtual/simulated axis has no switch to search:
+    it brakes with the default deceleration (HomingCommand set, not homed), then takes the home position at
+    standstill; no motion is left running without a job."""
+    ctl = Controller(family="S7-1500")
+    axis = ctl.add_positioning_axis("Axis", {**params, **DYN, "Homing": {"HomePosition": 42.0}})
+    power, move, home = MC_Power(), MC_MoveVelocity(), MC_Home()
+    go = {"home": False}
+    trace = []
+
+    @ctl.program
+    def main():
+        power(Axis=axis, Enable=True)
+        move(Axis=axis, Execute=power.Status, Velocity=400.0)
+        home(Axis=axis, Execute=go["home"], Mode=mode, Position=position)
+        trace.append((axis.Velocity, axis.Acceleration, bool(axis.StatusWord.HomingCommand), home.Busy))
+    ctl.run_until(lambda: move.InVelocity, timeout=3.0)
+    start = len(trace)
+    go["home"] = True
+    ctl.run_until(lambda: home.Done or home.Error, timeout=3.0)
+    assert home.Done and move.CommandAborted
+    braking = trace[start + 1:-1]
+    assert braking and all(busy and homing for _v, _a, homing, busy in braking)
+    assert min(a for _v, a, _h, _b in braking) == pytest.approx(-800.0)      # DynamicDefaults.Deceleration
+    ctl.run(0.5)
+    sw = axis.StatusWord
+    assert axis.Velocity == 0.0 and axis.Position == pytest.approx(expect) and home.ReferenceMarkPosition == expect
+    assert sw.HomingDone and sw.StandStill and sw.Done and not sw.HomingCommand
+
+
+def test_active_homing_of_a_virtual_axis_aborts_a_superimposed_motion_s9_3_1():
+    ctl, axis, steps, _ = axis_rig()
+    sup, home = MC_MoveSuperimposed(), MC_Home()
+    go = {"home": False}
+    steps.append(lambda: sup(Axis=axis, Execute=True, Distance=1000.0, VelocityDiff=50.0))
+    steps.append(lambda: home(Axis=axis, Execute=go["home"], Mode=3, Position=0.0))
+    ctl.run(0.5)
+    go["home"] = True
+    ctl.run_until(lambda: home.Done or home.Error, timeout=2.0)
+    assert home.Done and sup.CommandAborted and not axis.StatusWord.SuperimposedMotionCommand
+    ctl.run(0.2)
+    assert axis.Velocity == 0.0 and axis.Position == 0.0
+
+
+def test_active_homing_of_a_virtual_axis_is_rejected_while_mc_stop_holds_it_s9_3_1():
+    """§9.3.1: a running MC_Stop is not aborted by MC_Home Mode 3/5; the stop lock rejects it (decisions #24)."""
+    ctl, axis, steps, _ = axis_rig()
+    stop, home = MC_Stop(), MC_Home()
+    steps.append(lambda: stop(Axis=axis, Execute=True, Mode=0))
+    ctl.run_until(lambda: stop.Done, timeout=1.0)
+    steps.append(lambda: home(Axis=axis, Execute=True, Mode=3, Position=5.0))
+    ctl.run_until(lambda: home.Error or home.Done, timeout=1.0)
+    assert home.Error and home.ErrorID == E.STOP_ACTIVE
+    assert not stop.CommandAborted and axis.StatusWord2.StopCommand and not axis.StatusWord.HomingDone
+
+
+def test_active_homing_of_a_virtual_following_axis_aborts_gearing_s9_3_2():
+    """§9.3.2 row "MC_Home Mode 3, 5", column MC_GearIn: the gearing is aborted, also on a virtual axis."""
+    from plcmotion.s7_1500 import MC_GearIn
+    ctl = Controller(family="S7-1500T")
+    master = ctl.add_positioning_axis("M", V)
+    slave = ctl.add_synchronous_axis("S", {**V, **DYN}, leading_values=["M"])
+    pm, ps, move, gear, home = MC_Power(), MC_Power(), MC_MoveVelocity(), MC_GearIn(), MC_Home()
+    go = {"home": False}
+
+    @ctl.program
+    def main():
+        pm(Axis=master, Enable=True)
+        ps(Axis=slave, Enable=True)
+        move(Axis=master, Execute=pm.Status, Velocity=20.0)
+        gear(Master=master, Slave=slave, Execute=ps.Status and pm.Status, RatioNumerator=1, RatioDenominator=1)
+        home(Axis=slave, Execute=go["home"], Mode=3, Position=0.0)
+    ctl.run_until(lambda: gear.InGear, timeout=3.0)
+    go["home"] = True
+    ctl.run_until(lambda: home.Done or home.Error, timeout=2.0)
+    assert home.Done and gear.CommandAborted and not slave.StatusWord.Synchronous
+    ctl.run(0.2)
+    assert slave.Velocity == 0.0 and slave.Position == 0.0 and slave.StatusWord.Done

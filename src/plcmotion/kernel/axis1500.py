@@ -45,11 +45,15 @@ class PositioningAxis1500(SuperimposedMixin, LeadingValueMixin, PositioningAxis)
     _sup_carry = None
     coupling = None
     stop_job: Job | None = None
+    command_not_accepted = False
+    #: active homing of a virtual/simulated axis is a job like on a drive axis (§6.1.5.5, §9.3.1, §9.3.2)
+    _sim_homing_at_once = False
 
     def __init__(self, ctl: "Controller", name: str, cfg: Mapping[str, Any], **kw: Any):
         self._sup_init()
         self.stop_job = None
         self.warnings: set[str] = set()          # dynamic values limited (alarms 501-504)
+        self.command_not_accepted = False        # WarningWord.X3: a job was rejected (until MC_Reset)
         self._decoupled_state = None
         self._lv_init()
         super().__init__(ctl, name, cfg, **kw)
@@ -95,7 +99,14 @@ class PositioningAxis1500(SuperimposedMixin, LeadingValueMixin, PositioningAxis)
 
     def acknowledge(self) -> Fault | None:
         self.warnings.clear()
+        self.command_not_accepted = False
         return super().acknowledge()
+
+    def note_rejected(self, fault: Fault) -> None:
+        """An instruction's job was rejected (not enabled, not homed, MC_Stop lock, ...): §7.1.1 "Job
+        rejected" shows WarningWord.X3 (CommandNotAccepted) until MC_Reset (docs/s7_1500/decisions.md)."""
+        if not fault.ack:
+            self.command_not_accepted = True
 
     # synchronous operation hooks (no-ops on the positioning axis) -------------------------------------
     def _abort_sync(self, t: float, *, waiting: bool = True, active: bool = True, fault: Fault | None = None) -> None:
@@ -161,26 +172,44 @@ class PositioningAxis1500(SuperimposedMixin, LeadingValueMixin, PositioningAxis)
         elif job.kind in (JobKind.VELOCITY, JobKind.JOG):
             self._set_position_control(job.position_controlled)
         if job.kind == JobKind.HOME_ACTIVE:
-            if self not in self.ctl._input_axes:
+            if not self.sim and self not in self.ctl._input_axes:
                 self.ctl._input_axes.append(self)
             self._homing_start(job, t)
             return
         if self._plan_job(job, t):
-            self._note_limits(self.motion.last_limits)
+            self._note_limits(self.motion.last_limits, job)
 
     def _replan(self) -> None:
         """A changed tag (velocity override, dynamic limits) acts at once on the running job, with the
-        job's dynamics (§A.1.21)."""
+        job's dynamics (§A.1.21); WarningWord.X6 follows the new plan."""
         job = self.job
+        before = self.motion.last_limits
         if job is not None and job.busy and job.kind in (JobKind.VELOCITY, JobKind.JOG) and not self._interpolating \
                 and not job.jog_released:
             job.in_velocity = False
             self._plan_job(job, self.now)
-            return
-        super()._replan()
+        else:
+            super()._replan()
+        self._renote_limits(job, before)
 
-    def _note_limits(self, lim) -> None:
-        self.warnings = set(lim.limited) if lim is not None else set()
+    def _note_limits(self, lim, job: Job | None = None) -> None:
+        """WarningWord.X6: the job's dynamics were cut to the dynamic limits (§A.1.16, alarms 501-503)."""
+        limited = set(lim.limited) if lim is not None else set()
+        if lim is not None and job is not None and job.kind in (JobKind.VELOCITY, JobKind.JOG) \
+                and not job.jog_released and abs(self.commanded_velocity(job.velocity)) > lim.velocity * (1 + 1e-12):
+            limited.add("velocity")              # a velocity job runs at the velocity limit
+        self.warnings = limited
+
+    def _renote_limits(self, job: Job | None, before) -> None:
+        """The running ``job`` was planned anew (the planner's limits are not ``before``): renew X6."""
+        lim = self.motion.last_limits
+        if lim is not before and job is not None and job is self.job and job.busy:
+            self._note_limits(lim, job)
+
+    def change_jog_velocity(self, job: Job, velocity: float) -> None:
+        before = self.motion.last_limits
+        super().change_jog_velocity(job, velocity)
+        self._renote_limits(job, before)
 
     def _sync_blocks_homing(self) -> bool:
         return False
@@ -281,6 +310,7 @@ class PositioningAxis1500(SuperimposedMixin, LeadingValueMixin, PositioningAxis)
         self._abort_all(self.now, keep_simulated=False)
         self._sup_clear()
         self.warnings.clear()
+        self.command_not_accepted = False
         super().reinitialize(reason)
 
 

@@ -31,6 +31,10 @@ _MAX_REPOSITIONS = 4            # attempts to get onto the switch before giving 
 class HomingMixin:
     """Mixed into PositioningAxis."""
 
+    #: a simulated axis executes active homing at once, without motion (S7-1200 V6 §5.4.3.1); the S7-1500
+    #: runs it as a job that aborts the running motion and brakes the axis first (``_homing_start``)
+    _sim_homing_at_once = True
+
     # --- configuration --------------------------------------------------------------------------------
     def _homing_inputs(self: "PositioningAxis") -> dict[str, str]:
         return {"active": self.eff["Sensor[1].ActiveHoming.DigitalInputAddress"],
@@ -134,7 +138,7 @@ class HomingMixin:
         if self.servo and not self.sensor_valid:
             job.finish(JobState.ERROR, F.reject(F.REJECTED, "actual_invalid"))
             return
-        if self.sim:
+        if self.sim and (job.kind == JobKind.HOME_PASSIVE or self._sim_homing_at_once):
             # simulation: homing is executed at once, without motion (§5.4.3.1)
             if job.kind == JobKind.HOME_ACTIVE and self.job is not None and self.job.busy:
                 self._finish_job(self.job, JobState.ABORTED, self.now)
@@ -162,7 +166,7 @@ class HomingMixin:
         if self.pto and self._apply_dirty("active_homing") is not None:
             job.finish(JobState.ERROR, self.alarms[-1])
             return
-        fault = self._homing_velocity_fault()
+        fault = None if self.sim else self._homing_velocity_fault()   # simulation uses no homing velocities
         if fault is not None:
             if fault.kind == F.CONFIG:
                 self.raise_alarm(fault)
@@ -193,6 +197,11 @@ class HomingMixin:
     def _homing_start(self: "PositioningAxis", job: Job, t: float) -> None:
         """Called by the axis instead of a motion plan when an active homing job starts."""
         self.homed = False                                  # §2.5: reset at the start of active homing
+        if self.sim:
+            # S7-1500T V5 §6.1.5.5: active homing aborts the traversing motion (done by the override of
+            # submit); a simulated axis has no switch to search: brake to standstill, then home there
+            self._homing_phase(job, "simulated", 0.0, t)
+            return
         e = self.eff
         d = 1.0 if e["Homing.ApproachDirection"] else -1.0
         upper = e["Sensor[1].ActiveHoming.SideInput"]
@@ -229,6 +238,12 @@ class HomingMixin:
     def _homing_end(self: "PositioningAxis", job: Job, t: float) -> None:
         """The profile of the current phase has ended (standstill or velocity reached)."""
         phase = job.extra.get("phase")
+        if phase == "simulated":
+            self._interpolating = False
+            self._set_home(self._state_at(t)[0], self._wrap(job.position))
+            job.reference_position = self.reference_mark
+            self._finish_job(job, JobState.DONE, t)
+            return
         e = self.eff
         d = job.extra["d"]
         v_ref = e["Homing.ReferencingVelocity"]
@@ -328,7 +343,7 @@ class HomingMixin:
     def _homing_hw_limit(self: "PositioningAxis", side: str, t: float) -> bool:
         """A hardware limit switch during active homing: reverse if permitted (True = handled)."""
         job = self.job
-        if job is None:
+        if job is None or job.extra.get("phase") == "simulated":
             return False
         x = job.extra
         toward = (side == "max") == (x.get("last_dir", x["d"]) > 0)

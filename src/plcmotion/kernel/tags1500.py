@@ -30,7 +30,8 @@ StatusWord = word_type("StatusWord", {
     "SWLimitMinActive": 15, "SWLimitMaxActive": 16, "HWLimitMinActive": 17, "HWLimitMaxActive": 18,
     "Synchronizing": 21, "Synchronous": 22, "SuperimposedMotionCommand": 23, "PhasingCommand": 24,
     "AxisSimulation": 25, "TorqueLimitingCommand": 26, "InLimitation": 27, "NonPositionControlled": 28,
-    "KinematicsMotionCommand": 29, "InClamping": 30, "MotionInCommand": 31})
+    "KinematicsMotionCommand": 29, "InClamping": 30, "MotionInCommand": 31},
+    aliases={"Standstill": 7})      # §A.1.37 / §A.1.26 spell bit 7 "Standstill", §7.1.1 "StandStill"
 StatusWord2 = word_type("StatusWord2", {"StopCommand": 0})
 ErrorWord = word_type("ErrorWord", {
     "SystemFault": 0, "ConfigFault": 1, "UserFault": 2, "CommandNotAccepted": 3, "DriveFault": 4,
@@ -90,8 +91,12 @@ def status_word(ax: "Axis") -> int:
     kind = _kind(ax)
     sync = getattr(ax, "coupling", None)
     enabled = ax.state in ("enabled", "disabling")
+    # §A.1.37 bit 6 "Done": 0 while a motion job is in progress - MC_Stop braking the axis is one (it lives
+    # in stop_job, not in job); passive homing is not, it moves nothing (§6.1.5.5; docs/s7_1500/decisions.md)
+    stop = ax.stop_job
     moving_job = kind is not None or ax.superimposed_active or sync is not None or (
-        getattr(ax, "waiting", None) is not None)
+        getattr(ax, "waiting", None) is not None) or (stop is not None and stop.busy)
+    accelerating, decelerating = d["StatusBits.Accelerating"](ax), d["StatusBits.Decelerating"](ax)
     bits = {
         0: enabled,
         1: bool(ax.alarms),
@@ -102,9 +107,10 @@ def status_word(ax: "Axis") -> int:
         9: kind == JobKind.JOG,
         10: kind == JobKind.VELOCITY or ax.holding_zero_velocity,
         11: kind == JobKind.HOME_ACTIVE or (ax.passive_home is not None and ax.passive_home.busy),
-        12: d["StatusBits.ConstantVelocity"](ax),
-        13: d["StatusBits.Accelerating"](ax),
-        14: d["StatusBits.Decelerating"](ax),
+        # §7.1.1: "moved with constant velocity or is stationary" (unlike the S7-1200 bit, TRUE at standstill)
+        12: not (accelerating or decelerating),
+        13: accelerating,
+        14: decelerating,
         15: d["StatusBits.SWLimitMinActive"](ax),
         16: d["StatusBits.SWLimitMaxActive"](ax),
         17: ax.hw_approached["min"],
@@ -138,7 +144,8 @@ def error_word(ax: "Axis") -> int:
 
 
 def warning_word(ax: "Axis") -> int:
-    bits = {6: bool(ax.warnings), 11: _fe_warning(ax)}
+    # bit 3: a job of an instruction was rejected (§7.1.1 "Job rejected"; decisions.md), bit 6: dynamics limited
+    bits = {3: ax.command_not_accepted, 6: bool(ax.warnings), 11: _fe_warning(ax)}
     return WarningWord(pack(bits))
 
 

@@ -25,6 +25,13 @@ class _S71500:
         return InstructionError(E.WRONG_TO if kind == "other_type" else E.NOT_A_TO)
 
     def _fault_codes(self, fault: Fault) -> tuple[int, int]:
+        """ErrorID of a fault that ended a job of this instruction.  A job the technology object rejected
+        (a fault without acknowledgement) is also shown there as WarningWord.X3 (§7.1.1 "Job rejected")."""
+        if not fault.ack:
+            to = getattr(self, "Axis", None) or getattr(self, "Slave", None)
+            note = getattr(to, "note_rejected", None)
+            if note is not None:
+                note(fault)
         return E.code(fault), 0
 
 

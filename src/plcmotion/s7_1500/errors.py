@@ -38,7 +38,7 @@ NOT_SYNCHRONOUS = 0x8303        # the following axis is not synchronous with gea
 OTHER_MASTER = 0x8304           # the master differs from the leading value of the synchronous operation
 SIMULATION_ACTIVE = 0x8305      # synchronous operation jobs while MC_SynchronizedMotionSimulation is active
 COUPLING_CYCLE = 0x8306         # the couplings would form a cycle
-START_DISTANCE = 0x8307         # SyncProfileReference 1: master closer than MasterStartDistance
+START_DISTANCE = 0x8307         # SyncProfileReference 1: master closer than MasterStartDistance or moving away
 SYNC_POSITION = 0x8308          # MasterSyncPosition outside the cam
 COUPLING_TYPE = 0x8309          # the source cannot provide this type of leading value
 
@@ -113,7 +113,7 @@ _TEXT = {
     OTHER_MASTER: "the Master input differs from the leading value of the synchronous operation",
     SIMULATION_ACTIVE: "synchronous operation is simulated (MC_SynchronizedMotionSimulation)",
     COUPLING_CYCLE: "the leading axis would follow its own leading value",
-    START_DISTANCE: "the leading axis is closer than MasterStartDistance to the synchronous position",
+    START_DISTANCE: "the leading axis is closer than MasterStartDistance to the synchronous position, or moves away from it",
     SYNC_POSITION: "MasterSyncPosition is outside the cam",
     COUPLING_TYPE: "the leading value source cannot provide this type of coupling",
     CAM_IN_USE: "the cam is in use",

@@ -83,7 +83,8 @@ def test_uadp_round_trip_is_complete_ordered_and_exact(uadp, url) -> None:
     sent = [LeadingValueSample(time=i * 1e-3 + 1e-12 * i, position=rng.uniform(-1e6, 1e6),
                                velocity=specials[i % len(specials)], acceleration=rng.gauss(0.0, 1e3),
                                valid=i % 3 != 0, tracking=i % 5 == 0, modulo_length=360.0 if i % 2 else 0.0,
-                               modulo_start=rng.uniform(-1.0, 1.0), sequence=i + 1)
+                               modulo_start=rng.uniform(-1.0, 1.0), sequence=i + 1,
+                               delay=(i % 4) * 0.004)
             for i in range(2000)]
     with uadp.UadpLeadingValueSubscriber(url, publisher_id=11, writer_group_id=2, dataset_writer_id=3,
                                          wait_timeout=5.0) as sub, \

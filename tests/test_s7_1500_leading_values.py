@@ -255,3 +255,228 @@ def test_cross_plc_over_opc_ua_pubsub_on_loopback_s8_1_2():
     finally:
         pub.close()
         sub.close()
+
+
+# --- external encoder: delayed and cross-PLC leading value; extrapolation; virtual axis; proxy delay -------
+
+FINE = {"Sensor[1]": {"Parameter": {"DistancePerRevolution": 100.0, "StepsPerRevolution": 1 << 20}}}
+
+
+def _encoder_rig(extrapolation=None, plant=None, extra=None, followers=(("S", "actual"),), ctl=None):
+    """An external encoder (fine resolution) with followers geared 1:1 to it by MC_GearIn."""
+    ctl = ctl or Controller(family="S7-1500T", app_cycle=0.001)
+    cfg = {"Sensor": FINE, "Extrapolation": extrapolation or {}, "Plant": plant or {}, **(extra or {})}
+    enc = ctl.add_external_encoder("Enc", cfg)
+    fol = [ctl.add_synchronous_axis(name, VIRTUAL, leading_values=[("Enc", mode)]) for name, mode in followers]
+    pe, pf, gears = MC_Power(), [MC_Power() for _ in fol], [MC_GearIn() for _ in fol]
+
+    @ctl.program
+    def main():
+        pe(Axis=enc, Enable=True)
+        for p, ax, g in zip(pf, fol, gears):
+            p(Axis=ax, Enable=True)
+            g(Master=enc, Slave=ax, Execute=pe.Status and p.Status)
+    return ctl, enc, fol, gears
+
+
+def test_external_encoder_leading_value_can_be_delayed_s3_3_3():
+    """§3.3.3 / §6.1.3: the leading value of an external encoder can be delayed ("Delayed"): the delayed
+    follower gets the extrapolated actual value of LocalLeadingValueDelayTime ago."""
+    D = 0.008
+    ctl, enc, (sa, sd), gears = _encoder_rig(
+        plant={"Velocity": 100.0}, extra={"CrossPlcSynchronousOperation": {"LocalLeadingValueDelayTime": D}},
+        followers=(("SA", "actual"), ("SD", "delayed")))
+    ctl.run_until(lambda: all(g.InGear or g.Error for g in gears), timeout=2.0)
+    assert all(g.InGear for g in gears), [hex(g.ErrorID) for g in gears]
+    hist = {}
+    for _ in range(300):
+        ctl.step()
+        hist[round(ctl.time, 6)] = sa.StatusSynchronizedMotion.EffectiveLeadingValue.Position
+        if ctl.time > 0.2:
+            want = hist[round(ctl.time - D, 6)]
+            assert sd.StatusSynchronizedMotion.EffectiveLeadingValue.Position == pytest.approx(want, abs=1e-9)
+            assert enc.StatusProvidedLeadingValue.DelayedLeadingValue.Position == pytest.approx(want, abs=1e-9)
+
+
+def test_external_encoder_provides_a_cross_plc_leading_value_s8_1_3():
+    """§8.1.3: an external encoder can be the leading object on CPU 1; its delayed local follower and the
+    follower of the leading axis proxy on CPU 2 move in step (§8.1.4 tags on the encoder)."""
+    link = LocalLink()
+    a, b = Controller(family="S7-1500T", app_cycle=0.001), Controller(family="S7-1500T", app_cycle=0.001)
+    _, enc, (local,), (g_local,) = _encoder_rig(
+        plant={"Velocity": 100.0}, ctl=a, followers=(("Local", "delayed"),),
+        extra={"CrossPlcSynchronousOperation": {"Interface[1]": {"EnableLeadingValueOutput": True},
+                                                "LocalLeadingValueDelayTime": 0.008}})
+    enc.provide_leading_value(link)
+    proxy = b.add_leading_axis_proxy("P", {}, source_link=link)
+    remote = b.add_synchronous_axis("Remote", VIRTUAL, leading_values=["P"])
+    pr, g_remote = MC_Power(), MC_GearIn()
+
+    @b.program
+    def prog_b():
+        pr(Axis=remote, Enable=True)
+        g_remote(Master=proxy, Slave=remote, Execute=pr.Status)
+    for _ in range(3000):
+        a.step()
+        b.step()
+        if g_local.InGear and g_remote.InGear:
+            break
+    assert g_local.InGear and g_remote.InGear and proxy.StatusWord.X4
+    assert enc.StatusProvidedLeadingValue.DelayedLeadingValue.Velocity == pytest.approx(100.0, rel=1e-3)
+    assert proxy.Position == pytest.approx(enc.StatusProvidedLeadingValue.DelayedLeadingValue.Position, abs=1e-9)
+    x0, l0, r0 = proxy.Position, local.Position, remote.Position
+    for _ in range(50):
+        a.step()
+        b.step()
+        assert local.Position - l0 == pytest.approx(remote.Position - r0, abs=1e-9)
+    assert proxy.Position - x0 == pytest.approx(5.0, rel=1e-3)
+
+
+def test_constant_acceleration_is_extrapolated_exactly_s3_3_4():
+    """§3.3.4: delays at constant velocity and at constant acceleration are compensated.  The leading value
+    is the actual position of (effective extrapolation time - position filter time) later, whatever the
+    filter settings; at constant velocity it stays FilteredPosition + FilteredVelocity * T."""
+    a, v0 = 2000.0, 30.0
+    for ext in ({"PositionFilter": {"T1": 0.002}, "VelocityFilter": {"T1": 0.01, "T2": 0.01},
+                 "FollowingAxisDependentTime": 0.01},
+                {"PositionFilter": {"T1": 0.003, "T2": 0.002}, "VelocityFilter": {"T1": 0.0, "T2": 0.0}},
+                {"VelocityFilter": {"T1": 0.007, "T2": 0.0}, "FollowingAxisDependentTime": 0.02,
+                 "Settings": {"SystemDefinedExtrapolation": 0}}):
+        ctl, enc, _, gears = _encoder_rig(ext)
+        def plant(t):
+            return v0 * t + 0.5 * a * t * t
+        enc.drive_plant(plant)
+        ctl.run_until(lambda g=gears[0]: g.InGear, timeout=2.0)
+        ctl.run(0.3)
+        e = enc.eff
+        lead = enc.extrapolation_time() - e["Extrapolation.PositionFilter.T1"] - e["Extrapolation.PositionFilter.T2"]
+        for _ in range(5):
+            ctl.run(0.05)
+            # the encoder value of a servo cycle was measured one cycle earlier (T_i)
+            want = plant(ctl.time - ctl.servo_cycle + lead)
+            assert enc.StatusExtrapolation.ExtrapolatedPosition == pytest.approx(want, abs=1e-5), ext
+    ctl, enc, _, gears = _encoder_rig({"PositionFilter": {"T1": 0.002}, "FollowingAxisDependentTime": 0.01},
+                                      plant={"Velocity": 150.0})
+    ctl.run_until(lambda: gears[0].InGear, timeout=2.0)
+    ctl.run(0.3)
+    se = enc.StatusExtrapolation
+    assert se.ExtrapolatedPosition == pytest.approx(se.FilteredPosition + se.FilteredVelocity * enc.extrapolation_time(),
+                                                    abs=1e-6)
+
+
+def test_effective_leading_value_acceleration_with_actual_value_coupling_s3_5_1():
+    """§A.1.33 EffectiveLeadingValue.Acceleration: the extrapolated acceleration of the actual value."""
+    a = 2000.0
+    ctl, enc, (s,), gears = _encoder_rig({"VelocityFilter": {"T1": 0.005}})
+    enc.drive_plant(lambda t: 0.5 * a * t * t)
+    ctl.run_until(lambda: gears[0].InGear, timeout=2.0)
+    ctl.run(0.3)
+    assert s.StatusSynchronizedMotion.EffectiveLeadingValue.Acceleration == pytest.approx(a, rel=1e-3)
+    enc.set_plant_velocity(100.0)
+    ctl.run(0.2)
+    assert s.StatusSynchronizedMotion.EffectiveLeadingValue.Acceleration == pytest.approx(0.0, abs=0.1)
+
+
+def test_hysteresis_acts_on_reversals_only_s3_3_4():
+    """§3.3.4 hysteresis: no offset in one-way motion; a reversal takes effect once the position has gone
+    back by the hysteresis value, then the leading value catches up with the input (twice its speed) and
+    follows it again without offset (docs/s7_1500/decisions.md row 28)."""
+    H = 2.0
+    def prof(t):
+        return 100 * t if t < 0.1 else 10 - 100 * (t - 0.1)
+    ctl, enc, _, gears = _encoder_rig({"Hysteresis": {"Value": H}, "Settings": {"SystemDefinedExtrapolation": 0}})
+    enc.drive_plant(prof)
+    se = enc.StatusExtrapolation
+    last, turn = None, 0.0
+    while ctl.time < 0.2:
+        ctl.step()
+        x, y = se.FilteredPosition, se.ExtrapolatedPosition
+        turn = max(turn, x)
+        if x == turn:
+            assert y == x                                  # forward only: no displacement
+        elif x > turn - H:
+            assert y == turn                               # a reversal smaller than H: held
+        if last is not None:
+            assert abs(y - last) <= 2 * 0.1 + 1e-6         # no jump: at most twice the input's travel
+        last = y
+        if x < turn - 2 * H:                               # back by more than 2 H: caught up
+            assert y == x
+    assert gears[0].InGear and y == x < turn - 2 * H
+
+
+def test_actual_value_coupling_to_a_virtual_axis_s3_3_2():
+    """§3.3.2 allows actual value coupling to positioning and synchronous axes; a virtual axis's actual
+    value is its setpoint (T_i = 0, decision 29), so the leading value equals the setpoint."""
+    ctl = Controller(family="S7-1500T")
+    m = ctl.add_positioning_axis("M", VIRTUAL)
+    s = ctl.add_synchronous_axis("S", VIRTUAL, leading_values=[("M", "actual")])
+    pm, ps, mv, g = MC_Power(), MC_Power(), MC_MoveVelocity(), MC_GearIn()
+
+    @ctl.program
+    def main():
+        pm(Axis=m, Enable=True)
+        ps(Axis=s, Enable=True)
+        mv(Axis=m, Execute=pm.Status, Velocity=1000.0, Acceleration=200.0, Jerk=0.0)
+        g(Master=m, Slave=s, Execute=ps.Status)
+    ctl.run_until(lambda: g.InGear or g.Error, timeout=2.0)
+    assert g.InGear, hex(g.ErrorID)
+    ctl.run(0.5)                                           # still accelerating
+    lv = s.StatusSynchronizedMotion.EffectiveLeadingValue
+    assert lv.Position == pytest.approx(m.Position, abs=1e-9)
+    assert lv.Acceleration == pytest.approx(200.0, rel=1e-9)
+
+
+def test_proxy_takes_the_delay_from_the_sender_s8_1_3():
+    """§8.1.3 / §8.2.3.2: the delay is set at the leading axis only; the proxy provides the value the
+    sender's delayed followers use at the same time (its own LocalLeadingValueDelayTime is for a cascade
+    and stays 0 here).  A changed delay (DIR) reaches the proxy with the next telegram."""
+    link = LocalLink()
+    a, b = Controller(family="S7-1500T"), Controller(family="S7-1500T")
+    m = a.add_positioning_axis("Master", {**VIRTUAL, "CrossPlcSynchronousOperation": {
+        "Interface[1]": {"EnableLeadingValueOutput": True}, "LocalLeadingValueDelayTime": 0.008}})
+    sa = a.add_synchronous_axis("SlaveA", VIRTUAL, leading_values=[("Master", "delayed")])
+    proxy = b.add_leading_axis_proxy("Proxy", {}, source_link=link)
+    sb = b.add_synchronous_axis("SlaveB", VIRTUAL, leading_values=["Proxy"])
+    m.provide_leading_value(link)
+    pm, pa, pb, mv, ga, gb = MC_Power(), MC_Power(), MC_Power(), MC_MoveVelocity(), MC_GearIn(), MC_GearIn()
+
+    @a.program
+    def prog_a():
+        pm(Axis=m, Enable=True)
+        pa(Axis=sa, Enable=True)
+        mv(Axis=m, Execute=pm.Status, Velocity=100.0, Acceleration=400.0, Jerk=0.0)
+        ga(Master=m, Slave=sa, Execute=pa.Status)
+
+    @b.program
+    def prog_b():
+        pb(Axis=sb, Enable=True)
+        gb(Master=proxy, Slave=sb, Execute=pb.Status)
+    for delay in (0.008, 0.012):
+        m.write_tag("CrossPlcSynchronousOperation.LocalLeadingValueDelayTime", delay)
+        for _ in range(100):
+            a.step()
+            b.step()
+        assert ga.InGear and gb.InGear and proxy.tag("Parameter.LocalLeadingValueDelayTime") == 0.0
+        for _ in range(20):
+            a.step()
+            b.step()
+            assert proxy.Position == pytest.approx(m.StatusProvidedLeadingValue.DelayedLeadingValue.Position, abs=1e-9)
+            assert sb.StatusSynchronizedMotion.EffectiveLeadingValue.Position == pytest.approx(
+                sa.StatusSynchronizedMotion.EffectiveLeadingValue.Position, abs=1e-9)
+        assert proxy.StatusExternalLeadingValue.AdjustmentTime < 0.0
+    assert proxy.Parameter.LocalLeadingValueDelayTime == 0.0        # configuration tags read as attributes
+
+
+def test_the_leading_value_of_a_proxy_cannot_be_delayed_s3_3_3():
+    """§3.3.3 names positioning axis, synchronous axis and external encoder; not the proxy."""
+    ctl = Controller(family="S7-1500T")
+    proxy = ctl.add_leading_axis_proxy("P", {}, source_link=LocalLink())
+    s = ctl.add_synchronous_axis("S", VIRTUAL, leading_values=[("P", "delayed")])
+    ps, g = MC_Power(), MC_GearIn()
+
+    @ctl.program
+    def main():
+        ps(Axis=s, Enable=True)
+        g(Master=proxy, Slave=s, Execute=ps.Status)
+    ctl.run_until(lambda: g.Error or g.InGear, timeout=1.0)
+    assert g.Error and g.ErrorID == 0x8309

@@ -5,13 +5,13 @@ from plcmotion import Controller
 from plcmotion.crossplc import LocalLink
 from plcmotion.s7_1500 import MC_GearInPos, MC_MoveVelocity, MC_Power
 
-DELAY = 0.008                                   # 2 application cycles of the receiving controller
+DELAY = 0.008                                   # set at the leading axis: 2 application cycles of the receiver
 link = LocalLink()
 a, b = Controller(family="S7-1500T"), Controller(family="S7-1500T")
 master = a.add_positioning_axis("Master", {"VirtualAxis": {"Mode": 1}, "CrossPlcSynchronousOperation": {
     "Interface[1]": {"EnableLeadingValueOutput": True}, "LocalLeadingValueDelayTime": DELAY}})
 local = a.add_synchronous_axis("Local", {"VirtualAxis": {"Mode": 1}}, leading_values=[("Master", "delayed")])
-proxy = b.add_leading_axis_proxy("Proxy", {"Parameter": {"LocalLeadingValueDelayTime": DELAY}}, source_link=link)
+proxy = b.add_leading_axis_proxy("Proxy", source_link=link)   # the delay comes with the telegrams
 remote = b.add_synchronous_axis("Remote", {"VirtualAxis": {"Mode": 1}}, leading_values=["Proxy"])
 master.provide_leading_value(link)
 pa, pl, pr = MC_Power(), MC_Power(), MC_Power()

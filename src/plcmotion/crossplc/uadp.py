@@ -1,6 +1,6 @@
 """Leading values over OPC UA PubSub (UADP message mapping, UDP transport), built on ``asyncua.pubsub``.
 
-The publisher is a regular asyncua PubSub application: a PublishedDataSet with the nine leading value
+The publisher is a regular asyncua PubSub application: a PublishedDataSet with the ten leading value
 fields, one DataSetWriter, one WriterGroup and a UDP/UADP PubSubConnection.  Its data source hands the
 writer group one queued sample per cycle of the group; with a publishing interval of 0 the group
 therefore sends one NetworkMessage (holding one DataSetMessage, variant encoded) per sample, as soon as
@@ -63,6 +63,7 @@ DATASET_FIELDS: tuple[tuple[str, ua.VariantType, str], ...] = (
     ("ModuloLength", ua.VariantType.Double, "modulo_length"),
     ("ModuloStart", ua.VariantType.Double, "modulo_start"),
     ("Sequence", ua.VariantType.UInt32, "sequence"),
+    ("DelayTime", ua.VariantType.Double, "delay"),
 )
 _CONVERT: dict[ua.VariantType, Callable[[Any], Any]] = {
     ua.VariantType.Double: float, ua.VariantType.Boolean: bool,

@@ -1,7 +1,8 @@
 """External encoder technology object (TO_ExternalEncoder, S7-1500T V5 §3.3, §6.1.5.8, §A.1.10).
 
 An encoder with no drive: it measures a machine (a conveyor, a printing cylinder driven by another
-machine) and offers its extrapolated actual value as leading value ("actual value coupling", S7-1500T).
+machine) and offers its extrapolated actual value as leading value ("actual value coupling", S7-1500T),
+also delayed for local followers ("delayed", §3.3.3) and to other controllers (cross-PLC, §8.1.3).
 The measured machine is simulated: it moves with ``Plant.Velocity`` (changeable at run time with
 :meth:`ExternalEncoder.set_plant_velocity`) or follows a function of time given to
 :meth:`ExternalEncoder.drive_plant`; ``Plant.PositionNoise`` adds reproducible measuring noise.  The
@@ -19,7 +20,7 @@ from . import faults as F
 from .config import TagAccessError
 from .faults import Fault, Reaction
 from .jobs import Job, JobState
-from .leading import Extrapolator
+from .leading import LeadingValueMixin
 from .parameters import E12, P, R, REAL, AxisSchema, Param
 from .parameters1500 import _PARAMS_1500, canonical
 from .tags import AxisTagsMixin
@@ -70,10 +71,14 @@ DYNAMIC: dict[str, Callable[["ExternalEncoder"], Any]] = {
     "StatusExtrapolation.ExtrapolatedPosition": lambda e: e.extrapolation_status()[2],
     "StatusExtrapolation.ExtrapolatedVelocity": lambda e: e.extrapolation_status()[3],
     "Extrapolation.LeadingAxisDependentTime": lambda e: e.leading_axis_dependent_time(),
+    # §8.1.4: the leading value provided to delayed followers and other controllers
+    "StatusProvidedLeadingValue.DelayedLeadingValue.Position": lambda e: e.delayed_leading_value()[0],
+    "StatusProvidedLeadingValue.DelayedLeadingValue.Velocity": lambda e: e.delayed_leading_value()[1],
+    "StatusProvidedLeadingValue.DelayedLeadingValue.Acceleration": lambda e: e.delayed_leading_value()[2],
 }
 
 
-class ExternalEncoder(AxisTagsMixin):
+class ExternalEncoder(LeadingValueMixin, AxisTagsMixin):
     """External encoder technology object: a leading value source with actual values only."""
 
     kind = "TO_ExternalEncoder"
@@ -82,7 +87,7 @@ class ExternalEncoder(AxisTagsMixin):
     _dynamic = DYNAMIC
     _dynamic_types = {p: "LReal" for p in DYNAMIC}
     _dynamic_aliases: dict[str, str] = {}
-    _status_groups = ("StatusSensor", "StatusExtrapolation", "ErrorDetail")
+    _status_groups = ("StatusSensor", "StatusExtrapolation", "ErrorDetail", "StatusProvidedLeadingValue")
     _read_param_tags = frozenset(DYNAMIC)
     provides_setpoints = False
     provides_actual_values = True
@@ -102,8 +107,7 @@ class ExternalEncoder(AxisTagsMixin):
         self.passive_home = None
         self._plant_fn: Callable[[float], float] | None = None
         self._reset_plant()
-        self._extrapolator: Extrapolator | None = None
-        self._slots: dict[str, int] = {}
+        self._lv_init()
         ctl._encoders.append(self)
 
     def __repr__(self) -> str:
@@ -265,51 +269,19 @@ class ExternalEncoder(AxisTagsMixin):
         """Actual value coupling needs valid actual values (§3.3.5)."""
         return self.state == "enabled" and not self.alarms
 
-    def lv_modulo(self) -> tuple[float, float] | None:
-        e = self.eff
-        return (e["Modulo.StartValue"], e["Modulo.Length"]) if e["Modulo.Enable"] else None
+    def velocity_lag(self, dt: float) -> float:
+        return 0.5 * dt                 # the velocity is the difference of the last two counts
 
-    def lv_value(self, mode: str, t: float) -> tuple[float, float, float]:
-        ex = self._ensure_extrapolator()
-        dt = t - self.ctl._bank_time
-        return ex.position + ex.velocity * max(dt, 0.0), ex.velocity, 0.0
+    def provided_value(self) -> tuple[float, float, float]:
+        """The extrapolated actual value: what delayed followers and other controllers get (§3.3.3)."""
+        ex = self._extrapolator or self._ensure_extrapolator()
+        return ex.position, ex.velocity, ex.acceleration
 
-    def lv_slot(self, mode: str) -> int:
-        slot = self._slots.get(mode)
-        if slot is None:
-            ex = self._ensure_extrapolator()
-            slot = self.ctl.sync.register_ext(lambda t, ex=ex: (ex.position, ex.velocity, 0.0))
-            self._slots[mode] = slot
-        return slot
+    def provided_value_at(self, t: float) -> tuple[float, float, float]:
+        return self.lv_value("actual", t)
 
-    def _ensure_extrapolator(self) -> Extrapolator:
-        if self._extrapolator is None:
-            ex = Extrapolator(self)
-            ex.step(self.ctl.time, self.ctl.servo_cycle)
-            self._extrapolator = ex
-            dt = self.ctl.servo_cycle
-            self.ctl.sync.register_ext(lambda t, ex=ex: ex.step(t, dt))
-        return self._extrapolator
-
-    def local_delay_time(self) -> float:
-        return self.eff["CrossPlcSynchronousOperation.LocalLeadingValueDelayTime"]
-
-    def leading_axis_dependent_time(self) -> float:
-        e = self.eff
-        return 2 * self.ctl.servo_cycle + e["Extrapolation.PositionFilter.T1"] + e["Extrapolation.PositionFilter.T2"]
-
-    def extrapolation_time(self) -> float:
-        e = self.eff
-        t = e["Extrapolation.FollowingAxisDependentTime"] + self.local_delay_time()
-        if e["Extrapolation.Settings.SystemDefinedExtrapolation"] == 1:
-            t += self.leading_axis_dependent_time()
-        return t
-
-    def extrapolation_status(self) -> tuple[float, float, float, float]:
-        ex = self._extrapolator
-        if ex is None:
-            return 0.0, 0.0, 0.0, 0.0
-        return ex.filtered_position, ex.filtered_velocity, ex.position, ex.velocity
+    def provided_value_valid(self) -> tuple[bool, bool]:
+        return self.lv_position_controlled(), False
 
 
 __all__ = ["ExternalEncoder", "ENCODER_SCHEMA", "R"]

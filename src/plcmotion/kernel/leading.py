@@ -3,15 +3,16 @@
 * Setpoint coupling reads the leading axis's position setpoint of the same servo cycle.
 * Actual value coupling reads the leading TO's actual position, filtered and extrapolated over the
   effective extrapolation time to make up for the delays of acquiring and processing it (§3.3.4):
-  position PT2 filter, velocity PT2 filter and tolerance band, linear extrapolation, hysteresis.
-* Delayed coupling reads the setpoint delayed by ``CrossPlcSynchronousOperation.LocalLeadingValueDelayTime``,
-  so that local followers stay synchronous with followers on other controllers that get the value later
-  (§8.1.3).
+  position PT2 filter, velocity PT2 filter and tolerance band, extrapolation, hysteresis.
+* Delayed coupling reads the leading value of ``CrossPlcSynchronousOperation.LocalLeadingValueDelayTime``
+  ago (§3.3.3) - the setpoint of an axis, the extrapolated actual value of an external encoder - so that
+  local followers stay synchronous with followers on other controllers that get the value later (§8.1.3).
 
 The manual does not print the extrapolation formula, the initial state of the tolerance band or the
-hysteresis output after a reversal (catalog §11.2 item 5): extrapolation here is
-``p_f + v_f * T``, the band starts at the first filtered velocity, and the hysteresis is a play operator
-of width ``Hysteresis.Value`` (continuous, lagging by half the width; docs/decisions_s7_1500.md).
+hysteresis output after a reversal (catalog §11.2 item 5); plcmotion's reading (docs/s7_1500/decisions.md,
+row 28): the extrapolation is exact for a constant velocity and a constant acceleration (the two cases
+§3.3.4 promises to compensate), the band starts at the first filtered velocity, and the hysteresis holds
+the leading value during a reversal smaller than ``Hysteresis.Value`` and is transparent otherwise.
 """
 from __future__ import annotations
 
@@ -31,16 +32,42 @@ def _pt1(y: float, x: float, dt: float, T: float) -> float:
 
 
 class Extrapolator:
-    """Actual value processing of one leading TO (§3.3.4 pipeline), one step per servo cycle."""
+    """Actual value processing of one leading TO (§3.3.4 pipeline), one step per servo cycle.
+
+    Closed form per cycle (S7-1500T V5 §3.3.4, §6.1.5.8, §A.1.10):
+
+    * ``p_f`` = PT2(actual position; PositionFilter.T1, T2) -> StatusExtrapolation.FilteredPosition
+    * ``v_f`` = tolerance band(PT2(actual velocity; VelocityFilter.T1, T2)) -> FilteredVelocity
+    * ``a``   = change of ``v_f`` per cycle, smoothed by a PT2 with the velocity filter's time constants:
+      a ramp passes the PT1 stages and the band with its slope unchanged and a constant passes the
+      PT2, so this is the acceleration of a uniformly accelerating leading value (0 while the band
+      holds the velocity)
+    * extrapolated position over the effective extrapolation time T (§3.3.4)::
+
+          x = p_f - a*c_p + (v_f + a*(Tv + lag - Tp))*T + a*T^2/2
+
+      ``p_f`` stands for the position of ``Tp`` = PositionFilter.T1 + T2 ago, ``v_f`` for the velocity
+      of ``Tv + lag`` ago (velocity filters T1 + T2, plus half a cycle for a velocity that is a backward
+      difference); ``c_p`` is the offset the discrete PT2 filter adds to a parabola.  At constant
+      velocity (a = 0) this is ``p_f + v_f*T``; at constant acceleration it is the actual position of
+      ``T - Tp`` later, exactly - only a jerk displaces the follower (§3.3.4) - unless a tolerance band
+      is set: the band's output trails an accelerating velocity by half its width (§3.3.4).
+    * hysteresis (§3.3.4): a change of direction takes effect only once the extrapolated position has
+      gone back by at least Hysteresis.Value from its turning point; meanwhile the leading value holds
+      the turning point.  Then it moves on at twice the speed of the input until it has caught up with
+      it (the input's next Hysteresis.Value of travel), so it never jumps and has no lasting offset.
+    """
 
     def __init__(self, source: Any):
         self.source = source
         self.ready = False
-        self.pf1 = self.pf2 = self.vf1 = self.vf2 = 0.0
+        self.pf1 = self.pf2 = self.vf1 = self.vf2 = self.af1 = self.af2 = 0.0
         self.band = 0.0
         self.hyst = 0.0
+        self.direction = 0                 # direction of the leading value (hysteresis), 0 = none yet
+        self.turn = 0.0                    # farthest input in that direction (the turning point)
         self.filtered_position = self.filtered_velocity = 0.0
-        self.position = self.velocity = 0.0
+        self.position = self.velocity = self.acceleration = 0.0
         self._prev: float | None = None
 
     def step(self, t: float, dt: float) -> tuple[float, float, float]:
@@ -50,26 +77,65 @@ class Extrapolator:
         if not self.ready:
             self.pf1 = self.pf2 = p
             self.vf1 = self.vf2 = self.band = v
-            self.hyst = p
+            self.af1 = self.af2 = 0.0
+            self.hyst = self.turn = p
+            self.direction = 0
+            self._prev = None
             self.ready = True
-        self.pf1 = _pt1(self.pf1, p, dt, e["Extrapolation.PositionFilter.T1"])
-        self.pf2 = _pt1(self.pf2, self.pf1, dt, e["Extrapolation.PositionFilter.T2"])
-        self.vf1 = _pt1(self.vf1, v, dt, e["Extrapolation.VelocityFilter.T1"])
-        self.vf2 = _pt1(self.vf2, self.vf1, dt, e["Extrapolation.VelocityFilter.T2"])
+        tp1, tp2 = e["Extrapolation.PositionFilter.T1"], e["Extrapolation.PositionFilter.T2"]
+        tv1, tv2 = e["Extrapolation.VelocityFilter.T1"], e["Extrapolation.VelocityFilter.T2"]
+        self.pf1 = _pt1(self.pf1, p, dt, tp1)
+        self.pf2 = _pt1(self.pf2, self.pf1, dt, tp2)
+        self.vf1 = _pt1(self.vf1, v, dt, tv1)
+        self.vf2 = _pt1(self.vf2, self.vf1, dt, tv2)
         half = e["Extrapolation.VelocityTolerance.Range"] / 2.0
-        self.band = min(max(self.band, self.vf2 - half), self.vf2 + half)
+        band = self.band
+        self.band = min(max(band, self.vf2 - half), self.vf2 + half)
+        # acceleration: the velocity's change per cycle, smoothed like the velocity (a constant one passes)
+        self.af1 = _pt1(self.af1, (self.band - band) / dt, dt, tv1)
+        acc = self.af2 = _pt1(self.af2, self.af1, dt, tv2)
         self.filtered_position, self.filtered_velocity = self.pf2, self.band
-        x = self.pf2 + self.band * src.extrapolation_time()
-        h = e["Extrapolation.Hysteresis.Value"] / 2.0
-        self.hyst = min(max(self.hyst, x - h), x + h)
+        T = src.extrapolation_time()
+        tp = tp1 + tp2
+        # PT2 on a parabola (discrete, backward difference form): p(t - Tp) + a*((tp1^2 + tp2^2)/2 + Tp*dt/2)
+        c_p = 0.5 * (tp1 * tp1 + tp2 * tp2 + tp * dt)
+        x = self.pf2 + T * self.band
+        if acc != 0.0:
+            x += acc * (T * (tv1 + tv2 + src.velocity_lag(dt) - tp + 0.5 * T) - c_p)
+        y = self._hysteresis(x, e["Extrapolation.Hysteresis.Value"])
         prev = self._prev
-        self.position = self.hyst
+        self.position = y
         if e["Extrapolation.Settings.ExtrapolatedVelocityMode"] == 1 and prev is not None:
-            self.velocity = (self.hyst - prev) / dt
+            self.velocity = (y - prev) / dt
         else:
             self.velocity = self.band
-        self._prev = self.hyst
-        return self.position, self.velocity, 0.0
+        # the extrapolated acceleration; none while the hysteresis holds the leading value back
+        self.acceleration = acc if y == x else 0.0
+        self._prev = y
+        return self.position, self.velocity, self.acceleration
+
+    def _hysteresis(self, x: float, width: float) -> float:
+        """Reversal suppression of the extrapolated position ``x`` (see the class docstring)."""
+        d = self.direction
+        y = self.hyst
+        if d == 0:
+            if x != y:
+                self.direction = 1 if x > y else -1
+            self.hyst = self.turn = x
+            return x
+        on = (x - self.turn) * d                  # travel beyond the turning point in direction d
+        if on < 0.0:
+            if -on < width:
+                return y                          # a reversal within the hysteresis: hold
+            on = -on - width                      # the reversal takes effect: travel beyond the width
+            d = self.direction = -d
+        self.turn = x
+        # move towards x by twice the input's travel at most, never past it, never backwards
+        gap = (x - y) * d
+        if gap > 0.0:
+            y = x if 2.0 * on >= gap else y + 2.0 * on * d
+            self.hyst = y
+        return y
 
 
 class DelayLine:
@@ -87,7 +153,7 @@ class DelayLine:
     def at(self, t: float) -> tuple[float, float, float]:
         s = self.samples
         if not s:
-            return self.source.lv_value("setpoint", t)
+            return self.source.provided_value_at(t)
         if t >= s[-1][0]:
             t0, p, v, a = s[-1]
             dt = t - t0
@@ -123,22 +189,44 @@ def setpoint_at(axis: Any, t: float) -> tuple[float, float, float]:
 
 
 class LeadingValueMixin:
-    """What a leading axis offers its followers (mixed into the S7-1500 axes)."""
+    """What a leading TO offers its followers: mixed into the S7-1500 axes and the external encoder.
+
+    What an axis delays for its delayed followers and sends to other controllers is its setpoint; an
+    external encoder has no setpoint and uses its extrapolated actual value instead (§3.3.3, §8.1.3:
+    "a positioning axis, external encoder or synchronous axis" can be the leading axis on CPU 1).
+    """
 
     provides_setpoints = True
+    provides_delayed_values = True
+    #: any axis has actual values; a virtual one's equal its setpoints (§3.3.2, decision 29)
+    provides_actual_values = True
 
     def _lv_init(self: "PositioningAxis1500") -> None:
         self._extrapolator: Extrapolator | None = None
         self._delay: DelayLine | None = None
         self._lv_slots: dict[str, int] = {}
 
-    @property
-    def provides_actual_values(self: "PositioningAxis1500") -> bool:
-        return self.eff.get("VirtualAxis.Mode", 0) == 0
-
     def actual_values(self: "PositioningAxis1500") -> tuple[float, float]:
         b, i = self.ctl.bank, self.index
         return float(b.act_p[i]), float(b.act_v[i])
+
+    def velocity_lag(self: "PositioningAxis1500", dt: float) -> float:
+        """Age of the actual velocity relative to the actual position: half a cycle for a velocity that
+        is the difference of two encoder values, none for the exact velocity of a simulated drive."""
+        return 0.5 * dt if self.servo else 0.0
+
+    def provided_value(self: "PositioningAxis1500") -> tuple[float, float, float]:
+        """This servo cycle's value for delayed followers and other controllers: the setpoint."""
+        b, i = self.ctl.bank, self.index
+        return float(b.sp_p[i]), float(b.sp_v[i]), float(b.sp_a[i])
+
+    def provided_value_at(self: "PositioningAxis1500", t: float) -> tuple[float, float, float]:
+        return setpoint_at(self, t)
+
+    def provided_value_valid(self: "PositioningAxis1500") -> tuple[bool, bool]:
+        """(valid, tracking) of the provided value (telegram flags, §8.1.4)."""
+        return (self.state in ("enabled", "disabling") and self._blocking_alarm() is None,
+                bool(self.servo and not self.ctl.bank.closed_loop[self.index]))
 
     def lv_position_controlled(self: "PositioningAxis1500") -> bool:
         """Setpoint coupling needs a position-controlled leading axis (§3.3.5)."""
@@ -151,10 +239,14 @@ class LeadingValueMixin:
     def lv_value(self: "PositioningAxis1500", mode: str, t: float) -> tuple[float, float, float]:
         """The leading value this TO provides with coupling type ``mode`` at time ``t``."""
         if mode == "setpoint":
-            return setpoint_at(self, t)
+            return self.provided_value_at(t)
         if mode == "actual":
             ex = self._ensure_extrapolator()
-            return ex.position, ex.velocity, 0.0
+            p, v, a = ex.position, ex.velocity, ex.acceleration
+            dt = t - self.ctl._bank_time
+            if dt > 0.0:                    # between servo cycles: carried forward
+                p, v = p + dt * (v + 0.5 * dt * a), v + dt * a
+            return p, v, a
         return self._ensure_delay().at(t - self.local_delay_time())
 
     def lv_slot(self: "PositioningAxis1500", mode: str) -> int:
@@ -163,7 +255,7 @@ class LeadingValueMixin:
         if slot is None:
             if mode == "actual":
                 ex = self._ensure_extrapolator()
-                slot = self.ctl.sync.register_ext(lambda t, ex=ex: (ex.position, ex.velocity, 0.0))
+                slot = self.ctl.sync.register_ext(lambda t, ex=ex: (ex.position, ex.velocity, ex.acceleration))
             else:
                 line = self._ensure_delay()
                 slot = self.ctl.sync.register_ext(lambda t, line=line: line.at(t - self.local_delay_time()))
@@ -173,7 +265,7 @@ class LeadingValueMixin:
     def _ensure_extrapolator(self: "PositioningAxis1500") -> Extrapolator:
         if self._extrapolator is None:
             ex = Extrapolator(self)
-            ex.step(self.now, self.ctl.servo_cycle)
+            ex.step(self.ctl.time, self.ctl.servo_cycle)
             self._extrapolator = ex
             dt = self.ctl.servo_cycle
             # the filters run before the couplings of each servo cycle
@@ -185,12 +277,10 @@ class LeadingValueMixin:
             line = DelayLine(self)
             self._delay = line
             ctl = self.ctl
+            provided = self.provided_value
 
             def record(t: float) -> None:
-                # the bank arrays are re-created every cycle: look them up each time
-                b, i = ctl.bank, self.index
-                line.record(t, float(b.sp_p[i]), float(b.sp_v[i]), float(b.sp_a[i]),
-                            self.local_delay_time() + 4 * ctl.servo_cycle)
+                line.record(t, *provided(), self.local_delay_time() + 4 * ctl.servo_cycle)
 
             record(ctl._bank_time)
             ctl.sync.register_post(record)
@@ -200,25 +290,29 @@ class LeadingValueMixin:
         return self.eff.get("CrossPlcSynchronousOperation.LocalLeadingValueDelayTime", 0.0)
 
     def provide_leading_value(self: "PositioningAxis1500", sink) -> None:
-        """Send this axis's leading value to another controller every servo cycle (cross-PLC, §8):
-        needs ``CrossPlcSynchronousOperation.Interface[1].EnableLeadingValueOutput`` = TRUE."""
+        """Send this TO's leading value to another controller every servo cycle (cross-PLC, §8):
+        needs ``CrossPlcSynchronousOperation.Interface[1].EnableLeadingValueOutput`` = TRUE.
+
+        Each telegram carries the delay of the local delayed followers, so that a leading axis proxy
+        provides the value these followers use at the same time (§8.1.3) without being told the delay.
+        """
         if not self.eff.get("CrossPlcSynchronousOperation.Interface[1].EnableLeadingValueOutput"):
             raise ValueError(f"{self.name}: set CrossPlcSynchronousOperation.Interface[1].EnableLeadingValueOutput "
                              f"to provide a cross-PLC leading value")
         from .leading_value import LeadingValueSample
         ctl = self.ctl
         counter = [0]
+        provided = self.provided_value
+        self._ensure_delay()                # StatusProvidedLeadingValue.DelayedLeadingValue (§8.1.4)
 
         def send(t: float) -> None:
-            b, i = ctl.bank, self.index
             e = self.eff
             counter[0] += 1
+            valid, tracking = self.provided_value_valid()
             sink.send(LeadingValueSample(
-                t, float(b.sp_p[i]), float(b.sp_v[i]), float(b.sp_a[i]),
-                valid=self.state in ("enabled", "disabling") and self._blocking_alarm() is None,
-                tracking=self.servo and not b.closed_loop[i],
+                t, *provided(), valid=valid, tracking=tracking,
                 modulo_length=e["Modulo.Length"] if e["Modulo.Enable"] else 0.0,
-                modulo_start=e["Modulo.StartValue"], sequence=counter[0]))
+                modulo_start=e["Modulo.StartValue"], sequence=counter[0], delay=self.local_delay_time()))
         ctl.sync.register_post(send)
 
     # --- tags -------------------------------------------------------------------------------------------

@@ -15,8 +15,11 @@ from typing import Protocol, Sequence
 class LeadingValueSample:
     """One leading value telegram: the state of the leading axis at the sender's servo time ``time``.
 
-    ``position`` is the unwrapped (continuous) setpoint; ``modulo_length`` 0.0 means no modulo.  The
+    ``position`` is the unwrapped (continuous) leading value; ``modulo_length`` 0.0 means no modulo.  The
     sender's clock and the receiver's clock are the same virtual time base (one sync domain, §8.1.2).
+    ``delay`` is the sender's ``CrossPlcSynchronousOperation.LocalLeadingValueDelayTime``: its local
+    followers (coupling type "delayed") use this value at ``time + delay``, and so does a leading axis
+    proxy for its followers (§8.1.3), which keeps the followers of both controllers in step.
     """
 
     time: float
@@ -28,6 +31,7 @@ class LeadingValueSample:
     modulo_length: float = 0.0
     modulo_start: float = 0.0
     sequence: int = 0                  # counts the telegrams of one sender
+    delay: float = 0.0                 # the sender's local leading value delay time [s]
 
 
 class LeadingValueSink(Protocol):

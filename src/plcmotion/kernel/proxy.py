@@ -2,11 +2,14 @@
 
 The proxy stands in for a leading axis of another controller.  Every servo cycle it takes the leading
 value telegrams that have arrived (from any :class:`~plcmotion.kernel.leading_value.LeadingValueSource`)
-and provides the leading value for the local time minus its delay ``Parameter.LocalLeadingValueDelayTime``:
-interpolated between received values when they reach that far (``StatusExternalLeadingValue.AdjustmentTime``
-< 0), extrapolated from the newest one when they do not (> 0).  The sender delays the leading value for
-its own followers by the same time (coupling type "delayed"), so that followers on all controllers move
-in step (§8.1.3).
+and provides the leading value for the local time minus the sender's delay, which every telegram carries
+(the leading axis's ``CrossPlcSynchronousOperation.LocalLeadingValueDelayTime``): the value the sender's
+delayed local followers use at the same time, so that followers on all controllers move in step (§8.1.3:
+"depending on the set delay time, the leading value at the leading axis proxy is automatically
+interpolated or extrapolated").  It is interpolated between received values when they reach that far
+(``StatusExternalLeadingValue.AdjustmentTime`` < 0), extrapolated from the newest one when they do not
+(> 0).  The proxy's own ``Parameter.LocalLeadingValueDelayTime`` is the delay of a virtual following axis
+that provides the value on in a cascade (§8.2.3.2, §A.3.4); it does not shift the proxy's value.
 
 If no valid value newer than the tolerance ``Parameter.ToleranceTimeExternalLeadingValueInvalid`` has
 arrived, the proxy raises technology alarm 900: ``StatusWord.X4 (LeadingValueValid)`` goes FALSE, the
@@ -32,7 +35,7 @@ if TYPE_CHECKING:  # pragma: no cover
 
 _PARAMS = [
     Param("Parameter.LocalLeadingValueDelayTime", REAL, 0.0, RW, (10,), 0.0, E12,
-          doc="the proxy provides the leading value of this time ago [s]"),
+          doc="delay of the virtual following axis that provides the value on in a cascade [s]"),
     Param("Parameter.ToleranceTimeExternalLeadingValueInvalid", REAL, 0.01, RW, (10,), 0.0, E12,
           doc="time without a valid leading value before alarm 900 [s]"),
 ]
@@ -78,7 +81,7 @@ class LeadingAxisProxy(AxisTagsMixin):
     _dynamic = DYNAMIC
     _dynamic_types = {p: "LReal" for p in DYNAMIC}
     _dynamic_aliases: dict[str, str] = {}
-    _status_groups = ("ErrorDetail", "StatusExternalLeadingValue", "Parameter")
+    _status_groups = ("ErrorDetail", "StatusExternalLeadingValue")      # Parameter.*: configuration
     _read_param_tags = frozenset(DYNAMIC)
     provides_setpoints = True
     provides_actual_values = False
@@ -102,6 +105,7 @@ class LeadingAxisProxy(AxisTagsMixin):
         self.value_time = 0.0
         self.valid = False
         self.adjustment_time = 0.0
+        self.sender_delay = 0.0            # the sender's local delay, from its newest telegram
         self.extrapolating_late = False
         self._last_valid_time: float | None = None
 
@@ -114,13 +118,15 @@ class LeadingAxisProxy(AxisTagsMixin):
 
     # --- each servo cycle ---------------------------------------------------------------------------------
     def update(self, t: float) -> tuple[float, float, float]:
-        delay = self.eff["Parameter.LocalLeadingValueDelayTime"]
-        wanted = t - delay
         if self.source is not None:
-            for s in self.source.fetch(wanted):
+            for s in self.source.fetch(t - self.sender_delay):
                 if self.newest is None or s.time > self.newest.time:
                     self.samples.append(s)
                     self.newest = s
+                    self.sender_delay = s.delay
+        # the value the sender's delayed followers use now (§8.1.3)
+        delay = self.sender_delay
+        wanted = t - delay
         keep = delay + 8 * self.ctl.servo_cycle
         while len(self.samples) > 2 and self.samples[1].time < wanted - keep:
             self.samples.popleft()
@@ -216,7 +222,7 @@ class LeadingAxisProxy(AxisTagsMixin):
     def acknowledge(self) -> Fault | None:
         """Acknowledge alarm 900 once valid leading values arrive again."""
         if self.newest is not None and self.newest.valid and self._last_valid_time is not None and \
-                self.ctl.time - self.eff["Parameter.LocalLeadingValueDelayTime"] - self._last_valid_time <= \
+                self.ctl.time - self.sender_delay - self._last_valid_time <= \
                 self.eff["Parameter.ToleranceTimeExternalLeadingValueInvalid"] + 1e-12:
             self.alarms.clear()
             self.valid = True

@@ -110,8 +110,10 @@ class SynchronousMixin(SyncModifiersMixin):
             return F.reject(F.COUPLING_CYCLE, "self")
         if mode == "actual" and not getattr(master, "provides_actual_values", False):
             return F.reject(F.LV_NOT_READY, "no_actual_values")
-        if mode != "actual" and not getattr(master, "provides_setpoints", False):
+        if mode == "setpoint" and not getattr(master, "provides_setpoints", False):
             return F.reject(F.LV_NOT_READY, "no_setpoints")
+        if mode == "delayed" and not getattr(master, "provides_delayed_values", False):
+            return F.reject(F.LV_NOT_READY, "no_delayed_values")      # §3.3.3: not a proxy
         if mode != "setpoint" and not self.ctl.family_t:
             return F.reject(F.NOT_AVAILABLE, "actual_value_coupling")
         return master, mode

@@ -30,8 +30,10 @@ def main(out: Path) -> int:
     stats = definition.statistics()
     print(f"cam: {stats['points']} points, {stats['segments']} segments (a cam TO holds 1000 / 50)")
     for info in definition.transitions:
-        print(f"  {info}")
-    export_points(definition, out / "feeder_cam.csv", n=360)
+        c = info.characteristics
+        values = "  ".join(f"{k} {v:.3f}" for k, v in c.as_dict().items()) if c is not None else "no stroke"
+        print(f"  {info.label}: {info.law} ({info.task}) {info.x0:g}..{info.x1:g}: {values}")
+    export_points(definition, out / "feeder_cam.csv", n=361)          # both ends: a 1 degree grid
     plot_cam(definition, out / "feeder_cam.png", leading_velocity=360.0, title="feeder cam (VDI 2143)")
     print(f"point list: {out / 'feeder_cam.csv'}   plot: {out / 'feeder_cam.png'}")
     return 0

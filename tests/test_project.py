@@ -227,8 +227,20 @@ CASES = {
         'axes = ["Axis_1"]\n',
         'axes = ["Axis_1"]', "allowed: one table [axes.<name>] per axis"),
     "unknown axis type": (
+        '[axes.Axis_1]\ntype = "rotary"\n',
+        'axes.Axis_1.type = "rotary"', 'allowed: one of "positioning"'),
+    "misspelled status word bit": (
+        '[controller]\nfamily = "S7-1500T"\n[axes.Axis_1]\ntype = "synchronous"\nleading_values = []\n'
+        '[trace]\nsignals = ["Axis_1.StatusWord.Synchronus"]\n',
+        'trace.signals[0] = "Axis_1.StatusWord.Synchronus": Axis_1.StatusWord.Synchronus: StatusWord has no bit',
+        "did you mean StatusWord.Synchronous?"),
+    "family in other case": (
+        '[controller]\nfamily = "s7-1500t"\n',
+        'controller.family = "s7-1500t"', 'did you mean "S7-1500T"?'),
+    "S7-1500 object without family": (
         '[axes.Axis_1]\ntype = "synchronous"\n',
-        'axes.Axis_1.type = "synchronous"', 'allowed: one of "positioning"'),
+        "controller.family is not set, so S7-1200 is assumed, but the file has synchronous axes",
+        'set family = "S7-1500T"'),
     "unknown tag": (
         "[axes.Axis_1.DynamicLimits]\nMaxVelocty = 100.0\n",
         "axes.Axis_1.DynamicLimits.MaxVelocty: unknown parameter (value 100.0)",

@@ -5,7 +5,7 @@ import math
 
 import pytest
 
-from plcmotion import ConfigurationError, Controller, ControllerStopped, RunTimeout, TagAccessError
+from plcmotion import ConfigurationError, Controller, ControllerStopped, ProgramErrorWarning, RunTimeout, TagAccessError
 from plcmotion.s7_1200 import MC_MoveRelative, MC_Power
 
 
@@ -54,7 +54,8 @@ def test_faulty_program_stops_controller_and_disables_axes():
 
     ctl.run(0.02)
     assert axis.StatusBits.Enable
-    ctl.run(0.02)
+    with pytest.warns(ProgramErrorWarning, match="STOP.*ZeroDivisionError: boom"):
+        ctl.run(0.02)
     assert ctl.mode == "STOP"
     assert "ZeroDivisionError: boom" in ctl.stop_reason and "main" in ctl.stop_reason
     assert not axis.StatusBits.Enable
@@ -76,7 +77,8 @@ def test_unknown_instruction_input_is_a_program_error():
     def main():
         move(Axis=axis, Execute=True, Distanse=10.0)
 
-    ctl.step()
+    with pytest.warns(ProgramErrorWarning, match="Distanse"):
+        ctl.step()
     assert ctl.mode == "STOP" and "Distanse" in ctl.stop_reason
 
 

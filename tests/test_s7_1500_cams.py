@@ -4,9 +4,9 @@ import math
 
 import pytest
 
-from plcmotion import Controller
+from plcmotion import ConfigurationError, Controller
 from plcmotion.s7_1500 import (MC_CamIn, MC_GetCamFollowingValue, MC_GetCamLeadingValue, MC_InterpolateCam,
-                               MC_MoveVelocity, MC_Reset)
+                               MC_MoveVelocity, MC_Power, MC_Reset)
 from plcmotion.s7_1500 import errors as E
 
 from _s7_1500_rig import Rig
@@ -190,3 +190,44 @@ def test_cam_restart_reloads_the_start_values_sA_2():
     reset(Axis=cam, Execute=True, Restart=True)
     assert reset.Done and not cam.StatusWord.Interpolated and cam.Point[3].y == 100.0
     assert math.isclose(cam.Point[2].x, 90.0)
+
+
+def test_cyclic_cam_over_whole_revolutions_of_a_modulo_axis_has_no_step_s5_3():
+    """§5.3 cyclic camming of a rotary knife / cross cutter: a cam from 0 to 360 degrees on a modulo axis
+    (360) repeats without a setpoint step at the cam end — the end and start positions are the same
+    position of the axis — so a PROFIdrive following axis runs on without a following error alarm."""
+    ctl = Controller(family="S7-1500T")
+    m = ctl.add_positioning_axis("M", {"VirtualAxis": {"Mode": 1}})
+    s = ctl.add_synchronous_axis("S", {"Actor": {"Type": 1}, "Modulo": {"Enable": True, "Length": 360.0}},
+                                 leading_values=["M"])
+    cam = ctl.add_cam("Cam", [(0, 0), (500, 180), (1000, 360)])
+    pm, ps, mv, ip, ci = MC_Power(), MC_Power(), MC_MoveVelocity(), MC_InterpolateCam(), MC_CamIn()
+
+    @ctl.program
+    def main():
+        pm(Axis=m, Enable=True)
+        ps(Axis=s, Enable=True)
+        ip(Cam=cam, Execute=True)
+        mv(Axis=m, Execute=pm.Status, Velocity=500.0)
+        ci(Master=m, Slave=s, Cam=cam, Execute=ps.Status and ip.Done, ApplicationMode=1, SyncProfileReference=2)
+
+    ctl.run_until(lambda: ci.InSync and mv.InVelocity, timeout=2.0)
+    ends, speeds = 0, []
+    while ctl.time < 5.0:
+        ctl.step()
+        ends += ci.EndOfProfile
+        speeds.append(s.Velocity)
+        assert not ci.Error and s.StatusWord.Enable and s.ErrorDetail.Number == 0
+        assert 0.0 <= s.Position < 360.0
+    assert ends >= 2                                     # the master passed the cam end more than once
+    assert max(speeds) < 180.0 + 1e-6 and min(speeds) > 180.0 - 1e-6   # 360/1000 x 500: no step
+    assert ci.InSync and ci.Busy
+
+
+def test_add_cam_rejects_an_unknown_interpolation_mode_sA_2_6():
+    """§A.2.6: InterpolationSettings.InterpolationMode 0..2, BoundaryConditions 0..1 (named in the error)."""
+    ctl = Controller(family="S7-1500T")
+    with pytest.raises(ConfigurationError, match="InterpolationSettings.InterpolationMode = 3"):
+        ctl.add_cam("Cam", [(0, 0), (1, 1)], interpolation_mode=3)
+    with pytest.raises(ConfigurationError, match="BoundaryConditions = 2"):
+        ctl.add_cam("Cam", [(0, 0), (1, 1)], boundary_conditions=2)

@@ -5,10 +5,11 @@ import argparse
 import runpy
 import sys
 import time
+import warnings
 from pathlib import Path
 from typing import Sequence
 
-from . import __version__
+from . import ProgramErrorWarning, __version__
 
 
 def _progress(fraction: float, wall: float, virtual: float, width: int = 30) -> None:
@@ -95,6 +96,7 @@ def load_program(ctl, program: str) -> None:
 
 
 def cmd_run(args: argparse.Namespace) -> int:
+    from .kernel.tags1500 import describe
     from .project import ProjectError, load_project
     from .trace import Trace, plot_csv
 
@@ -124,12 +126,15 @@ def cmd_run(args: argparse.Namespace) -> int:
     last = 0.0
     show = args.progress or (not args.quiet and sys.stderr.isatty())
     try:
-        for k in range(n):
-            ctl.step()
-            now = time.perf_counter()
-            if show and (now - last > 0.2 or k == n - 1):
-                last = now
-                _progress((k + 1) / n, now - wall0, ctl.time)
+        with warnings.catch_warnings():
+            # the CLI reports a STOP with its reason at the end of the run
+            warnings.simplefilter("ignore", ProgramErrorWarning)
+            for k in range(n):
+                ctl.step()
+                now = time.perf_counter()
+                if show and (now - last > 0.2 or k == n - 1):
+                    last = now
+                    _progress((k + 1) / n, now - wall0, ctl.time)
     finally:
         if show:
             sys.stderr.write("\n")
@@ -143,12 +148,17 @@ def cmd_run(args: argparse.Namespace) -> int:
             trace.plot(args.plot)
     print(f"ran {ctl.time:.3f} s of virtual time in {wall:.2f} s (x{ctl.time / wall if wall else 0:.1f} real time), "
           f"mode {ctl.mode}")
+    def alarms(to) -> str:
+        if ctl.family == "S7-1200":
+            return ", ".join(str(a) for a in to.alarms) or "no error"
+        return ", ".join(f"{describe(a)} [{a}]" for a in to.alarms) or "no error"
+
     for name, ax in ctl.axes.items():
-        errors = ", ".join(str(a) for a in ax.alarms) or "no error"
+        errors = alarms(ax)
         print(f"  {name}: {ax.state}, Position {ax.Position:.6g}, ActualPosition {ax.ActualPosition:.6g}, "
               f"homed {ax.homed}, {errors}")
     for name, to in ctl.objects.items():
-        errors = ", ".join(str(a) for a in to.alarms) or "no error"
+        errors = alarms(to)
         print(f"  {name}: {type(to).__name__}, {errors}")
     if args.trace:
         print(f"trace: {args.trace}")

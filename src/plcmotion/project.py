@@ -225,6 +225,14 @@ class _Loader:
             if key not in SECTIONS:
                 self.unknown(key, value, "section", SECTIONS)
         ctl = self.controller(doc.get("controller"))
+        if getattr(self, "family_unknown", False):
+            # which technology objects and tags exist depends on the family: check them once it is known
+            return None, self.problems
+        used = self._s7_1500_objects(doc)
+        if ctl.family == "S7-1200" and used:
+            self.note(f"controller.family is not set, so S7-1200 is assumed, but the file has {used}: "
+                      'set family = "S7-1500T" (or "S7-1500") in [controller]')
+            return None, self.problems
         self.inputs(ctl, doc.get("inputs"))
         declared = self.axes(ctl, doc.get("axes"))
         self.cams(ctl, doc.get("cams"), declared)
@@ -232,6 +240,21 @@ class _Loader:
         trace = self.trace(ctl, doc.get("trace"), declared)
         ctl.project = {"path": self.label, "trace": trace}  # type: ignore[attr-defined]
         return (None if self.problems else ctl), self.problems
+
+    @staticmethod
+    def _s7_1500_objects(doc: Mapping[str, Any]) -> str:
+        """The S7-1500 technology objects a file declares without naming its family ("" if none)."""
+        controller = doc.get("controller")
+        if isinstance(controller, dict) and "family" in controller:
+            return ""
+        axes = doc.get("axes")
+        kinds = sorted({a.get("type") for a in axes.values() if isinstance(a, dict)} - set(AXIS_TYPES) - {None}) \
+            if isinstance(axes, dict) else []
+        found = [f"{k} axes" if k in ("positioning", "synchronous") else k.replace("_", " ") + "s" for k in kinds
+                 if isinstance(k, str) and k in AXIS_TYPES_1500]
+        if doc.get("cams"):
+            found.append("cams")
+        return " and ".join(found)
 
     def read(self) -> dict[str, Any] | None:
         try:
@@ -279,7 +302,11 @@ class _Loader:
         from .kernel.runtime import FAMILIES
         family = section.get("family", "S7-1200")
         if family not in FAMILIES:
-            self.bad("controller.family", family, ", ".join(json.dumps(f) for f in FAMILIES))
+            same = [f for f in FAMILIES if isinstance(family, str) and f.lower() == family.strip().lower()]
+            hint = f" (did you mean {json.dumps(same[0])}?)" if same else ""
+            self.bad("controller.family", family, ", ".join(json.dumps(f) for f in FAMILIES) + hint
+                     + " (the technology objects are checked once the family is valid)")
+            self.family_unknown = True
         else:
             extra["family"] = family
         filt = section.get("input_filter", 0.0064)

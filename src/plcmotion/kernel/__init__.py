@@ -7,7 +7,7 @@ from .axis import ConfigurationError, PositioningAxis
 from .config import TagAccessError
 from .faults import Fault, Reaction
 from .jobs import Job, JobKind, JobState
-from .runtime import RUN, STOP, Controller, ControllerStopped, RunTimeout
+from .runtime import RUN, STOP, Controller, ControllerStopped, ProgramErrorWarning, RunTimeout
 
-__all__ = ["Controller", "ControllerStopped", "RunTimeout", "ConfigurationError", "TagAccessError",
+__all__ = ["Controller", "ControllerStopped", "ProgramErrorWarning", "RunTimeout", "ConfigurationError", "TagAccessError",
            "PositioningAxis", "Fault", "Reaction", "Job", "JobKind", "JobState", "RUN", "STOP"]

@@ -12,6 +12,7 @@ import math
 import numbers
 import re
 import traceback
+import warnings
 from typing import Any, Callable, Mapping
 
 import numpy as np
@@ -37,6 +38,10 @@ _NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 
 class ControllerStopped(RuntimeError):
     """The controller went to STOP (a program raised, or ``stop()`` was called)."""
+
+
+class ProgramErrorWarning(RuntimeWarning):
+    """A user program raised: the controller went to STOP (``run`` goes on, ``run_until`` raises)."""
 
 
 class RunTimeout(TimeoutError):
@@ -220,6 +225,15 @@ class Controller:
         MC_InterpolateCam before use."""
         self._check_name(name)
         self._need_1500("a cam", t_only=True)
+        issues = [P.Issue(tag, "selection", value, "allowed: " + text)
+                  for tag, value, allowed, text in (
+                      ("InterpolationSettings.InterpolationMode", interpolation_mode, (0, 1, 2),
+                       "0 (linear), 1 (cubic spline) or 2 (Bézier spline)"),
+                      ("InterpolationSettings.BoundaryConditions", boundary_conditions, (0, 1),
+                       "0 (none) or 1 (equal first derivative at start and end)"))
+                  if isinstance(value, bool) or value not in allowed]
+        if issues:
+            raise ConfigurationError(f"cam {name}", issues)
         cam = CamTO(self, name, points, segments, interpolation_mode, boundary_conditions)
         self.cams[name] = cam
         return cam
@@ -334,6 +348,10 @@ class Controller:
                 except Exception as exc:
                     self.stop(f"program {name!r} raised {type(exc).__name__}: {exc}\n"
                               + "".join(traceback.format_exception(exc)))
+                    # like a PLC the controller goes on in STOP; say so where a script would not look
+                    warnings.warn(f"controller in STOP at t = {self.time:.6g} s: program {name!r} raised "
+                                  f"{type(exc).__name__}: {exc} (details: Controller.stop_reason)",
+                                  ProgramErrorWarning, stacklevel=2)
                     break
         self.app_cycles += 1
         for _ in range(self._ratio):
@@ -451,5 +469,5 @@ class Controller:
                           f"{exc}\n" + "".join(traceback.format_exception(exc)))
 
 
-__all__ = ["Controller", "ControllerStopped", "RunTimeout", "ConfigurationError", "RUN", "STOP"]
+__all__ = ["Controller", "ControllerStopped", "ProgramErrorWarning", "RunTimeout", "ConfigurationError", "RUN", "STOP"]
 

@@ -87,6 +87,9 @@ class Coupling:
     # last effective leading value (StatusSynchronizedMotion.EffectiveLeadingValue)
     lv: tuple[float, float, float] = (0.0, 0.0, 0.0)
     cam_cycle: int = 0
+    # successive cam cycles are joined by the cam's stroke: ApplicationMode 2, and cyclic camming of a
+    # modulo following axis whose stroke is whole modulo lengths (the same positions, without a step)
+    joins_cycles: bool = False
     extra: dict = field(default_factory=dict)
 
     @property
@@ -186,7 +189,7 @@ class _Level:
         self.app_mode = np.array([c.app_mode for c in cams], dtype=np.int64)
         self.cam_once = self.app_mode == ONCE
         self.all_cyclic = not bool(self.cam_once.any())
-        self.appending = self.app_mode == APPENDING
+        self.appending = np.array([c.joins_cycles for c in cams], dtype=bool)
         self.any_append = bool(self.appending.any())
         self.inv_mscale = 1.0 / self.mscale if len(cams) else self.mscale
         if table is not None and len(cams):
@@ -500,7 +503,7 @@ class SyncStage:
             r = (u - curve.start) / length
             cyc = math.floor(r)
             u = curve.start + (r - cyc) * length
-            if c.app_mode == APPENDING:
+            if c.joins_cycles:
                 append = cyc * (float(curve.value(curve.end)) - float(curve.value(curve.start)))
             inside = True
         else:

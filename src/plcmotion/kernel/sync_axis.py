@@ -270,6 +270,7 @@ class SynchronousMixin(SyncModifiersMixin):
             c.master_offset = x["master_offset"]
             c.slave_offset = x["slave_offset"]
             c.app_mode = x["app_mode"]
+            c.joins_cycles = c.app_mode == APPENDING or (c.app_mode != ONCE and self._stroke_in_revolutions(c))
             sync = c.curve.start * c.master_scaling + c.master_offset + x["master_sync"]
         length = x["start_distance"]
         if spr == 2:                                  # CamIn: direct synchronous setting
@@ -502,6 +503,17 @@ class SynchronousMixin(SyncModifiersMixin):
         if c.law == CAM:
             c.extra["inside"] = self._cam_inside(c, x)
         self._couple(c, t, Planner.hold(t, 0.0))
+
+    def _stroke_in_revolutions(self: "Axis", c: Coupling) -> bool:
+        """Does one cam cycle move the following axis by a whole, non-zero number of modulo lengths?
+        The positions at the cam's end and start are then the same (cross cutter, rotary knife)."""
+        length = self._modulo_length()
+        curve = c.curve
+        if not length or curve is None:
+            return False
+        stroke = (float(curve.value(curve.end)) - float(curve.value(curve.start))) * c.slave_scaling
+        turns = round(stroke / length)
+        return turns != 0 and abs(stroke - turns * length) <= 1e-9 * max(1.0, abs(stroke))
 
     def _modulo_length(self: "Axis") -> float:
         return self.eff["Modulo.Length"] if self.eff["Modulo.Enable"] else 0.0

@@ -346,7 +346,14 @@ class AxisTagsMixin:
         if word_getter is not None and bit:
             value = word_getter(self)  # type: ignore[arg-type]
             if hasattr(value, "bits"):                    # a bit of a status word: "StatusWord.X22"
-                getattr(value, bit)                       # raises AttributeError for an unknown bit
+                try:
+                    getattr(value, bit)
+                except AttributeError:
+                    names = list(value.bits())
+                    close = difflib.get_close_matches(bit, names, n=1, cutoff=0.6)
+                    hint = f" (did you mean {word}.{close[0]}?)" if close else ""
+                    raise KeyError(f"{self.name}.{path}: {word} has no bit {bit!r}{hint}; allowed: X0 .. X31 "  # type: ignore[attr-defined]
+                                   f"or a bit name: {', '.join(names)}") from None
                 return lambda: getattr(word_getter(self), bit)  # type: ignore[arg-type]
         schema = self.schema  # type: ignore[attr-defined]
         canon = schema.canonical(path)

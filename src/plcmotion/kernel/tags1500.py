@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING, Any, Callable
 import numpy as np
 
 from . import faults as F
-from .faults import Reaction
+from .faults import Fault, Reaction
 from .jobs import JobKind
 from .tags import DYNAMIC as _DYN1200
 from .words import pack, word_type
@@ -55,6 +55,31 @@ ALARM_NUMBERS = {
     F.HOMING_APPROACH_ZERO: 551, F.HOMING_REFERENCING_ZERO: 551, F.POSITION_RANGE: 552, F.DIRECTION: 401,
     F.SYNC_MASTER: 601, F.LV_INVALID: 900,
 }
+#: what each technology alarm number stands for (texts of plcmotion; numbers see the module docstring)
+ALARM_TEXTS = {
+    100: "technology alarm", 101: "internal error", 201: "drive not ready", 202: "drive fault",
+    203: "encoder fault", 401: "invalid configuration", 501: "velocity limited to the dynamic limit",
+    502: "acceleration limited to the dynamic limit", 503: "deceleration limited to the dynamic limit",
+    504: "jerk limited to the dynamic limit", 521: "following error exceeded", 522: "following error warning level",
+    531: "hardware limit switch reached", 533: "software limit switch reached or passed",
+    541: "positioning monitoring: target range not reached or left", 551: "homing failed",
+    552: "position outside the numeric range", 601: "leading value not a configured leading value interconnection",
+    900: "external leading value invalid (leading axis proxy)",
+}
+REACTION_TEXTS = {0: "no reaction", 1: "stop with current dynamics", 3: "emergency stop ramp", 4: "remove enable"}
+
+
+def alarm_text(number: int, reaction: int | None = None) -> str:
+    """``"alarm 521 following error exceeded (reaction: remove enable)"`` for messages and summaries."""
+    text = f"alarm {number} {ALARM_TEXTS.get(number, 'technology alarm')}"
+    return text + (f" (reaction: {REACTION_TEXTS.get(reaction, reaction)})" if reaction is not None else "")
+
+
+def describe(fault: Fault) -> str:
+    """A kernel fault as an S7-1500 technology alarm with its number, text and reaction."""
+    return alarm_text(ALARM_NUMBERS.get(fault.kind, 100), REACTION_CODES.get(fault.reaction, 0))
+
+
 #: ErrorDetail.Reaction: 0 none, 1 stop with current dynamics, 3 emergency stop ramp, 4 remove enable
 REACTION_CODES = {Reaction.NONE: 0, Reaction.STOP: 1, Reaction.EMERGENCY: 3, Reaction.REMOVE_ENABLE: 4}
 

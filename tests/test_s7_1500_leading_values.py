@@ -480,3 +480,63 @@ def test_the_leading_value_of_a_proxy_cannot_be_delayed_s3_3_3():
         g(Master=proxy, Slave=s, Execute=ps.Status)
     ctl.run_until(lambda: g.Error or g.InGear, timeout=1.0)
     assert g.Error and g.ErrorID == 0x8309
+
+
+def test_cascade_keeps_all_followers_in_step_with_interpolation_s8_1_3():
+    """§8.1.3 cascade: CPU 1 leading axis (delay for its local followers), CPU 2 proxy with a follower and a
+    virtual axis that provides the value on to CPU 3 with its own delay, entered also at the proxy
+    (Parameter.LocalLeadingValueDelayTime, §8.2.3.2).  All followers get the same leading value at the same
+    time, and both proxies interpolate (AdjustmentTime < 0)."""
+    hop = 0.008                                        # 2 application cycles of a receiving CPU
+    link1, link2 = LocalLink(), LocalLink()
+    a, b, c = (Controller(family="S7-1500T") for _ in range(3))
+    m = a.add_positioning_axis("Master", {**VIRTUAL, "CrossPlcSynchronousOperation": {
+        "Interface[1]": {"EnableLeadingValueOutput": True}, "LocalLeadingValueDelayTime": 2 * hop}})
+    f1 = a.add_synchronous_axis("F1", VIRTUAL, leading_values=[("Master", "delayed")])
+    p2 = b.add_leading_axis_proxy("P2", {"Parameter": {"LocalLeadingValueDelayTime": hop}}, source_link=link1)
+    f2 = b.add_synchronous_axis("F2", VIRTUAL, leading_values=["P2"])
+    v = b.add_synchronous_axis("V", {**VIRTUAL, "CrossPlcSynchronousOperation": {
+        "Interface[1]": {"EnableLeadingValueOutput": True}, "LocalLeadingValueDelayTime": hop}},
+        leading_values=["P2"])
+    p3 = c.add_leading_axis_proxy("P3", {}, source_link=link2)
+    f3 = c.add_synchronous_axis("F3", VIRTUAL, leading_values=["P3"])
+    m.provide_leading_value(link1)
+    v.provide_leading_value(link2)
+    fbs = {name: (MC_Power(), MC_GearIn()) for name in ("F1", "F2", "V", "F3")}
+    pm, mv = MC_Power(), MC_MoveVelocity()
+
+    def couple(name, master, slave):
+        power, gear = fbs[name]
+        power(Axis=slave, Enable=True)
+        gear(Master=master, Slave=slave, Execute=power.Status)
+
+    @a.program
+    def prog_a():
+        pm(Axis=m, Enable=True)
+        mv(Axis=m, Execute=pm.Status, Velocity=100.0, Acceleration=50.0, Jerk=0.0)
+        couple("F1", m, f1)
+
+    @b.program
+    def prog_b():
+        couple("F2", p2, f2)
+        couple("V", p2, v)
+
+    @c.program
+    def prog_c():
+        couple("F3", p3, f3)
+
+    for _ in range(150):                               # the sending controllers run first in each cycle
+        a.step(), b.step(), c.step()
+    assert all(gear.InGear for _, gear in fbs.values())
+    offsets = []
+    for _ in range(50):                                # the master still accelerates: a time shift would show
+        a.step(), b.step(), c.step()
+        assert m.Acceleration == pytest.approx(50.0)
+        lv1 = f1.StatusSynchronizedMotion.EffectiveLeadingValue.Position
+        assert f2.StatusSynchronizedMotion.EffectiveLeadingValue.Position == pytest.approx(lv1, abs=1e-9)
+        # CPU 3 follows the position of V, which took up the gearing with an offset of its own
+        offsets.append(f3.StatusSynchronizedMotion.EffectiveLeadingValue.Position - lv1)
+        assert f3.StatusSynchronizedMotion.EffectiveLeadingValue.Velocity == pytest.approx(
+            f1.StatusSynchronizedMotion.EffectiveLeadingValue.Velocity, abs=1e-9)
+    assert max(offsets) - min(offsets) < 1e-9
+    assert p2.StatusExternalLeadingValue.AdjustmentTime < 0.0 and p3.StatusExternalLeadingValue.AdjustmentTime < 0.0

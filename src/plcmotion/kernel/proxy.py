@@ -9,7 +9,8 @@ delayed local followers use at the same time, so that followers on all controlle
 interpolated or extrapolated").  It is interpolated between received values when they reach that far
 (``StatusExternalLeadingValue.AdjustmentTime`` < 0), extrapolated from the newest one when they do not
 (> 0).  The proxy's own ``Parameter.LocalLeadingValueDelayTime`` is the delay of a virtual following axis
-that provides the value on in a cascade (§8.2.3.2, §A.3.4); it does not shift the proxy's value.
+that provides the value on in a cascade (§8.2.3.2, §A.3.4): that axis (coupling "cascade") gets the value
+earlier by this time, so that the next proxy can interpolate; the other followers are not shifted.
 
 If no valid value newer than the tolerance ``Parameter.ToleranceTimeExternalLeadingValueInvalid`` has
 arrived, the proxy raises technology alarm 900: ``StatusWord.X4 (LeadingValueValid)`` goes FALSE, the
@@ -96,6 +97,7 @@ class LeadingAxisProxy(AxisTagsMixin):
         self.source = source
         self.alarms: list[Fault] = []
         self._slot: int | None = None
+        self._cascade_slot: int | None = None
         self._reset()
 
     def _reset(self) -> None:
@@ -103,6 +105,7 @@ class LeadingAxisProxy(AxisTagsMixin):
         self.newest: LeadingValueSample | None = None
         self.value = (0.0, 0.0, 0.0)
         self.value_time = 0.0
+        self.ahead = (0.0, 0.0, 0.0)       # the value for a virtual axis that provides it on (cascade)
         self.valid = False
         self.adjustment_time = 0.0
         self.sender_delay = 0.0            # the sender's local delay, from its newest telegram
@@ -149,7 +152,20 @@ class LeadingAxisProxy(AxisTagsMixin):
             self.valid = newest.valid and not self.alarms
         self.value = self._at(wanted)
         self.value_time = t
+        if self._cascade_slot is not None:
+            self.ahead = self._at(wanted + self.cascade_delay)
         return self.value
+
+    @property
+    def cascade_delay(self) -> float:
+        """Parameter.LocalLeadingValueDelayTime: the delay of the virtual following axis that provides
+        this leading value on to a further controller (§8.1.3, §8.2.3.2)."""
+        return float(self.eff["Parameter.LocalLeadingValueDelayTime"])
+
+    def _update_ahead(self, t: float) -> tuple[float, float, float]:
+        if self.value_time != t:                        # the main slot has not run yet in this cycle
+            self.update(t)
+        return self.ahead
 
     def _at(self, wanted: float) -> tuple[float, float, float]:
         s = self.samples
@@ -188,8 +204,15 @@ class LeadingAxisProxy(AxisTagsMixin):
 
     # --- leading value source ------------------------------------------------------------------------------
     def lv_value(self, mode: str, t: float) -> tuple[float, float, float]:
-        p, v, a = self.value
-        dt = t - self.value_time
+        if mode == "cascade" and self.newest is not None:
+            self.lv_slot(mode)
+            return self._extrapolated(self._at(t - self.sender_delay + self.cascade_delay), t, t)
+        return self._extrapolated(self.value, self.value_time, t)
+
+    @staticmethod
+    def _extrapolated(value: tuple[float, float, float], at: float, t: float) -> tuple[float, float, float]:
+        p, v, a = value
+        dt = t - at
         if dt > 0.0:
             p, v = p + dt * (v + 0.5 * dt * a), v + dt * a
         return p, v, a
@@ -197,6 +220,10 @@ class LeadingAxisProxy(AxisTagsMixin):
     def lv_slot(self, mode: str) -> int:
         if self._slot is None:
             self._slot = self.ctl.sync.register_ext(self.update)
+        if mode == "cascade":
+            if self._cascade_slot is None:
+                self._cascade_slot = self.ctl.sync.register_ext(self._update_ahead)
+            return self._cascade_slot
         return self._slot
 
     def lv_position_controlled(self) -> bool:

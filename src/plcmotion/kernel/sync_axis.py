@@ -33,6 +33,7 @@ if TYPE_CHECKING:  # pragma: no cover
 
 _EPS = 1e-12
 COUPLING_TYPES = ("setpoint", "actual", "delayed")
+SETPOINTS = ("setpoint", "cascade")      # coupling to the setpoint (cascade: ahead at a proxy, §8.1.3)
 
 
 class SynchronousMixin(SyncModifiersMixin):
@@ -116,7 +117,15 @@ class SynchronousMixin(SyncModifiersMixin):
             return F.reject(F.LV_NOT_READY, "no_delayed_values")      # §3.3.3: not a proxy
         if mode != "setpoint" and not self.ctl.family_t:
             return F.reject(F.NOT_AVAILABLE, "actual_value_coupling")
+        if mode == "setpoint" and getattr(master, "cascade_delay", 0.0) and self.provides_cross_plc():
+            # §8.1.3 cascade: the axis that provides the value on runs ahead by the proxy's
+            # Parameter.LocalLeadingValueDelayTime, the delay it sends with (docs: decisions #31)
+            mode = "cascade"
         return master, mode
+
+    def provides_cross_plc(self: "Axis") -> bool:
+        """Configured to provide its leading value to other controllers (§6.1.4)."""
+        return bool(self.eff.get("CrossPlcSynchronousOperation.Interface[1].EnableLeadingValueOutput"))
 
     def _lv_now(self: "Axis", source: Any, mode: str, t: float) -> tuple[float, float, float]:
         """Effective leading value (source value plus additive value) at time ``t``."""
@@ -209,7 +218,7 @@ class SynchronousMixin(SyncModifiersMixin):
         self._limit_gear_in_dynamics(c.job)
         c.law = GEAR
         c.ratio = c.job.extra["ratio"]
-        if c.mode == "setpoint" and not c.source.lv_position_controlled():
+        if c.mode in SETPOINTS and not c.source.lv_position_controlled():
             # §3.3.5: with setpoint coupling the job waits until the leading axis is position-controlled
             c.waiting = c.poll = True
             self._set_waiting(c, t)
@@ -298,7 +307,7 @@ class SynchronousMixin(SyncModifiersMixin):
             return
         c.waiting = True
         c.poll = spr == 0 or c.extra["direction_guessed"] or (
-            c.mode == "setpoint" and not c.source.lv_position_controlled())
+            c.mode in SETPOINTS and not c.source.lv_position_controlled())
         if spr == 0:
             c.extra["armed"] = False
         self._set_waiting(c, t)
@@ -367,7 +376,7 @@ class SynchronousMixin(SyncModifiersMixin):
 
     def _poll(self: "Axis", c: Coupling, t: float) -> None:
         """Waiting condition checked every cycle: a position-controlled leading axis; SPR 0 start time."""
-        if c.mode == "setpoint" and not c.source.lv_position_controlled():
+        if c.mode in SETPOINTS and not c.source.lv_position_controlled():
             return
         if c.job.kind == JobKind.GEAR_IN:
             self.waiting = None
@@ -563,7 +572,7 @@ class SynchronousMixin(SyncModifiersMixin):
         """The leading value crossed the start position of a waiting GearInPos/CamIn (SPR 1, 3)."""
         if c is not self.waiting:
             return
-        if c.mode == "setpoint" and not c.source.lv_position_controlled():
+        if c.mode in SETPOINTS and not c.source.lv_position_controlled():
             c.poll = True                       # §3.3.5: wait for a position-controlled leading axis
             self.ctl.sync.changed()
             return

@@ -171,3 +171,13 @@ def test_new_jog_velocity_above_the_limit_warns_sA_1_16():
     ctl.step()
     ctl.run_until(lambda: jog.InVelocity, timeout=3.0)
     assert axis.Velocity == pytest.approx(600.0) and axis.WarningWord.X6
+
+
+def test_alarm_description_names_number_text_and_reaction_s7_1_1():
+    """§6.1.5.6 / §7.1.1: the following error alarm is 521 with the reaction "remove enable" (ErrorDetail)."""
+    from plcmotion.kernel import faults as F
+    from plcmotion.kernel.faults import Reaction
+    from plcmotion.kernel.tags1500 import alarm_description
+
+    text = alarm_description(F.alarm(F.FOLLOWING_ERROR, "", Reaction.REMOVE_ENABLE))
+    assert text == "alarm 521 following error exceeded (reaction: remove enable)"

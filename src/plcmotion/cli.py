@@ -96,7 +96,7 @@ def load_program(ctl, program: str) -> None:
 
 
 def cmd_run(args: argparse.Namespace) -> int:
-    from .kernel.tags1500 import describe
+    from .kernel.tags1500 import alarm_description
     from .project import ProjectError, load_project
     from .trace import Trace, plot_csv
 
@@ -151,7 +151,7 @@ def cmd_run(args: argparse.Namespace) -> int:
     def alarms(to) -> str:
         if ctl.family == "S7-1200":
             return ", ".join(str(a) for a in to.alarms) or "no error"
-        return ", ".join(f"{describe(a)} [{a}]" for a in to.alarms) or "no error"
+        return ", ".join(f"{alarm_description(a)} [{a}]" for a in to.alarms) or "no error"
 
     for name, ax in ctl.axes.items():
         errors = alarms(ax)

@@ -507,7 +507,9 @@ class SyncStage:
                 append = cyc * (float(curve.value(curve.end)) - float(curve.value(curve.start)))
             inside = True
         else:
-            inside = curve.start < u < curve.end
+            # the same rule as the vectorised stage: on a cam end the value is inside unless it moves out
+            inside = (u > curve.start or (u == curve.start and uv >= 0.0)) and \
+                     (u < curve.end or (u == curve.end and uv <= 0.0))
             u = min(max(u, curve.start), curve.end)
         f, f1, f2 = (float(v[0]) for v in curve.evaluate(np.array([u])))
         if not inside:

@@ -75,7 +75,7 @@ def alarm_text(number: int, reaction: int | None = None) -> str:
     return text + (f" (reaction: {REACTION_TEXTS.get(reaction, reaction)})" if reaction is not None else "")
 
 
-def describe(fault: Fault) -> str:
+def alarm_description(fault: Fault) -> str:
     """A kernel fault as an S7-1500 technology alarm with its number, text and reaction."""
     return alarm_text(ALARM_NUMBERS.get(fault.kind, 100), REACTION_CODES.get(fault.reaction, 0))
 

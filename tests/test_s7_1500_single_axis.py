@@ -194,6 +194,17 @@ def test_superimposed_on_a_standing_axis_moves_by_the_distance():
     assert axis.Position == pytest.approx(-12.5)
 
 
+def test_superimposed_distance_zero_is_done_and_not_busy_forever_issue8():
+    """MC_MoveSuperimposed with Distance 0 on a resting axis has nothing to add: Done, not Busy forever
+    (found by the fuzzer, issue 8)."""
+    ctl, axis, steps, _ = axis_rig()
+    sup = MC_MoveSuperimposed()
+    steps.append(lambda: sup(Axis=axis, Execute=True, Distance=0.0))
+    ctl.run_until(lambda: sup.Done or sup.Error, timeout=1.0)
+    assert sup.Done and not sup.Busy and not sup.Error
+    assert axis.Position == 0.0
+
+
 def test_home_modes_direct_and_home_position_s6_1_5_5():
     ctl, axis, steps, _ = axis_rig({"Homing": {"HomePosition": 42.0}})
     home = MC_Home()

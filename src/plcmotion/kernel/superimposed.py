@@ -53,6 +53,9 @@ class SuperimposedMixin:
             self._finish_job(self.sup_job, JobState.ABORTED, t)
         self.sup_job = job
         self._sup_load(profile)
+        if self._sup_seg == len(profile.segments) - 1:
+            # nothing left to superimpose (e.g. Distance 0 from a resting part): no end event will come
+            self._finish_job(job, JobState.DONE, t)
 
     def _sup_load(self: "PositioningAxis1500", profile: Profile | None) -> None:
         was = self.sup_profile is not None

@@ -8,14 +8,17 @@ far-ahead number must not make the subscriber discard every genuine one after it
 Resynchronisation (a publisher restarted and counts afresh, or many datagrams were lost): once
 ``resync`` out-of-window numbers in a row are each ahead of the previous one by ``1..window``, the
 subscriber adopts the newest and accepts from there.  A lone forged or replayed datagram never
-resynchronises it; a real restart costs ``resync - 1`` samples.  ``restart()`` makes the next number
-acceptable whatever it is (used after the sender was declared lost).
+resynchronises it; a real restart costs ``resync - 1`` samples.  Up to ``_RUNS`` such runs are followed
+at once (the oldest is forgotten), so forged datagrams interleaved with a restarted publisher's do not
+keep it from resynchronising.  ``restart()`` makes the next number acceptable whatever it is (used after
+the sender was declared lost).
 """
 from __future__ import annotations
 
 __all__ = ["SequenceWindow"]
 
 _MOD = 1 << 16
+_RUNS = 8           # out-of-window runs followed at once (bounded work and memory)
 
 
 class SequenceWindow:
@@ -27,14 +30,13 @@ class SequenceWindow:
         self.window = window
         self.resync = resync
         self.last: int | None = None
-        self._candidate: int | None = None
-        self._run = 0
+        self._runs: dict[int, int] = {}     # newest number of an out-of-window run -> its length
         self.missed = 0             # numbers skipped by accepted ones (lost datagrams)
         self.resyncs = 0
 
     def restart(self) -> None:
         self.last = None
-        self._candidate, self._run = None, 0
+        self._runs.clear()
 
     def check(self, seq: int) -> str:
         """'accept', 'duplicate' (or late) or 'window' (out of window, dropped)."""
@@ -46,19 +48,22 @@ class SequenceWindow:
         if 0 < ahead <= self.window:
             self.missed += ahead - 1
             self.last = seq
-            self._candidate, self._run = None, 0
+            self._runs.clear()
             return "accept"
         if ahead == 0 or ahead > _MOD - self.window:
             return "duplicate"
-        cand = self._candidate
-        if cand is not None and 0 < (seq - cand) % _MOD <= self.window:
-            self._run += 1
-        else:
-            self._run = 1
-        self._candidate = seq
-        if self._run >= self.resync:
+        runs = self._runs
+        run = 1
+        for newest in runs:
+            if 0 < (seq - newest) % _MOD <= self.window:
+                run = runs.pop(newest) + 1
+                break
+        if run >= self.resync:
             self.last = seq
-            self._candidate, self._run = None, 0
+            runs.clear()
             self.resyncs += 1
             return "accept"
+        if len(runs) >= _RUNS:
+            del runs[next(iter(runs))]
+        runs[seq] = run
         return "window"

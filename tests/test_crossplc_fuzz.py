@@ -141,3 +141,22 @@ def test_forged_runs_do_not_keep_a_restarted_publisher_out() -> None:
         sub.receive(PLAIN.encode(LeadingValueSample(i * 1e-3, 1.0, 0.0, 0.0, sequence=i)))
     genuine = [s.sequence for s in sub.fetch(0.0) if s.time < 1.0]
     assert genuine == list(range(3, 31))
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.integers(0, (1 << 16) - 1), st.lists(st.integers(1, 256), max_size=300),
+       st.lists(st.integers(257, (1 << 16) - 257), max_size=300))
+def test_sequence_window_accepts_every_in_window_step_and_no_lone_stray(start, steps, strays) -> None:
+    """A genuine count advancing by 1..window per telegram (with wrap-around) is always accepted and its
+    gaps counted as missed; a stray number out of the window between two genuine ones never is."""
+    from plcmotion.crossplc.sequence import SequenceWindow
+    w = SequenceWindow(window=256, resync=3)
+    assert w.check(start) == "accept"
+    seq = start
+    for i, step in enumerate(steps):
+        if i < len(strays):
+            assert w.check((seq + strays[i]) % (1 << 16)) == "window"
+        seq = (seq + step) % (1 << 16)
+        assert w.check(seq) == "accept"
+        assert w.check(seq) == "duplicate"
+    assert w.missed == sum(s - 1 for s in steps) and w.resyncs == 0

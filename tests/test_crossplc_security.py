@@ -152,3 +152,16 @@ def test_wrong_key_token_or_mode_is_rejected_and_replay_dropped() -> None:
         secured.receive(data)
     assert secured.accepted == 2 and secured.dropped == 2
     assert [s.sequence for s in secured.fetch(0.0)] == [1, 2]
+
+
+def test_security_page_quick_start_runs() -> None:
+    """docs/crossplc_security.md: the quick start builds a secured publisher and subscriber."""
+    from pathlib import Path
+    page = (Path(__file__).resolve().parents[1] / "docs" / "crossplc_security.md").read_text()
+    code = page.split("```python\n", 1)[1].split("```", 1)[0]
+    scope: dict = {}
+    exec(compile(code, "crossplc_security.md", "exec"), scope)
+    assert scope["pub"].security.mode == scope["sub"].security.mode == "sign_encrypt"
+    assert scope["sub"].security.policy == "PubSub-Aes256-CTR"
+    scope["pub"].close()
+    scope["sub"].close()

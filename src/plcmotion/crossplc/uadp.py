@@ -187,8 +187,9 @@ class UadpLeadingValuePublisher:
                 try:
                     sock.sendto(codec.encode(sample), addr)
                 except (TypeError, ValueError, OverflowError, AttributeError, OSError):
-                    self.errors += 1
-                    logger.exception("leading value sample not sent: %r", sample)
+                    self.errors += 1    # logged once: a dead network must not flood the log at 1 kHz
+                    (logger.exception if self.errors == 1 else logger.debug)(
+                        "leading value sample not sent (further failures counted in .errors): %r", sample)
                 with self._cond:
                     self._queue.popleft()
                     self._cond.notify_all()

@@ -395,14 +395,15 @@ def test_uadp_network_address_needs_security_or_an_explicit_opt_out_defect_9(uad
         uadp.UadpLeadingValueSubscriber("udp://127.0.0.1:4840")
 
 
-def test_uadp_multicast_group_is_shared_by_two_subscribers_defect_9(uadp) -> None:
-    """A multicast URL: each subscriber joins the group on the given interface and both receive (the only
-    case with address reuse)."""
+@pytest.mark.parametrize("interface", ["127.0.0.1", "lo"])
+def test_uadp_multicast_group_is_shared_by_two_subscribers_defect_9(uadp, interface) -> None:
+    """A multicast URL: each subscriber joins the group on the given interface (its address or, as a
+    PubSub NetworkInterface, its name) and both receive (the only case with address reuse)."""
     with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as probe:
         probe.bind(("127.0.0.1", 0))
         port = probe.getsockname()[1]
     group = f"opc.udp://239.255.77.{port % 250 + 1}:{port}"
-    opts = {"security": "none", "interface": "127.0.0.1"}
+    opts = {"security": "none", "interface": interface}
     try:
         a = uadp.UadpLeadingValueSubscriber(group, wait_timeout=1.0, **opts)
         b = uadp.UadpLeadingValueSubscriber(group, wait_timeout=1.0, **opts)
@@ -420,3 +421,18 @@ def test_uadp_multicast_group_is_shared_by_two_subscribers_defect_9(uadp) -> Non
     finally:
         a.close()
         b.close()
+
+
+def test_uadp_ipv6_loopback_binds_its_address(uadp) -> None:
+    try:
+        with socket.socket(socket.AF_INET6, socket.SOCK_DGRAM) as probe:
+            probe.bind(("::1", 0))
+            port = probe.getsockname()[1]
+    except OSError as exc:
+        pytest.skip(f"no IPv6 loopback: {exc}")
+    url = f"opc.udp://[::1]:{port}"
+    with uadp.UadpLeadingValueSubscriber(url, wait_timeout=2.0) as sub, uadp.UadpLeadingValuePublisher(url) as pub:
+        with socket.socket(socket.AF_INET6, socket.SOCK_DGRAM) as thief, pytest.raises(OSError):
+            thief.bind(("::1", port))
+        pub.send(sample(1))
+        assert collect(sub, 1, sample(1).time, limit=3.0) == [sample(1)]

@@ -7,9 +7,9 @@ datagrams (the bind fails instead: one receiver per unicast address and port).
 
 A multicast URL (224.0.0.0/4, ff00::/8) is different: several subscribers on one host share the group,
 which needs SO_REUSEADDR; that is the only place it is set.  The socket binds the group address (so it
-sees only that group's datagrams on the port) and joins the group on ``interface`` (the address of the
-local network interface, as a PubSubConnection's NetworkInterface; default: the one the routing table
-picks).  The sender uses ``interface`` as its outgoing multicast interface, with ``ttl`` hops.
+sees only that group's datagrams on the port) and joins the group on ``interface`` (as a
+PubSubConnection's NetworkInterface: the interface's name, e.g. ``eth0``, or for IPv4 its address;
+default: the one the routing table picks).  The sender uses ``interface`` as its outgoing multicast interface, with ``ttl`` hops.
 """
 from __future__ import annotations
 
@@ -49,8 +49,27 @@ def parse_url(url: str) -> Endpoint:
     return Endpoint(family, addr, ip.is_multicast, ip.is_loopback)
 
 
-def _interface_v4(interface: str | None) -> bytes:
-    return socket.inet_aton(interface) if interface else struct.pack("!I", socket.INADDR_ANY)
+def _mreq_v4(interface: str | None) -> bytes:
+    """The interface part of an IPv4 membership/multicast-interface request: ``interface`` is the
+    interface's address (ip_mreq) or its name, as a PubSubConnection's NetworkInterface (ip_mreqn)."""
+    if not interface:
+        return struct.pack("!I", socket.INADDR_ANY)
+    try:
+        return socket.inet_aton(str(ipaddress.IPv4Address(interface)))
+    except ValueError:
+        return struct.pack("!I", socket.INADDR_ANY) + struct.pack("@i", _index(interface))
+
+
+def _index(interface: str | None) -> int:
+    """Interface index for IPv6 multicast: a name (``eth0``) or a number; 0 lets the system choose."""
+    if not interface:
+        return 0
+    if interface.isdigit():
+        return int(interface)
+    try:
+        return socket.if_nametoindex(interface)
+    except OSError:
+        raise ValueError(f"no network interface named {interface!r}") from None
 
 
 def receiver_socket(ep: Endpoint, interface: str | None = None, receive_buffer: int = 0) -> socket.socket:
@@ -63,12 +82,11 @@ def receiver_socket(ep: Endpoint, interface: str | None = None, receive_buffer: 
             if ep.family == socket.AF_INET:
                 sock.bind(ep.address)
                 sock.setsockopt(socket.IPPROTO_IP, socket.IP_ADD_MEMBERSHIP,
-                                socket.inet_aton(ep.address[0]) + _interface_v4(interface))
+                                socket.inet_aton(ep.address[0]) + _mreq_v4(interface))
             else:
-                index = socket.if_nametoindex(interface) if interface else 0
                 sock.bind(ep.address)
                 sock.setsockopt(socket.IPPROTO_IPV6, socket.IPV6_JOIN_GROUP,
-                                socket.inet_pton(socket.AF_INET6, ep.address[0]) + struct.pack("@I", index))
+                                socket.inet_pton(socket.AF_INET6, ep.address[0]) + struct.pack("@I", _index(interface)))
         else:
             sock.bind(ep.address)
     except BaseException:
@@ -83,16 +101,23 @@ def sender_socket(ep: Endpoint, interface: str | None = None, ttl: int | None = 
         if ep.family == socket.AF_INET:
             if ep.multicast:
                 if interface:
-                    sock.setsockopt(socket.IPPROTO_IP, socket.IP_MULTICAST_IF, socket.inet_aton(interface))
+                    spec = _mreq_v4(interface)          # in_addr, or ip_mreqn without its group
+                    sock.setsockopt(socket.IPPROTO_IP, socket.IP_MULTICAST_IF,
+                                    spec if len(spec) == 4 else bytes(4) + spec)
                 sock.setsockopt(socket.IPPROTO_IP, socket.IP_MULTICAST_LOOP, 1)
                 if ttl is not None:
                     sock.setsockopt(socket.IPPROTO_IP, socket.IP_MULTICAST_TTL, ttl)
-            sock.bind((interface if interface and not ep.multicast else "", 0))
+            local = ""
+            if interface and not ep.multicast:      # unicast: send from that interface's address
+                try:
+                    local = str(ipaddress.IPv4Address(interface))
+                except ValueError:
+                    sock.setsockopt(socket.SOL_SOCKET, socket.SO_BINDTODEVICE, interface.encode())
+            sock.bind((local, 0))
         else:
             if ep.multicast:
                 if interface:
-                    sock.setsockopt(socket.IPPROTO_IPV6, socket.IPV6_MULTICAST_IF,
-                                    socket.if_nametoindex(interface))
+                    sock.setsockopt(socket.IPPROTO_IPV6, socket.IPV6_MULTICAST_IF, _index(interface))
                 if ttl is not None:
                     sock.setsockopt(socket.IPPROTO_IPV6, socket.IPV6_MULTICAST_HOPS, ttl)
             sock.bind(("", 0))

@@ -340,7 +340,7 @@ def test_uadp_decoder_bomb_does_not_stall_the_subscriber_defect_9(uadp, url) -> 
         tx.sendto(wire.null_array_bomb(1 << 24), to)
         tx.sendto(wire.datagram(sample(1)), to)
         assert sub.fetch(sample(1).time) == [sample(1)]
-        assert time.monotonic() - start < 0.3
+        assert time.monotonic() - start < 0.5            # asyncua's decoder: about 1 s CPU and 180 MB
     assert sub.rejected == {"unsupported": 1}
 
 

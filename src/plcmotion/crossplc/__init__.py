@@ -3,9 +3,9 @@
 The kernel defines what travels (``plcmotion.kernel.leading_value``); this package moves it:
 
 * ``LocalLink`` -- in-process, deterministic, no dependencies;
-* ``UadpLeadingValuePublisher`` / ``UadpLeadingValueSubscriber`` -- OPC UA PubSub, UADP over UDP,
-  built on asyncua (install the ``crossplc`` extra).  Imported on first use, so ``LocalLink`` works
-  without asyncua.
+* ``UadpLeadingValuePublisher`` / ``UadpLeadingValueSubscriber`` -- OPC UA PubSub, UADP over UDP, with
+  optional message security (``generate_key``; it needs ``cryptography``, the ``crossplc`` extra).
+  Imported on first use, so ``LocalLink`` needs nothing beyond the kernel.
 """
 from __future__ import annotations
 
@@ -14,11 +14,11 @@ from typing import TYPE_CHECKING, Any
 from .local import LocalLink
 
 if TYPE_CHECKING:
-    from .uadp import UadpLeadingValuePublisher, UadpLeadingValueSubscriber
+    from .uadp import UadpLeadingValuePublisher, UadpLeadingValueSubscriber, generate_key
 
-__all__ = ["LocalLink", "UadpLeadingValuePublisher", "UadpLeadingValueSubscriber"]
+__all__ = ["LocalLink", "UadpLeadingValuePublisher", "UadpLeadingValueSubscriber", "generate_key"]
 
-_UADP_NAMES = {"UadpLeadingValuePublisher", "UadpLeadingValueSubscriber"}
+_UADP_NAMES = {"UadpLeadingValuePublisher", "UadpLeadingValueSubscriber", "generate_key"}
 
 
 def __getattr__(name: str) -> Any:

@@ -1,308 +1,110 @@
-"""Leading values over OPC UA PubSub (UADP message mapping, UDP transport), built on ``asyncua.pubsub``.
+"""Leading values over OPC UA PubSub: UADP NetworkMessages (OPC UA Part 14 §7.2.2) over UDP (§7.3.2).
 
-The publisher is a regular asyncua PubSub application: a PublishedDataSet with the ten leading value
-fields, one DataSetWriter, one WriterGroup and a UDP/UADP PubSubConnection.  Its data source hands the
-writer group one queued sample per cycle of the group; with a publishing interval of 0 the group
-therefore sends one NetworkMessage (holding one DataSetMessage, variant encoded) per sample, as soon as
-the sample is queued, and sleeps while the queue is empty.  The subscriber is a ReaderGroup with one
-DataSetReader whose SubscribedDataSet buffers the decoded samples for ``fetch``.  Each side runs its
-asyncio loop in a daemon thread, so the servo cycle only touches a lock-protected queue.
+One sample travels as one NetworkMessage holding one DataSetMessage (variant encoding, the ten fields
+of ``DATASET_FIELDS``), addressed by PublisherId, WriterGroupId and DataSetWriterId.  The messages are
+written and read by ``uadp_codec`` (bounded, ``struct`` only) and secured by ``uadp_security``
+(PubSub-Aes128-CTR / PubSub-Aes256-CTR with a shared key); the unsecured bytes are those asyncua's
+PubSub publisher sends, so both ends interoperate with asyncua.  Each end runs one daemon thread on a
+plain UDP socket (``udp``), so the servo cycle only touches a lock-protected queue.
 
-Workarounds for asyncua 2.0/2.1 (confined to ``_connection`` and ``_PubSubThread``):
+Security default: a loopback URL needs nothing; any other address needs ``key=`` (signing and
+encryption unless ``security="sign"``) or an explicit ``security="none"`` -- a leading value that any
+host on the network can forge is not a silent default.  See docs/crossplc_security.md.
 
-* ``PubSubConnection`` rebuilds its ``UdpSettings`` from the configuration, which always binds the
-  socket to the *destination* port with SO_REUSEADDR.  For unicast on one host the publisher's socket
-  then competes with the subscriber's for the datagrams (in practice the publisher, bound last, gets all
-  of them and the subscriber none).  The settings object is therefore replaced after construction: the
-  publisher binds an ephemeral port, the subscriber additionally gets a larger receive buffer.
-* ``PubSubConnection.stop`` awaits its own cancelled reader/writer tasks, so the ``CancelledError``
-  aborts it before the UDP transport is closed.  ``PubSub.stop`` runs it in a task and hides that; the
-  leftover transport is closed here.
-* ``PubSub.start`` swallows a failing ``PubSubConnection.start``; the socket is opened once up front so
-  that a bad address raises from ``start()``.
-
-Pacing: asyncua decodes a message more slowly (about 45 us) than it encodes one (about 33 us), and UDP
-has no flow control, so an unpaced publisher overflows the subscriber's socket buffer within a few
-hundred messages.  The publisher therefore sends at most ``max_rate`` samples per second (default
-5000, lossless on loopback even with sender, receiver and both controllers in one process).
-
-Batching several samples into one NetworkMessage is not done: asyncua builds one DataSetMessage per
-DataSetWriter per publishing cycle, so batching would need several writers or array fields.
+Pacing: UDP has no flow control, so the publisher sends at most ``max_rate`` samples per second
+(default 5000), which a subscriber in the same process keeps up with.
 """
 from __future__ import annotations
 
-import asyncio
 import logging
 import math
 import socket
 import threading
+import time
 from collections import deque
-from collections.abc import Awaitable, Callable, Sequence
-from dataclasses import dataclass
-from typing import Any, Self
-
-from asyncua import pubsub, ua
-from asyncua.pubsub.udp import UdpSettings
+from typing import Self
 
 from plcmotion.kernel.leading_value import LeadingValueSample
 
-__all__ = ["DATASET_FIELDS", "UadpLeadingValuePublisher", "UadpLeadingValueSubscriber"]
+from .sequence import SequenceWindow
+from .uadp_codec import FIELDS, MAX_DATAGRAM, Codec, Rejected, validate
+from .uadp_security import MODES, Security, generate_key
+from .udp import Endpoint, parse_url, receiver_socket, sender_socket
+
+__all__ = ["DATASET_FIELDS", "UadpLeadingValuePublisher", "UadpLeadingValueSubscriber", "generate_key"]
 
 logger = logging.getLogger(__name__)
 
 DEFAULT_URL = "opc.udp://127.0.0.1:4840"
+#: The dataset: (field name, LeadingValueSample attribute), in telegram order.
+DATASET_FIELDS: tuple[tuple[str, str], ...] = tuple((name, attr) for name, _, _, attr in FIELDS)
 
-#: The dataset: (field name, OPC UA built-in type, LeadingValueSample attribute), in telegram order.
-DATASET_FIELDS: tuple[tuple[str, ua.VariantType, str], ...] = (
-    ("Time", ua.VariantType.Double, "time"),
-    ("Position", ua.VariantType.Double, "position"),
-    ("Velocity", ua.VariantType.Double, "velocity"),
-    ("Acceleration", ua.VariantType.Double, "acceleration"),
-    ("Valid", ua.VariantType.Boolean, "valid"),
-    ("Tracking", ua.VariantType.Boolean, "tracking"),
-    ("ModuloLength", ua.VariantType.Double, "modulo_length"),
-    ("ModuloStart", ua.VariantType.Double, "modulo_start"),
-    ("Sequence", ua.VariantType.UInt32, "sequence"),
-    ("DelayTime", ua.VariantType.Double, "delay"),
-)
-_CONVERT: dict[ua.VariantType, Callable[[Any], Any]] = {
-    ua.VariantType.Double: float, ua.VariantType.Boolean: bool,
-    ua.VariantType.UInt32: lambda v: int(v) & 0xFFFFFFFF}
-
-_START_TIMEOUT = 5.0         # wall seconds for the background loop to open its socket
 _STOP_TIMEOUT = 5.0          # wall seconds to join the background thread
+_POLL = 0.05                 # wall seconds a blocked socket waits before looking at the stop flag
 _BACKPRESSURE_TIMEOUT = 1.0  # longest a send() waits for room in a full queue
 _RECEIVE_BUFFER = 4 << 20    # requested SO_RCVBUF of the subscriber (capped by net.core.rmem_max)
 _MAX_RATE = 5000.0           # default publisher pacing, samples per wall second
 _BURST = 20                  # samples a paced publisher may send at once after an idle spell
+_MAX_INBOX = 100_000         # received samples kept for fetch; beyond, the oldest go
 
 
-# ---------------------------------------------------------------------------------------------- encoding
-
-def _dataset_meta(name: str) -> pubsub.DataSetMeta:
-    meta = pubsub.DataSetMeta.Create(ua.String(name))
-    for field_name, vtype, _ in DATASET_FIELDS:
-        meta.add_scalar(ua.String(field_name), vtype)
-    return meta
-
-
-def _encode(sample: LeadingValueSample) -> list[ua.DataValue]:
-    return [ua.DataValue(ua.Variant(_CONVERT[vtype](getattr(sample, attr)), vtype))
-            for _, vtype, attr in DATASET_FIELDS]
-
-
-def _decode(fields: Sequence[pubsub.DataSetValue]) -> LeadingValueSample:
-    values: dict[str, Any] = {f.Name: f.Value.Value.Value for f in fields}  # type: ignore[union-attr]
-    return LeadingValueSample(**{attr: _CONVERT[vtype](values[name]) for name, vtype, attr in DATASET_FIELDS})
-
-
-def _publisher_id(publisher_id: int | str) -> ua.Variant:
-    if isinstance(publisher_id, str):
-        return ua.Variant(publisher_id, ua.VariantType.String)
-    return ua.Variant(ua.UInt32(publisher_id))
+def _security(ep: Endpoint, url: str, security: str | None, key: bytes | None, token_id: int) -> Security | None:
+    """The link's message security from the user's choice; see the module docstring for the default."""
+    if security is None:
+        if key is not None:
+            security = "sign_encrypt"
+        elif ep.loopback:
+            security = "none"
+        else:
+            raise ValueError(f"{url}: a non-loopback address needs message security: pass key= (the same "
+                             f"key data at publisher and subscriber, see generate_key) or opt out with "
+                             f"security='none'")
+    if security not in MODES:
+        raise ValueError(f"security must be one of {MODES}, got {security!r}")
+    if security == "none":
+        if key is not None:
+            raise ValueError("key= given with security='none': choose 'sign' or 'sign_encrypt', or drop the key")
+        return None
+    if key is None:
+        raise ValueError(f"security={security!r} needs key= (see generate_key)")
+    return Security(security, key, token_id)
 
 
-def _uint16(value: int, what: str) -> ua.UInt16:
-    if not 0 < value <= 0xFFFF:
-        raise ValueError(f"{what} must be 1..65535, got {value}")
-    return ua.UInt16(value)
+class _Worker:
+    """One daemon thread running ``body(stop_event)``; start once, close idempotent."""
 
-
-@dataclass
-class _UdpSettings(UdpSettings):
-    """asyncua's UDP settings plus a receive buffer size (0 keeps the system default)."""
-
-    ReceiveBuffer: int = 0
-
-    def create_socket(self) -> tuple[socket.socket, Any, Any]:
-        sock, addr, local = super().create_socket()
-        if self.ReceiveBuffer:
-            sock.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, self.ReceiveBuffer)
-        return sock, addr, local
-
-
-def _connection(name: str, publisher_id: ua.Variant, settings: _UdpSettings,
-                **groups: Any) -> pubsub.PubSubConnection:
-    sock, _, _ = settings.create_socket()   # raises OSError here instead of inside PubSub.start
-    sock.close()
-    con = pubsub.PubSubConnection.udp_uadp(name, publisher_id, settings, **groups)
-    con._network_settings = settings        # see module docstring: asyncua would bind the destination port
-    return con
-
-
-# ----------------------------------------------------------------------------------------- loop thread
-
-_Build = Callable[[], Awaitable[tuple[pubsub.PubSub, list[pubsub.PubSubConnection]]]]
-
-
-class _PubSubThread:
-    """Runs one asyncua PubSub application on its own event loop in a daemon thread."""
-
-    def __init__(self, name: str, build: _Build) -> None:
-        self._name = name
-        self._build = build
+    def __init__(self, name: str) -> None:
+        self.name = name
         self._lock = threading.Lock()
         self._thread: threading.Thread | None = None
-        self._ready = threading.Event()
-        self._error: BaseException | None = None
-        self._loop: asyncio.AbstractEventLoop | None = None
-        self._stop: asyncio.Event | None = None
-        self._closed = False
+        self.stop = threading.Event()
+        self.closed = False
 
     @property
     def running(self) -> bool:
-        return self._thread is not None and self._thread.is_alive() and not self._closed
+        return self._thread is not None and self._thread.is_alive() and not self.closed
 
-    def start(self) -> None:
+    def start(self, body) -> bool:
+        """Start ``body`` in the thread; False if already started; RuntimeError after close."""
         with self._lock:
-            if self._closed:
-                raise RuntimeError(f"{self._name} was closed; create a new one")
+            if self.closed:
+                raise RuntimeError(f"{self.name} was closed; create a new one")
             if self._thread is not None:
-                return
-            self._thread = threading.Thread(target=asyncio.run, args=(self._main(),), name=self._name,
-                                            daemon=True)
+                return False
+            self._thread = threading.Thread(target=body, name=self.name, daemon=True)
             self._thread.start()
-        if not self._ready.wait(_START_TIMEOUT):
-            self.close()
-            raise TimeoutError(f"{self._name} did not start within {_START_TIMEOUT} s")
-        if self._error is not None:
-            self.close()
-            raise self._error
+            return True
 
     def close(self) -> None:
         with self._lock:
-            self._closed = True
-            thread, loop, stop = self._thread, self._loop, self._stop
-        if thread is None:
-            return
-        if loop is not None and stop is not None:
-            try:
-                loop.call_soon_threadsafe(stop.set)
-            except RuntimeError:    # loop already closed
-                pass
-        if thread is not threading.current_thread():
+            self.closed = True
+            thread = self._thread
+        self.stop.set()
+        if thread is not None and thread is not threading.current_thread():
             thread.join(_STOP_TIMEOUT)
-
-    async def _main(self) -> None:
-        with self._lock:    # close() either sees the loop or _main sees closed
-            if self._closed:
-                self._ready.set()
-                return
-            self._loop = asyncio.get_running_loop()
-            self._stop = asyncio.Event()
-        app: pubsub.PubSub | None = None
-        connections: list[pubsub.PubSubConnection] = []
-        try:
-            app, connections = await self._build()
-            await app.start()
-            if any(con._transport is None for con in connections):
-                raise OSError(f"{self._name}: asyncua could not open its UDP socket")
-        except Exception as exc:
-            self._error = exc
-            if app is not None:
-                await self._shutdown(app, connections)
-            self._ready.set()
-            return
-        self._ready.set()
-        try:
-            await self._stop.wait()
-        finally:
-            await self._shutdown(app, connections)
-
-    @staticmethod
-    async def _shutdown(app: pubsub.PubSub, connections: list[pubsub.PubSubConnection]) -> None:
-        await app.stop()
-        for con in connections:     # asyncua 2.1.0 leaves them open, see module docstring
-            if con._transport is not None:
-                con._transport.close()
-                con._transport = None
 
 
 # ------------------------------------------------------------------------------------------- publisher
-
-class _SampleFeed(pubsub.PubSubDataSource):
-    """Queue between the servo thread (``put``) and the writer group, which takes one sample per message.
-
-    With ``max_rate`` the feed hands out at most that many samples per wall second on average (after an
-    idle spell up to ``_BURST`` at once): UDP has no flow control, and a subscriber slower than the
-    publisher would otherwise overflow its socket buffer and lose samples.
-    """
-
-    def __init__(self, max_pending: int, max_rate: float | None) -> None:
-        super().__init__()
-        self._cond = threading.Condition()
-        self._queue: deque[LeadingValueSample] = deque()
-        self._max_pending = max_pending
-        self._interval = 1.0 / max_rate if max_rate else 0.0
-        self._slot = -math.inf      # loop time from which the next sample may go
-        self._loop: asyncio.AbstractEventLoop | None = None
-        self._waiter: asyncio.Future[None] | None = None
-        self._accepting = True
-
-    def __len__(self) -> int:
-        with self._cond:
-            return len(self._queue)
-
-    def put(self, sample: LeadingValueSample) -> None:
-        with self._cond:
-            if not self._accepting:
-                return
-            if len(self._queue) >= self._max_pending and self._loop is not None:
-                self._cond.wait_for(lambda: len(self._queue) < self._max_pending or not self._accepting,
-                                    _BACKPRESSURE_TIMEOUT)
-            self._queue.append(sample)
-            waiter, self._waiter, loop = self._waiter, None, self._loop
-        if waiter is not None and loop is not None:
-            try:
-                loop.call_soon_threadsafe(_wake, waiter)
-            except RuntimeError:    # loop closed meanwhile
-                pass
-
-    def attach(self, loop: asyncio.AbstractEventLoop) -> None:
-        """Bind the feed to the loop whose writer group takes the samples."""
-        with self._cond:
-            self._loop = loop if self._accepting else None
-
-    def drain(self, timeout: float) -> bool:
-        """Wait until the writer took every queued sample; False on timeout or if nobody is taking them."""
-        with self._cond:
-            if self._loop is None:
-                return not self._queue
-            return self._cond.wait_for(lambda: not self._queue, timeout)
-
-    def shut(self) -> None:
-        with self._cond:
-            self._accepting = False
-            self._loop = None
-            self._cond.notify_all()
-
-    async def on_get_value(self) -> list[ua.DataValue]:
-        loop = asyncio.get_running_loop()
-        while True:
-            if self._interval and self._slot > loop.time():
-                await asyncio.sleep(self._slot - loop.time())
-            with self._cond:
-                if self._queue:
-                    sample = self._queue.popleft()
-                    self._cond.notify_all()
-                else:
-                    sample, waiter = None, loop.create_future()
-                    self._waiter = waiter
-            if sample is None:
-                await waiter
-                continue
-            if self._interval:
-                self._slot = max(self._slot, loop.time() - _BURST * self._interval) + self._interval
-            try:
-                return _encode(sample)
-            except (TypeError, ValueError, OverflowError):
-                logger.exception("leading value sample cannot be encoded, dropped: %r", sample)
-
-
-def _wake(waiter: asyncio.Future[None]) -> None:
-    if not waiter.done():
-        waiter.set_result(None)
-
 
 class UadpLeadingValuePublisher:
     """``LeadingValueSink`` publishing every sample as a UADP NetworkMessage to ``url``.
@@ -312,58 +114,99 @@ class UadpLeadingValuePublisher:
     lose datagrams).  If more than ``max_pending`` samples are queued, ``send`` waits for room, at most
     about a second, so a fast virtual-time sender is paced by the link instead of growing memory.
     Samples sent before ``start`` are kept and published once started.
+
+    ``security``/``key``/``security_token_id``: message security, see the module docstring;
+    ``interface``/``ttl``: outgoing interface address and hop limit for a multicast URL.
     """
 
     def __init__(self, url: str = DEFAULT_URL, publisher_id: int | str = 1, writer_group_id: int = 1,
                  dataset_writer_id: int = 1, name: str = "LeadingValue", max_pending: int = 10_000,
-                 max_rate: float | None = _MAX_RATE) -> None:
+                 max_rate: float | None = _MAX_RATE, *, security: str | None = None, key: bytes | None = None,
+                 security_token_id: int = 1, interface: str | None = None, ttl: int | None = None) -> None:
         self.url = url
-        self._feed = _SampleFeed(max_pending, max_rate)
-        self._settings = _UdpSettings(Url=url, Adapter=(None, 0))    # ephemeral local port
-        self._publisher_id = _publisher_id(publisher_id)
-        self._writer_group_id = _uint16(writer_group_id, "writer_group_id")
-        self._dataset_writer_id = _uint16(dataset_writer_id, "dataset_writer_id")
-        self._name = name
-        self._thread = _PubSubThread(f"uadp-pub-{name}", self._build)
-
-    async def _build(self) -> tuple[pubsub.PubSub, list[pubsub.PubSubConnection]]:
-        self._feed.attach(asyncio.get_running_loop())
-        name = ua.String(self._name)
-        dataset = pubsub.PublishedDataSet.Create(name, _dataset_meta(self._name), self._feed)
-        writer = pubsub.DataSetWriter.new_uadp(name=name, dataset_name=name,
-                                               dataset_writer_id=self._dataset_writer_id,
-                                               message_timestamp=False, message_status=False)
-        group = pubsub.WriterGroup.new_uadp(name=name, writer_group_id=self._writer_group_id,
-                                            publishing_interval=ua.Duration(0), writer=[writer])
-        con = _connection(f"{self._name} publisher", self._publisher_id, self._settings,
-                          writer_groups=[group])
-        app = pubsub.PubSub()
-        await app.add_published_dataset(dataset)
-        await app.add_connection(con)
-        return app, [con]
+        self._endpoint = parse_url(url)
+        self.security = _security(self._endpoint, url, security, key, security_token_id)
+        self._codec = Codec(publisher_id, writer_group_id, dataset_writer_id, self.security)
+        self._interface, self._ttl = interface, ttl
+        self._cond = threading.Condition()
+        self._queue: deque[LeadingValueSample] = deque()
+        self._max_pending = max_pending
+        self._interval = 1.0 / max_rate if max_rate else 0.0
+        self._worker = _Worker(f"uadp-pub-{name}")
+        self._sock: socket.socket | None = None
+        self.errors = 0     #: samples that could not be encoded or sent
 
     @property
     def pending(self) -> int:
         """Samples queued but not yet handed to the network."""
-        return len(self._feed)
+        with self._cond:
+            return len(self._queue)
 
     def send(self, sample: LeadingValueSample) -> None:
-        self._feed.put(sample)
+        with self._cond:
+            if self._worker.closed:
+                return
+            if len(self._queue) >= self._max_pending and self._worker.running:
+                self._cond.wait_for(lambda: len(self._queue) < self._max_pending or self._worker.closed,
+                                    _BACKPRESSURE_TIMEOUT)
+            self._queue.append(sample)
+            self._cond.notify_all()
 
     def flush(self, timeout: float = 1.0) -> bool:
         """Wait (at most ``timeout`` s) until every queued sample has been sent; True if so."""
-        return self._feed.drain(timeout)
+        with self._cond:
+            if not self._worker.running:
+                return not self._queue
+            return self._cond.wait_for(lambda: not self._queue, timeout)
 
     def start(self) -> None:
-        """Open the socket and start publishing (idempotent)."""
-        self._thread.start()
+        """Open the socket and start publishing (idempotent); OSError if the socket cannot be opened."""
+        if self._worker.running or self._worker.closed:
+            self._worker.start(lambda: None)    # RuntimeError after close
+            return
+        self._sock = sender_socket(self._endpoint, self._interface, self._ttl)
+        if not self._worker.start(self._run):
+            self._sock.close()
+
+    def _run(self) -> None:
+        sock, addr, codec = self._sock, self._endpoint.address, self._codec
+        assert sock is not None
+        slot = -math.inf
+        try:
+            while True:
+                with self._cond:
+                    self._cond.wait_for(lambda: self._queue or self._worker.stop.is_set())
+                    if self._worker.stop.is_set():
+                        return
+                    sample = self._queue[0]
+                if self._interval:
+                    now = time.monotonic()
+                    if slot > now:
+                        time.sleep(slot - now)
+                    slot = max(slot, time.monotonic() - _BURST * self._interval) + self._interval
+                try:
+                    sock.sendto(codec.encode(sample), addr)
+                except (TypeError, ValueError, OverflowError, AttributeError, OSError):
+                    self.errors += 1    # logged once: a dead network must not flood the log at 1 kHz
+                    (logger.exception if self.errors == 1 else logger.debug)(
+                        "leading value sample not sent (further failures counted in .errors): %r", sample)
+                with self._cond:
+                    self._queue.popleft()
+                    self._cond.notify_all()
+        finally:
+            sock.close()
 
     def close(self, drain_timeout: float = 1.0) -> None:
         """Publish what is queued (bounded by ``drain_timeout``), then stop (idempotent)."""
-        if self._thread.running:
-            self._feed.drain(drain_timeout)
-        self._feed.shut()
-        self._thread.close()
+        if self._worker.running:
+            self.flush(drain_timeout)
+        with self._cond:
+            self._worker.stop.set()
+            self._cond.notify_all()
+        self._worker.close()
+        with self._cond:
+            self._queue.clear()         # what did not go out in time is dropped
+            self._cond.notify_all()
 
     def __enter__(self) -> Self:
         self.start()
@@ -375,29 +218,6 @@ class UadpLeadingValuePublisher:
 
 # ------------------------------------------------------------------------------------------ subscriber
 
-class _Inbox:
-    """asyncua SubscribedDataSet that decodes each received DataSetMessage and passes the sample on."""
-
-    def __init__(self, deliver: Callable[[LeadingValueSample], None]) -> None:
-        self._deliver = deliver
-
-    async def on_dataset_received(self, meta: pubsub.DataSetMeta, fields: list[pubsub.DataSetValue]) -> None:
-        try:
-            sample = _decode(fields)
-        except (KeyError, TypeError, ValueError, AttributeError):
-            logger.warning("malformed leading value DataSetMessage dropped: %r", fields)
-            return
-        self._deliver(sample)
-
-    async def on_state_change(self, meta: Any, state: ua.PubSubState) -> None:
-        pass
-
-
-def _is_newer(sequence: int, last: int) -> bool:
-    """Sequence comparison with wrap-around at 2**32 (serial number arithmetic)."""
-    return 0 < (sequence - last) % (1 << 32) < (1 << 31)
-
-
 class UadpLeadingValueSubscriber:
     """``LeadingValueSource`` receiving the samples of one DataSetWriter of one publisher.
 
@@ -405,41 +225,55 @@ class UadpLeadingValueSubscriber:
     than ``needed`` it first waits, at most ``wait_timeout`` wall seconds, for one that is not (lockstep
     with a sender running in virtual time).  After such a wait has timed out the sender counts as lost and
     ``fetch`` stops waiting until a new sample arrives, so the receiver keeps its pace and its proxy can
-    detect the missing leading value.  Samples whose sequence is not newer than the last one are dropped
-    (except for the first one after the sender was lost: a restarted sender may count afresh).
+    detect the missing leading value.
+
+    What is accepted (everything else is counted in ``rejected`` by reason and dropped):
+
+    * datagrams from ``source`` (an IP address) if given, of at most 512 bytes, that decode as a
+      telegram of the configured PublisherId / WriterGroupId / DataSetWriterId with the configured
+      security (signature checked before the payload is read);
+    * whose sequence number is within ``sequence_window`` ahead of the last one (see ``sequence``):
+      duplicates and late ones count in ``dropped``; a restarted publisher is followed after
+      ``resync_count`` consecutive numbers, or at once after the sender was lost;
+    * whose time is finite and within +-1e12 s.  Other non-finite or out-of-range values make the
+      sample invalid (``valid`` FALSE, values of the previous sample), counted in ``invalid``.
     """
 
     def __init__(self, url: str = DEFAULT_URL, publisher_id: int | str = 1, writer_group_id: int = 1,
                  dataset_writer_id: int = 1, wait_timeout: float = 1.0, name: str = "LeadingValue",
-                 receive_buffer: int = _RECEIVE_BUFFER) -> None:
+                 receive_buffer: int = _RECEIVE_BUFFER, *, security: str | None = None, key: bytes | None = None,
+                 security_token_id: int = 1, source: str | None = None, interface: str | None = None,
+                 sequence_window: int = 256, resync_count: int = 3) -> None:
         self.url = url
         self.wait_timeout = wait_timeout
-        self._settings = _UdpSettings(Url=url, ReceiveBuffer=receive_buffer)
-        self._publisher_id = _publisher_id(publisher_id)
-        self._writer_group_id = _uint16(writer_group_id, "writer_group_id")
-        self._dataset_writer_id = _uint16(dataset_writer_id, "dataset_writer_id")
-        self._name = name
+        self._endpoint = parse_url(url)
+        self.security = _security(self._endpoint, url, security, key, security_token_id)
+        self._codec = Codec(publisher_id, writer_group_id, dataset_writer_id, self.security)
+        self._source = socket.getaddrinfo(source, None)[0][4][0] if source else None
+        self._interface = interface
+        self._receive_buffer = receive_buffer
+        self._window = SequenceWindow(sequence_window, resync_count)
         self._cond = threading.Condition()
-        self._inbox: list[LeadingValueSample] = []
+        self._inbox: deque[LeadingValueSample] = deque(maxlen=_MAX_INBOX)
         self._newest_time = -math.inf
-        self._last_sequence: int | None = None
+        self._last: LeadingValueSample | None = None
         self._sender_lost = False
-        self._closed = False
         self._wanted = math.inf     # ``needed`` of a waiting fetch
-        self.dropped = 0    #: samples discarded as duplicate or out of order
-        self.missed = 0     #: samples never received (gaps in the sequence)
-        self._thread = _PubSubThread(f"uadp-sub-{name}", self._build)
+        self._worker = _Worker(f"uadp-sub-{name}")
+        self.accepted = 0   #: samples delivered
+        self.dropped = 0    #: samples discarded as duplicate or late
+        self.invalid = 0    #: samples delivered as invalid because of non-finite or out-of-range values
+        self.rejected: dict[str, int] = {}  #: datagrams dropped, by reason
 
-    async def _build(self) -> tuple[pubsub.PubSub, list[pubsub.PubSubConnection]]:
-        reader = pubsub.DataSetReader.new(self._publisher_id, self._writer_group_id, self._dataset_writer_id,
-                                          _dataset_meta(self._name), name=self._name, enabled=True,
-                                          subscribed=_Inbox(self._receive))  # type: ignore[arg-type]
-        group = pubsub.ReaderGroup.new(name=self._name, reader=[reader], enable=True)
-        con = _connection(f"{self._name} subscriber", self._publisher_id, self._settings,
-                          reader_groups=[group])
-        app = pubsub.PubSub()
-        await app.add_connection(con)
-        return app, [con]
+    @property
+    def missed(self) -> int:
+        """Samples never received (gaps in the sequence of accepted ones)."""
+        return self._window.missed
+
+    @property
+    def resyncs(self) -> int:
+        """Times the subscriber followed a publisher that restarted its count."""
+        return self._window.resyncs
 
     @property
     def sender_lost(self) -> bool:
@@ -447,15 +281,69 @@ class UadpLeadingValueSubscriber:
         with self._cond:
             return self._sender_lost
 
-    def _receive(self, sample: LeadingValueSample) -> None:
+    def start(self) -> None:
+        """Open the socket and start receiving (idempotent); OSError if the address cannot be bound."""
+        if self._worker.running or self._worker.closed:
+            self._worker.start(lambda: None)    # RuntimeError after close
+            return
+        sock = receiver_socket(self._endpoint, self._interface, self._receive_buffer)
+        sock.settimeout(_POLL)
+        if not self._worker.start(lambda: self._run(sock)):
+            sock.close()
+
+    def _run(self, sock: socket.socket) -> None:
+        stop = self._worker.stop
+        try:
+            while not stop.is_set():
+                try:
+                    data, addr = sock.recvfrom(MAX_DATAGRAM + 1)
+                except TimeoutError:
+                    continue
+                except OSError:
+                    if stop.is_set():
+                        return
+                    logger.exception("%s: receive failed", self._worker.name)
+                    time.sleep(_POLL)
+                    continue
+                self.receive(data, addr[0])
+        finally:
+            sock.close()
+
+    def _reject(self, reason: str) -> None:
+        count = self.rejected.get(reason, 0)
+        if count == 0:      # one line per reason: a flood of garbage must not flood the log
+            logger.warning("%s: datagram rejected (%s); further ones are counted in .rejected",
+                           self._worker.name, reason)
+        self.rejected[reason] = count + 1
+
+    def receive(self, data: bytes, source: str | None = None) -> None:
+        """Handle one datagram from ``source`` (what the receive thread does; public for testing)."""
+        if self._source is not None and source != self._source:
+            self._reject("source")
+            return
+        try:
+            decoded = self._codec.decode(data)
+        except Rejected as r:
+            self._reject(r.reason)
+            return
         with self._cond:
-            last = self._last_sequence
-            if last is not None and not self._sender_lost:  # after a loss: a restarted sender counts afresh
-                if not _is_newer(sample.sequence, last):
-                    self.dropped += 1
-                    return
-                self.missed += (sample.sequence - last - 1) % (1 << 32)
-            self._last_sequence = sample.sequence
+            sample = validate(decoded.values, self._last)
+            if sample is None:
+                self._reject("time")
+                return
+            if self._sender_lost:       # a restarted sender counts afresh
+                self._window.restart()
+            verdict = self._window.check(decoded.sequence)
+            if verdict == "duplicate":
+                self.dropped += 1
+                return
+            if verdict == "window":
+                self._reject("window")
+                return
+            self.accepted += 1
+            if not sample.valid and decoded.values[4]:
+                self.invalid += 1
+            self._last = sample
             self._inbox.append(sample)
             self._newest_time = max(self._newest_time, sample.time)
             self._sender_lost = False
@@ -464,29 +352,25 @@ class UadpLeadingValueSubscriber:
 
     def fetch(self, needed: float) -> list[LeadingValueSample]:
         if self._sender_lost and not self._inbox:
-            return []   # lock-free while the sender is gone, so a fast receiver cannot starve _receive
+            return []   # lock-free while the sender is gone, so a fast receiver cannot starve receive
         with self._cond:
-            if self._newest_time < needed and not self._sender_lost and not self._closed \
-                    and self._thread.running:
+            if self._newest_time < needed and not self._sender_lost and self._worker.running:
                 self._wanted = needed
-                arrived = self._cond.wait_for(lambda: self._newest_time >= needed or self._closed,
-                                              self.wait_timeout)
+                arrived = self._cond.wait_for(
+                    lambda: self._newest_time >= needed or self._worker.stop.is_set(), self.wait_timeout)
                 self._wanted = math.inf
                 if not arrived:
                     self._sender_lost = True
-            samples, self._inbox = self._inbox, []
+            samples = list(self._inbox)
+            self._inbox.clear()
         return samples
-
-    def start(self) -> None:
-        """Open the socket and start receiving (idempotent)."""
-        self._thread.start()
 
     def close(self) -> None:
         """Stop receiving and release the socket (idempotent); a waiting ``fetch`` returns at once."""
         with self._cond:
-            self._closed = True
+            self._worker.stop.set()
             self._cond.notify_all()
-        self._thread.close()
+        self._worker.close()
 
     def __enter__(self) -> Self:
         self.start()

@@ -393,7 +393,7 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisT
         if bad is not None:
             self.raise_alarm(bad)
             return
-        self.position_controlled = start_mode == 1 or not self.servo
+        self.position_controlled = start_mode == 1 or not self._has_start_mode()
         if self.servo and self.position_controlled and not self.sensor_valid:
             detail = self.faults.get("encoder", ("", False))[0]
             self.raise_alarm(F.alarm(F.ENCODER, detail, Reaction.REMOVE_ENABLE))
@@ -407,11 +407,18 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisT
             self._timers["ready"] = t
             self._schedule()
 
+    def _has_start_mode(self) -> bool:
+        """Whether MC_Power StartMode 0 (without position control) applies: drive axes (§11.1.1)."""
+        return self.servo
+
+    def _zero_at_enable(self) -> bool:
+        """An axis that is not homed counts from the position at every enable (S7-1200 V6 §12.9.1)."""
+        return not self.homed and not self.absolute_encoder()
+
     def _become_enabled(self, t: float) -> None:
         self.state = ENABLED
         b, i = self.ctl.bank, self.index
-        if not self.homed and not self.absolute_encoder():
-            # an axis that is not homed counts from the position at enable (§12.9.1)
+        if self._zero_at_enable():
             self.drive.set_actual(b, 0.0)
             b.act_p[i] = 0.0
             b.sp_p[i] = 0.0
@@ -730,7 +737,7 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisT
         return max(t, k * period)
 
     def _set_position_control(self, on: bool) -> None:
-        if not self.servo or on == self.position_controlled:
+        if not self._has_start_mode() or on == self.position_controlled:
             return
         self.position_controlled = on
         self._set_loop_flags()

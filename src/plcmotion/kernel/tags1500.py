@@ -145,7 +145,7 @@ def status_word(ax: "Axis") -> int:
         23: ax.superimposed_active,
         24: bool(getattr(ax, "phasing_job", None) is not None and ax.phasing_job.busy),
         25: ax.ueff["Simulation.Mode"] == 1,
-        28: ax.servo and enabled and not ax.position_controlled,
+        28: enabled and not ax.position_controlled,
     }
     return StatusWord(pack(bits))
 

@@ -110,6 +110,15 @@ class Plant:
         self.inputs = inputs
         self.controller = controller
         self.items: list[Switch | Signal] = []
+        self._scenario: Any = None
+
+    @property
+    def scenario(self) -> Any:
+        """Faults played at given controller times (``kernel.fault_injection.FaultScenario``)."""
+        if self._scenario is None:
+            from ..kernel.fault_injection import FaultScenario
+            self._scenario = FaultScenario(self.controller)
+        return self._scenario
 
     def add(self, item: Switch | Signal, t: float = 0.0) -> None:
         self.items.append(item)
@@ -163,8 +172,13 @@ class Plant:
             if not isinstance(channel, DriveChannel):
                 raise ValueError(f"switch at {address}: axis {axis!r} is not a positioning or synchronous axis "
                                  "of this controller")
-        switch = Switch(channel, address, lo, hi, active_high, str(name), period)
-        self.add(switch, self.inputs._time if t is None else t)
+        return self._place(channel, address, lo, hi, active_high, str(name), period,
+                           self.inputs._time if t is None else t)
+
+    def _place(self, channel: DriveChannel, address: str, low: float, high: float, active_high: bool, name: str,
+               period: float | None, t: float) -> Switch:
+        switch = Switch(channel, address, low, high, active_high, name, period)
+        self.add(switch, t)
         return switch
 
     def update(self, t: float) -> None:
@@ -176,12 +190,12 @@ class Plant:
         """Create the switches an axis configuration describes (``Plant.*`` and the input addresses)."""
         lo = cfg["Plant.HWLimitMinPosition"]
         if lo is not None and cfg["PositionLimits_HW.MinSwitchAddress"]:
-            self.add(Switch(channel, cfg["PositionLimits_HW.MinSwitchAddress"], -math.inf, lo,
-                            cfg["PositionLimits_HW.MinSwitchLevel"], "low hardware limit switch"), t)
+            self._place(channel, cfg["PositionLimits_HW.MinSwitchAddress"], -math.inf, lo,
+                        cfg["PositionLimits_HW.MinSwitchLevel"], "low hardware limit switch", None, t)
         hi = cfg["Plant.HWLimitMaxPosition"]
         if hi is not None and cfg["PositionLimits_HW.MaxSwitchAddress"]:
-            self.add(Switch(channel, cfg["PositionLimits_HW.MaxSwitchAddress"], hi, math.inf,
-                            cfg["PositionLimits_HW.MaxSwitchLevel"], "high hardware limit switch"), t)
+            self._place(channel, cfg["PositionLimits_HW.MaxSwitchAddress"], hi, math.inf,
+                        cfg["PositionLimits_HW.MaxSwitchLevel"], "high hardware limit switch", None, t)
         cam = cfg["Plant.HomingSwitchPosition"]
         if cam is not None:
             length = cfg["Plant.HomingSwitchLength"]
@@ -190,8 +204,8 @@ class Plant:
                 address = cfg[f"Sensor[1].{kind}.DigitalInputAddress"]
                 if address and address not in seen:
                     seen.add(address)
-                    self.add(Switch(channel, address, cam, cam + length, cfg[f"Sensor[1].{kind}.SwitchLevel"],
-                                    "homing switch", cfg["Plant.HomingSwitchPeriod"]), t)
+                    self._place(channel, address, cam, cam + length, cfg[f"Sensor[1].{kind}.SwitchLevel"],
+                                "homing switch", cfg["Plant.HomingSwitchPeriod"], t)
         ready = cfg["Actor.Interface.DriveReadyInput"]
         if ready:
             self.add(Signal(ready, channel.ready, "drive ready"), t)

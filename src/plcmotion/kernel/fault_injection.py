@@ -21,6 +21,10 @@ if TYPE_CHECKING:  # pragma: no cover
 
 #: device fault kinds and the alarm each raises
 DEVICE_ALARMS = {"drive": F.DRIVE_ALARM, "encoder": F.ENCODER, "drive_not_ready": F.DRIVE_NOT_READY}
+#: the details each device fault kind knows (S7-1200 V6 §12.8 ErrorInfo of 16#800C, 16#800A, 16#8000)
+DETAILS = {"drive": ("", "control_requested", "shutdown", "station", "sign_of_life"),
+           "encoder": ("", "hardware", "dirty", "absolute_value", "zero_mark", "parking", "station", "sign_of_life"),
+           "drive_not_ready": ("",)}
 #: kinds named after what is lost; they stand for device faults (see ``_expand``)
 LOSS_KINDS = ("encoder_loss", "communication_loss")
 KINDS = tuple(DEVICE_ALARMS) + LOSS_KINDS
@@ -77,8 +81,11 @@ class FaultInjectionMixin:
             self.raise_alarm(F.alarm(DEVICE_ALARMS[device], device_detail, Reaction.REMOVE_ENABLE))
 
     def _expand(self: "PositioningAxis", kind: str, detail: str) -> list[tuple[str, str]]:
-        """The device faults (device, detail) a fault kind stands for."""
+        """The device faults (device, detail) a fault kind stands for (ValueError when it cannot be)."""
         if kind in DEVICE_ALARMS:
+            if detail not in DETAILS[kind]:
+                raise ValueError(f"fault {kind!r}: detail {detail!r} is not one of "
+                                 + ", ".join(repr(d) for d in DETAILS[kind]))
             return [(kind, detail)]
         if detail:
             raise ValueError(f"fault kind {kind!r} takes no detail (got {detail!r})")
@@ -145,11 +152,24 @@ class FaultInjectionMixin:
         (16#800F, alarm 541) trip when the deviation is beyond their limits.  ``clear_fault("load")``
         removes force and obstacle.
         """
-        j = _real("jump", jump)
-        f = None if force is None else _real("force", force)
-        if blocked is not None and not isinstance(blocked, bool):
-            raise TypeError(f"blocked must be True, False or None, got {blocked!r}")
+        j, f = check_load(self, jump, force, blocked)
         self.drive.disturb(jump=j, force=f, blocked=blocked)
+
+
+def check_load(axis: "PositioningAxis", jump: Any = 0.0, force: Any = None, blocked: Any = None
+               ) -> tuple[float, float | None]:
+    """The checked (jump, force) of a load disturbance of ``axis``; TypeError/ValueError naming the problem."""
+    j = _real("jump", jump)
+    f = None if force is None else _real("force", force)
+    if blocked is not None and not isinstance(blocked, bool):
+        raise TypeError(f"blocked must be True, False or None, got {blocked!r}")
+    if axis.sim:
+        raise ValueError(f"axis {axis.name}: a simulated axis (Simulation.Mode = 1) has an ideal drive and no "
+                         "load to disturb")
+    if axis.pto and (f is not None or blocked is not None):
+        raise ValueError(f"axis {axis.name}: a stepper on a pulse output (PTO) runs open loop: only a position "
+                         "jump (lost steps) can be injected")
+    return j, f
 
 
 class FaultScenario:

@@ -157,3 +157,15 @@ def test_defect11_random_fault_and_switch_entries_never_raise(tmp_path_factory, 
     path = write(tmp_path_factory.mktemp("p"), AXIS + body)
     problems = check_project(path)
     assert all(isinstance(p, str) and p.startswith(str(path)) for p in problems)
+
+
+def test_defect11_docs_project_example_loads(tmp_path):
+    """The ``[[switches]]``/``[[faults]]`` example of docs/fault_injection.md is a valid project (with an axis)."""
+    import re
+
+    page = (Path(__file__).resolve().parents[1] / "docs" / "fault_injection.md").read_text(encoding="utf-8")
+    (block,) = re.findall(r"```toml\n(.*?)```", page, re.DOTALL)
+    ctl = load_project(write(tmp_path, AXIS + "\n" + block))
+    assert len(ctl.plant.scenario.pending) == 4 and ctl.plant.switch("I0.5").name == "part present"
+    ctl.run(2.5)
+    assert [w.split(":")[0] for _, w in ctl.plant.scenario.done] == [f"faults[{i}]" for i in range(4)]

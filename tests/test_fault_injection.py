@@ -435,3 +435,36 @@ def test_defect11_docs_fault_injection_examples_run():
     assert len(blocks) == 2
     for code in blocks:
         exec(compile(code, "docs/fault_injection.md", "exec"), {})
+
+
+@settings(max_examples=20, deadline=None)
+@given(period=st.floats(0.002, 0.0108), start=st.floats(0.0, 0.01))
+def test_defect11_bouncing_shorter_than_the_input_filter_is_never_seen(period, start):
+    """S7-1200 V6 §5.4.4.5 input filter (6.4 ms): a contact that bounces with half periods shorter than the
+    filter time less one servo cycle (the level is sampled once per cycle) never changes the input the CPU
+    sees."""
+    ctl = Controller()
+    axis = ctl.add_positioning_axis("Axis_1", {"Actor.Type": 1})
+    sw = ctl.plant.place_switch("I0.3", axis=axis, low=100.0)
+    sw.chatter(period, start=start)
+    seen = []
+    ctl.on_post_servo(lambda t: seen.append(ctl.inputs["I0.3"]))
+    ctl.run(0.2)
+    assert not any(seen)
+
+
+@settings(max_examples=20, deadline=None)
+@given(period=st.floats(0.018, 0.2))
+def test_defect11_bouncing_longer_than_the_input_filter_is_seen_after_the_filter_time(period):
+    """§5.4.4.5: a bounce that lasts longer than the filter (plus two servo cycles of sampling) reaches the CPU,
+    delayed by the filter time."""
+    ctl = Controller()
+    axis = ctl.add_positioning_axis("Axis_1", {"Actor.Type": 1})
+    sw = ctl.plant.place_switch("I0.3", axis=axis, low=100.0)
+    t0 = ctl.time
+    sw.chatter(period, start=t0)
+    changed: list[float] = []
+    ctl.on_post_servo(lambda t: changed.append(t) if ctl.inputs["I0.3"] and not changed else None)
+    ctl.run(period + 0.02)
+    assert changed and changed[0] >= t0 + period / 2 + 0.0064 - 1e-9
+    assert changed[0] <= t0 + period / 2 + 0.0064 + 0.002

@@ -59,8 +59,9 @@ class Switch:
     def level(self, t: float) -> bool:
         on = self.actuated() if self.stuck is None else self.stuck
         if self.chatter_period is not None:
-            phase = (t - self._chatter_t0) % self.chatter_period
-            if phase >= 0.5 * self.chatter_period - 1e-12:
+            # phase in periods, robust against rounding of the cycle times (t = k * servo_cycle)
+            x = (t - self._chatter_t0) / self.chatter_period
+            if x - math.floor(x + 1e-9) >= 0.5 - 1e-9:
                 on = not on
         return on == self.active_high
 

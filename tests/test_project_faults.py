@@ -169,3 +169,26 @@ def test_defect11_docs_project_example_loads(tmp_path):
     assert len(ctl.plant.scenario.pending) == 4 and ctl.plant.switch("I0.5").name == "part present"
     ctl.run(2.5)
     assert [w.split(":")[0] for _, w in ctl.plant.scenario.done] == [f"faults[{i}]" for i in range(4)]
+
+
+def test_defect11_project_faults_on_an_encoder_or_proxy_are_refused(tmp_path):
+    """Only axes have a simulated drive and load: an external encoder or a leading axis proxy named in
+    ``[[faults]]`` or ``[[switches]]`` gives a message, not a silently ignored entry."""
+    path = write(tmp_path, '''[controller]
+family = "S7-1500T"
+[axes.Enc]
+type = "external_encoder"
+[axes.Proxy]
+type = "leading_axis_proxy"
+[[faults]]
+at = 1
+axis = "Enc"
+inject = "encoder_loss"
+[[switches]]
+input = "I0.2"
+axis = "Proxy"
+low = 1.0
+''')
+    problems = check_project(path)
+    assert any("faults[0].axis = \"Enc\": allowed" in p and "ExternalEncoder" in p for p in problems), problems
+    assert any("switches[0].axis = \"Proxy\": allowed" in p and "LeadingAxisProxy" in p for p in problems), problems

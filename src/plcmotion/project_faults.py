@@ -62,8 +62,13 @@ def _entries(loader: "_Loader", name: str, section: Any) -> list[tuple[str, dict
 
 def _axis(loader: "_Loader", ctl: "Controller", key: str, entry: dict, declared: list[str]) -> Any:
     name = entry.get("axis")
-    if not isinstance(name, str) or name not in declared:
-        loader.bad(f"{key}.axis", name, "the name of an axis of this file: " + (", ".join(declared) or "none"))
+    axes = [n for n in declared if n in ctl.axes or ctl._lookup(n) is None]
+    if not isinstance(name, str) or name not in axes:
+        other = ctl._lookup(name) if isinstance(name, str) else None
+        what = (f" ({name} is of type {type(other).__name__}; faults act on the drive and load of an axis)"
+                if other else "")
+        loader.bad(f"{key}.axis", name, "the name of a positioning or synchronous axis of this file: "
+                   + (", ".join(axes) or "none") + what)
         return None
     return ctl.axes.get(name)           # None when the axis table itself has problems (reported there)
 

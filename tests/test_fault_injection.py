@@ -468,3 +468,26 @@ def test_defect11_bouncing_longer_than_the_input_filter_is_seen_after_the_filter
     ctl.run(period + 0.02)
     assert changed and changed[0] >= t0 + period / 2 + 0.0064 - 1e-9
     assert changed[0] <= t0 + period / 2 + 0.0064 + 0.002
+
+
+def test_defect11_stuck_limit_switch_on_a_pto_axis_stops_with_the_emergency_deceleration_s7_1200():
+    """S7-1200 V6 §12.8 16#8004 on a stepper (PTO): the reaction is a stop with the emergency deceleration
+    (the axis stays enabled), not 'remove enable'; the switch is approached after the input filter."""
+    ctl = Controller()
+    axis = ctl.add_positioning_axis("Axis_1", {**HW_1200, "Actor.Type": 2, "DynamicLimits.MinVelocity": 1.0,
+                                               "DynamicLimits.MaxVelocity": 100.0,
+                                               "DynamicDefaults.Acceleration": 200.0,
+                                               "DynamicDefaults.EmergencyDeceleration": 2000.0})
+    ctl.plant.place_switch("I0.1", axis=axis, high=-500.0)
+    sw = ctl.plant.place_switch("I0.2", axis=axis, low=500.0)
+    power, mv = S12.MC_Power(Axis=axis, Enable=True), S12.MC_MoveVelocity(Axis=axis, Velocity=50.0)
+    ctl.program(lambda: (power(), mv(Execute=power.Status)))
+    ctl.run(1.5)
+    assert axis.Velocity == pytest.approx(50.0, rel=1e-3)
+    sw.stick(True)
+    ctl.run_until(lambda: mv.Error, timeout=0.1)
+    assert (mv.ErrorID, mv.ErrorInfo) == (0x8004, 0x000E)
+    v0, t0 = axis.Velocity, ctl.time
+    ctl.run_until(lambda: axis.Velocity == 0.0, timeout=0.2)
+    assert ctl.time - t0 == pytest.approx(v0 / 2000.0, abs=0.005)     # emergency deceleration
+    assert power.Status and axis.StatusBits.Enable and axis.ErrorBits.HWLimit

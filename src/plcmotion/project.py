@@ -21,6 +21,9 @@ A project file has up to three sections::
     [inputs]                      # optional: input filters of single inputs [s] (default input_filter)
     "I0.3" = { filter = 0.0008 }
 
+    [[switches]]                  # optional: switches placed in the simulated machine, and
+    [[faults]]                    # faults played at given times (plcmotion.project_faults)
+
     [command_tables.Table_1]      # optional: command table technology objects (S7-1200 V6 §6)
     Command = [
         { Type = 5, Position = 100.0, Velocity = 50.0, NextStep = 1, StepCode = 1 },
@@ -82,7 +85,7 @@ from .kernel import parameters as P
 from .kernel.axis import ConfigurationError
 from .kernel.runtime import Controller
 
-SECTIONS = ("controller", "axes", "trace", "inputs", "command_tables", "cams")
+SECTIONS = ("controller", "axes", "trace", "inputs", "command_tables", "cams", "switches", "faults")
 CONTROLLER_DEFAULTS: dict[str, float] = {"servo_cycle": 0.001, "app_cycle": 0.004}
 CONTROLLER_KEYS = ("servo_cycle", "app_cycle", "input_filter", "state_file", "technology_version", "family")
 STEP_KEYS = ("Type", "Position", "Velocity", "Duration", "NextStep", "StepCode")
@@ -237,6 +240,10 @@ class _Loader:
         declared = self.axes(ctl, doc.get("axes"))
         self.cams(ctl, doc.get("cams"), declared)
         self.command_tables(ctl, doc.get("command_tables"), declared)
+        # virtual commissioning: placed switches and timed faults (docs/fault_injection.md)
+        from .project_faults import load_faults, load_switches
+        load_switches(self, ctl, doc.get("switches"), declared)
+        load_faults(self, ctl, doc.get("faults"), declared)
         trace = self.trace(ctl, doc.get("trace"), declared)
         ctl.project = {"path": self.label, "trace": trace}  # type: ignore[attr-defined]
         return (None if self.problems else ctl), self.problems

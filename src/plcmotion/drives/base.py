@@ -42,6 +42,11 @@ class DriveChannel(ABC):
     def set_fault(self, on: bool) -> None:
         """A fault of the drive itself (fault injection): it stops executing setpoints and is not ready."""
 
+    def disturb(self, jump: float = 0.0, force: float | None = None, blocked: bool | None = None) -> None:
+        """A disturbance of the load (fault injection): ``jump`` moves the load at once, ``force`` is an
+        external force given as the speed it costs the drive's speed loop, ``blocked`` holds the load."""
+        raise ValueError("this drive has no simulated load to disturb")
+
     # encoder zero marks (reference mark search of a PROFIdrive encoder); drives without them ignore it
     def arm_zero_mark(self, direction: float) -> None:
         """Latch the actual value at the next zero mark passed in ``direction`` (+1 / -1)."""

@@ -60,6 +60,16 @@ class _ServoChannel(DriveChannel):
         running = link.operation_enabled if link is not None else bool(g.en[m])
         return running and not g.flt[m] and t >= g.ready_at[m] - 1e-12
 
+    def disturb(self, jump: float = 0.0, force: float | None = None, blocked: bool | None = None) -> None:
+        g, m = self.group, self.member
+        if jump:
+            g.x[m] += jump                          # slip or collision: the encoder sees the load elsewhere
+        if force is not None:
+            g.dist[m] = force
+        if blocked is not None:
+            g.blk[m] = blocked
+        g.disturbed = bool(g.dist.any() or g.blk.any())
+
     def set_fault(self, on: bool) -> None:
         g, m = self.group, self.member
         g.flt[m] = on
@@ -133,13 +143,16 @@ class ServoDrives(DriveGroup):
     """Closed-loop drives (PROFIdrive telegram or analog speed setpoint) with incremental encoders."""
 
     _FIELDS = ("x", "v", "cmd", "e", "tfac", "vlim", "off_dec", "ready_at", "ready_delay", "q", "off", "last",
-               "zm_dir", "zm_dist", "zm_off", "zm_hit", "zm_count", "lead", "qscale", "qmax", "word", "rev_dist")
+               "zm_dir", "zm_dist", "zm_off", "zm_hit", "zm_count", "lead", "qscale", "qmax", "word", "rev_dist",
+               "dist")
 
     def __init__(self) -> None:
         self.idx = np.zeros(0, dtype=np.intp)
         self.en = np.zeros(0, dtype=bool)
         self.flt = np.zeros(0, dtype=bool)        # drive fault: pulses off, the motor coasts/ramps down
         self.pulses = np.zeros(0, dtype=bool)     # the drive's power section is on and follows its setpoint
+        self.blk = np.zeros(0, dtype=bool)        # injected: the load stands against an obstacle
+        self.disturbed = False                    # any external force or blocked load (fault injection)
         self.links: list[ProfidriveLink | None] = []
         self.stepping: set[int] = set()           # PROFIdrive members whose state machine is moving
         self.cycles = 0
@@ -169,13 +182,14 @@ class ServoDrives(DriveGroup):
                       zm_dir=0.0, zm_dist=zm_dist, zm_off=cfg["Plant.ZeroMarkOffset"], zm_hit=math.nan,
                       zm_count=0.0, lead=cfg["Mechanics.LeadScrew"],
                       qscale=scale / cfg["Actor.DriveParameter.ReferenceSpeed"], qmax=float(limit), word=0.0,
-                      rev_dist=rev_dist)
+                      rev_dist=rev_dist, dist=0.0)
         for name in self._FIELDS:
             setattr(self, name, np.append(getattr(self, name), values[name]))
         self.idx = np.append(self.idx, index)
         self.en = np.append(self.en, False)
         self.flt = np.append(self.flt, False)
         self.pulses = np.append(self.pulses, False)
+        self.blk = np.append(self.blk, False)
         member = len(self.idx) - 1
         self.links.append(ProfidriveLink(cfg, servo_cycle) if profidrive else None)
         if profidrive:
@@ -195,6 +209,8 @@ class ServoDrives(DriveGroup):
                     self.stepping.discard(m)
         on = self.pulses & ~self.flt & (self.ready_at <= t - dt + 1e-12)  # in operation during the last cycle
         c, v0 = self.cmd, self.v
+        if self.disturbed:
+            c = c - self.dist        # an external force: the speed loop settles this much below its setpoint
         # enabled: exact solution of the first-order speed loop for a command held over dt
         v_on = c + (v0 - c) * self.e
         x_on = c * dt + (v0 - c) * self.tfac
@@ -206,7 +222,11 @@ class ServoDrives(DriveGroup):
             x_off = np.where(speed > dv, (v0 + v_off) * (0.5 * dt), v0 * speed / (2 * self.off_dec))
         self.v = np.where(on, v_on, v_off)
         x_prev = self.x
-        self.x = self.x + np.where(on, x_on, x_off)
+        dx = np.where(on, x_on, x_off)
+        if self.disturbed:
+            self.v = np.where(self.blk, 0.0, self.v)
+            dx = np.where(self.blk, 0.0, dx)
+        self.x = self.x + dx
         if self.zm_dir.any():
             self._zero_marks(x_prev)
         act = np.floor(self.x / self.q) * self.q + self.off
@@ -261,6 +281,15 @@ class _DirectChannel(DriveChannel):
 
     def set_fault(self, on: bool) -> None:
         self.fault = on
+
+    def disturb(self, jump: float = 0.0, force: float | None = None, blocked: bool | None = None) -> None:
+        g, m = self.group, self.member
+        if not g.stepper:
+            raise ValueError("a simulated axis (Simulation.Mode = 1) has an ideal drive and no load to disturb")
+        if force is not None or blocked is not None:
+            raise ValueError("a stepper on a pulse output (PTO) runs open loop: only a position jump (lost steps) "
+                             "can be injected")
+        g.mech_offset[m] += jump            # lost steps: the load is elsewhere, the pulse count does not see it
 
     def set_actual(self, bank: Any, value: float) -> None:
         g, m = self.group, self.member

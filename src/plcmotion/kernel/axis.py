@@ -16,6 +16,7 @@ from .jobs import MOTION_KINDS, POSITIONING_KINDS, Job, JobKind, JobState
 from .motion import DirectionFault, MotionPlanner, Plan, limits, modulo_target, wrap
 from .profiles import Planner, PlanningError, Profile
 from .config import ConfigMixin
+from .fault_injection import FaultInjectionMixin
 from .homing import HomingMixin
 from .switches import SwitchesMixin
 from .table_run import TableMixin
@@ -42,7 +43,7 @@ class ConfigurationError(ValueError):
         super().__init__("\n".join(lines))
 
 
-class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisTagsMixin):
+class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMixin, TableMixin, AxisTagsMixin):
     """Positioning axis technology object (TO_PositioningAxis)."""
 
     #: how this kind of technology object names and checks its configuration tags
@@ -393,7 +394,7 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisT
         if bad is not None:
             self.raise_alarm(bad)
             return
-        self.position_controlled = start_mode == 1 or not self.servo
+        self.position_controlled = start_mode == 1 or not self._has_start_mode()
         if self.servo and self.position_controlled and not self.sensor_valid:
             detail = self.faults.get("encoder", ("", False))[0]
             self.raise_alarm(F.alarm(F.ENCODER, detail, Reaction.REMOVE_ENABLE))
@@ -407,11 +408,18 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisT
             self._timers["ready"] = t
             self._schedule()
 
+    def _has_start_mode(self) -> bool:
+        """Whether MC_Power StartMode 0 (without position control) applies: drive axes (§11.1.1)."""
+        return self.servo
+
+    def _zero_at_enable(self) -> bool:
+        """An axis that is not homed counts from the position at every enable (S7-1200 V6 §12.9.1)."""
+        return not self.homed and not self.absolute_encoder()
+
     def _become_enabled(self, t: float) -> None:
         self.state = ENABLED
         b, i = self.ctl.bank, self.index
-        if not self.homed and not self.absolute_encoder():
-            # an axis that is not homed counts from the position at enable (§12.9.1)
+        if self._zero_at_enable():
             self.drive.set_actual(b, 0.0)
             b.act_p[i] = 0.0
             b.sp_p[i] = 0.0
@@ -498,48 +506,6 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisT
             self._interpolating = False
             self._start_profile(plan.profile, plan)
             self._stop_positioning_monitor()
-
-    # ------------------------------------------------------------------------------------------------
-    # device faults (fault injection on the simulated drive and encoder, §12.8 16#8000/16#800A/16#800C)
-    _DEVICE_ALARMS = {"drive": F.DRIVE_ALARM, "encoder": F.ENCODER, "drive_not_ready": F.DRIVE_NOT_READY}
-
-    def inject_fault(self, kind: str, detail: str = "", *, persistent: bool = False) -> None:
-        """Let the simulated device fail.
-
-        ``kind``: "drive" (16#800C; detail "", "control_requested", "shutdown", "station", "sign_of_life"),
-        "encoder" (16#800A; detail "", "hardware", "dirty", "absolute_value", "zero_mark", "parking",
-        "station", "sign_of_life") or "drive_not_ready" (16#8000).  A transient fault is gone once it has
-        been acknowledged (MC_Reset); a ``persistent`` one stays until ``clear_fault``.
-        """
-        if kind not in self._DEVICE_ALARMS:
-            raise ValueError(f"fault kind {kind!r}: one of {', '.join(self._DEVICE_ALARMS)}")
-        self.faults[kind] = (detail, persistent)
-        if kind in ("drive", "drive_not_ready"):
-            self.drive.set_fault(True)
-        if kind == "encoder" or (kind == "drive" and detail in ("station",)):
-            self.homed = False                     # §2.5: an encoder error resets "homed"
-            self.ctl._retain_axis(self)            # also for absolute encoders, across power cycles
-        self.raise_alarm(F.alarm(self._DEVICE_ALARMS[kind], detail, Reaction.REMOVE_ENABLE))
-
-    def clear_fault(self, kind: str | None = None) -> None:
-        """Remove the cause of an injected fault (it still has to be acknowledged)."""
-        for k in [kind] if kind else list(self.faults):
-            detail, _ = self.faults.get(k, ("", False))
-            if k in self.faults:
-                self.faults[k] = (detail, False)
-
-    def communication_ok(self, device: str) -> bool:
-        """StatusDrive/StatusSensor.CommunicationOK: cyclic bus communication with the drive / encoder
-        (PROFIdrive and analog axes; FALSE after an injected station failure or sign-of-life fault)."""
-        if self.pto:
-            return False
-        detail = self.faults.get(device, ("", False))[0]
-        return detail not in ("station", "sign_of_life")
-
-    @property
-    def sensor_valid(self) -> bool:
-        """StatusSensor.State = 2: actual values valid (no encoder fault pending)."""
-        return "encoder" not in self.faults
 
     def acknowledge(self) -> Fault | None:
         """MC_Reset (Restart = FALSE): clear alarms whose cause is gone; returns one that persists."""
@@ -730,7 +696,7 @@ class PositioningAxis(ConfigMixin, HomingMixin, SwitchesMixin, TableMixin, AxisT
         return max(t, k * period)
 
     def _set_position_control(self, on: bool) -> None:
-        if not self.servo or on == self.position_controlled:
+        if not self._has_start_mode() or on == self.position_controlled:
             return
         self.position_controlled = on
         self._set_loop_flags()

@@ -269,6 +269,21 @@ class PositioningAxis1500(SuperimposedMixin, LeadingValueMixin, PositioningAxis)
         return None
 
     # --- enable / disable (MC_Power StopMode: 0 emergency stop, 1 immediate stop, 2 maximum dynamics) ----
+    _enabled_once = False
+
+    def _has_start_mode(self) -> bool:
+        """A simulated axis (Simulation.Mode 1) runs as the drive axis it stands for, also without position
+        control (StatusWord.X28, §A.1.37); a virtual axis has no drive and stays position-controlled."""
+        return self.servo or (self.sim and self.ueff["Simulation.Mode"] == 1 and not self.ueff["VirtualAxis.Mode"])
+
+    def _zero_at_enable(self) -> bool:
+        """An unhomed S7-1500 axis counts from the position at its first enable after the technology object
+        started (§7.1.2); enabling it again keeps the position, so a follower sees no leading value step
+        (§9.1.1: it follows its leading axis after that is enabled again).  docs: issue 8 decision."""
+        first = not self._enabled_once
+        self._enabled_once = True
+        return first and super()._zero_at_enable()
+
     def _disable(self, stop_mode: int) -> None:
         t = self.now
         self._abort_all(t)
@@ -307,6 +322,7 @@ class PositioningAxis1500(SuperimposedMixin, LeadingValueMixin, PositioningAxis)
         super()._abort_all(t)
 
     def reinitialize(self, reason: str) -> None:
+        self._enabled_once = False               # a restarted technology object counts anew (§7.1.2)
         self._abort_all(self.now, keep_simulated=False)
         self._sup_clear()
         self.warnings.clear()

@@ -230,7 +230,7 @@ class LeadingValueMixin:
 
     def lv_position_controlled(self: "PositioningAxis1500") -> bool:
         """Setpoint coupling needs a position-controlled leading axis (§3.3.5)."""
-        return self.state in ("enabled", "disabling") and (self.position_controlled or not self.servo)
+        return self.state in ("enabled", "disabling") and self.position_controlled
 
     def lv_modulo(self: "PositioningAxis1500") -> tuple[float, float] | None:
         e = self.eff

@@ -116,7 +116,7 @@ class Controller:
         self._servo_defect = False
         self.inputs = DigitalInputs(input_filter)
         self.outputs = DigitalOutputs()
-        self.plant = Plant(self.inputs)
+        self.plant = Plant(self.inputs, self)
         self._input_axes: list[PositioningAxis] = []   # axes that watch inputs every servo cycle
         self._pto_holder: dict[int, PositioningAxis] = {}   # pulse generator number -> axis using it
         # retentive data (absolute encoder adjustment), kept in ``state_file`` when one is given

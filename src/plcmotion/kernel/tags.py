@@ -28,6 +28,12 @@ def _job_kind(ax: "PositioningAxis") -> JobKind | None:
     return job.kind if job is not None and job.busy else None
 
 
+def communication_fault(ax: "PositioningAxis") -> bool:
+    """A drive or an encoder on the bus failed or lost its sign of life (S7-1200 V6 §12.8 16#800C/16#003E,
+    16#003F, 16#800A/16#0040, 16#0041: ErrorBits.CommunicationFault, S7-1500 ErrorWord.X7)."""
+    return any(a.kind in (F.DRIVE_ALARM, F.ENCODER) and a.detail in ("station", "sign_of_life") for a in ax.alarms)
+
+
 def _alarm_kinds(ax: "PositioningAxis") -> set[str]:
     return {a.kind for a in ax.alarms}
 
@@ -141,8 +147,7 @@ DYNAMIC: dict[str, Callable[["PositioningAxis"], Any]] = {
     "ErrorBits.DirectionFault": lambda ax: F.DIRECTION in _alarm_kinds(ax),
     "ErrorBits.HWUsed": lambda ax: F.HW_USED in _alarm_kinds(ax) or ax.pto_used_by_other(),
     "ErrorBits.SensorFault": lambda ax: F.ENCODER in _alarm_kinds(ax),
-    "ErrorBits.CommunicationFault": lambda ax: any(a.kind == F.DRIVE_ALARM and a.detail in ("station", "sign_of_life")
-                                                   for a in ax.alarms),
+    "ErrorBits.CommunicationFault": lambda ax: communication_fault(ax),
     "ErrorBits.FollowingErrorFault": lambda ax: F.FOLLOWING_ERROR in _alarm_kinds(ax),
     "ErrorBits.PositioningFault": lambda ax: F.POSITIONING in _alarm_kinds(ax),
 }

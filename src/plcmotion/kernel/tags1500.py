@@ -18,6 +18,7 @@ from . import faults as F
 from .faults import Fault, Reaction
 from .jobs import JobKind
 from .tags import DYNAMIC as _DYN1200
+from .tags import communication_fault
 from .words import pack, word_type
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -145,7 +146,7 @@ def status_word(ax: "Axis") -> int:
         23: ax.superimposed_active,
         24: bool(getattr(ax, "phasing_job", None) is not None and ax.phasing_job.busy),
         25: ax.ueff["Simulation.Mode"] == 1,
-        28: ax.servo and enabled and not ax.position_controlled,
+        28: enabled and not ax.position_controlled,
     }
     return StatusWord(pack(bits))
 
@@ -157,7 +158,7 @@ def error_word(ax: "Axis") -> int:
         1: bool(k & {F.CONFIG, F.HOMING_APPROACH_ZERO, F.HOMING_REFERENCING_ZERO, F.SW_LIMIT_ORDER}),
         4: bool(k & {F.DRIVE_NOT_READY, F.DRIVE_ALARM}),
         5: F.ENCODER in k,
-        7: any(a.kind == F.DRIVE_ALARM and a.detail in ("station", "sign_of_life") for a in ax.alarms),
+        7: communication_fault(ax),
         8: bool(k & {F.SW_LIMIT_MIN, F.SW_LIMIT_MAX}),
         9: bool(k & {F.HW_LIMIT_MIN, F.HW_LIMIT_MAX, F.HW_LIMIT_FREE}),
         10: bool(k & {F.REFERENCE_NOT_FOUND, F.POSITION_RANGE}),

@@ -459,19 +459,19 @@ T1500 = '[controller]\nfamily = "S7-1500T"\n'
 DEFECT_7 = {
     # servo cycle range [0.25 ms, 32 ms], application cycle up to 1 s (docs: robustness)
     "servo_cycle denormal": ("[controller]\nservo_cycle = 5e-324\n", "controller.servo_cycle = 5e-324",
-                             "allowed: a positive number of seconds in [0.00025, 0.032]"),
+                             "allowed: a positive number of seconds in [0.0001, 0.032]"),
     "servo_cycle tiny": ("[controller]\nservo_cycle = 1e-300\n", "controller.servo_cycle = 1e-300",
-                         "in [0.00025, 0.032]"),
+                         "in [0.0001, 0.032]"),
     "servo_cycle long": ("[controller]\nservo_cycle = 0.1\napp_cycle = 0.1\n", "controller.servo_cycle = 0.1",
-                         "in [0.00025, 0.032]"),
+                         "in [0.0001, 0.032]"),
     "app_cycle huge": ("[controller]\napp_cycle = 1e300\n", "controller.app_cycle = 1e+300",
-                       "allowed: a positive number of seconds in [0.00025, 1]"),
-    "app_cycle inf": ("[controller]\napp_cycle = inf\n", "controller.app_cycle = inf", "in [0.00025, 1]"),
+                       "allowed: a positive number of seconds in [0.0001, 1]"),
+    "app_cycle inf": ("[controller]\napp_cycle = inf\n", "controller.app_cycle = inf", "in [0.0001, 1]"),
     # integers beyond the float range (TOML readers accept them): a message, not OverflowError
     "input_filter huge int": ("[controller]\ninput_filter = 1" + "0" * 400 + "\n", "controller.input_filter = 1000",
                               "allowed: a time in [0, 20] s"),
     "servo_cycle huge int": ("[controller]\nservo_cycle = 1" + "0" * 400 + "\n", "controller.servo_cycle = 1000",
-                             "allowed: a positive number of seconds in [0.00025, 0.032]"),
+                             "allowed: a positive number of seconds in [0.0001, 0.032]"),
     "input filter huge int": ('[inputs]\n"I0.3" = { filter = 1' + "0" * 400 + " }\n", 'inputs."I0.3".filter = 1000',
                               "allowed: a time in [0, 20] s"),
     "trace every huge int": ("[trace]\nevery = 1" + "0" * 400 + "\n", "trace.every = 1000",
@@ -556,9 +556,9 @@ def test_configuration_that_must_not_be_accepted_defect_7(tmp_path, case):
 
 
 def test_valid_cycles_at_the_ends_of_the_ranges_load_defect_7(tmp_path):
-    path = write(tmp_path, "[controller]\nservo_cycle = 0.00025\napp_cycle = 1.0\n")
+    path = write(tmp_path, "[controller]\nservo_cycle = 0.0001\napp_cycle = 1.0\n")
     ctl = load_project(path)
-    assert ctl.servo_cycle == 0.00025 and ctl.app_cycle == pytest.approx(1.0)
+    assert ctl.servo_cycle == 0.0001 and ctl.app_cycle == pytest.approx(1.0)
     path = write(tmp_path, "[controller]\nservo_cycle = 0.032\napp_cycle = 0.064\n")
     assert load_project(path).servo_cycle == 0.032
 

@@ -27,10 +27,22 @@ A project file has up to three sections::
         { Type = 7, Velocity = 20.0, Duration = 2.0 },
     ]
 
-``[controller]`` may also set ``input_filter`` (default filter time of the digital inputs, 0.0064 s),
-``technology_version`` (6 or 7: the S7-1200 Motion Control version whose rules apply where they differ) and
-``state_file``: where retentive data (the absolute encoder adjustment) is kept, relative to the project
-file; by default ``<project>.state.json`` next to it.
+``servo_cycle`` lies in [0.1 ms, 32 ms], ``app_cycle`` is a whole multiple of it up to 1 s
+(``plcmotion.kernel.runtime.SERVO_CYCLE_MIN`` ...).  ``[controller]`` may also set ``input_filter``
+(default filter time of the digital inputs, 0.0064 s), ``technology_version`` (the integer 6 or 7: the
+S7-1200 Motion Control version whose rules apply where they differ) and ``state_file``: where retentive
+data (the absolute encoder adjustment) is kept, relative to the project file; by default
+``<project>.state.json`` next to it.
+
+Files the project names (``state_file``, a cam's ``csv``) must lie in the project file's folder or
+below it; ``load_project(path, allow_outside_paths=True)`` (``plcmotion check/run
+--allow-outside-paths``) also accepts ``../`` and absolute paths.  A cam CSV that is no point list is
+reported by line and reason only, never by its content.
+
+Integer settings and tags take TOML integers only (``1``, not ``1.0``).  Size limits
+(``plcmotion.project_rules``) are checked before any object is built: 4 MiB per file, 1000
+technology objects, lists of 4096 items, 12 levels of nesting, 1000 points and 50 segments per cam,
+32 steps per command table.
 
 ``family = "S7-1500T"`` (or ``"S7-1500"``; default ``"S7-1200"``) makes it an S7-1500 controller.  Its
 axis tables then use the S7-1500 tag names (``plcmotion.kernel.parameters1500``) and may have
@@ -73,12 +85,19 @@ import math
 import os
 import re
 import tomllib
-from collections.abc import Iterator, Mapping
+from collections.abc import Mapping
 from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
 from . import project_rules as R
+from .toml_text import MAX_SHOWN as _MAX_SHOWN
+from .toml_text import Shown as _Shown
+from .toml_text import key as _key
+from .toml_text import leaves as _leaves
+from .toml_text import near as _near
+from .toml_text import quoted as _quoted
+from .toml_text import toml_value
 from .kernel import parameters as P
 from .kernel.axis import ConfigurationError
 from .kernel.runtime import APP_CYCLE_MAX, SERVO_CYCLE_MAX, SERVO_CYCLE_MIN, Controller
@@ -97,7 +116,6 @@ CAM_KEYS = ("points", "segments", "csv", "interpolation_mode", "boundary_conditi
 
 _NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")       # the rule Controller.add_positioning_axis applies
 _POSITION = re.compile(r"line (\d+), column (\d+)")
-_MAX_SHOWN = 80
 
 
 class ProjectError(ValueError):
@@ -126,75 +144,6 @@ def load_project(path: str | os.PathLike, *, allow_outside_paths: bool = False) 
 def check_project(path: str | os.PathLike, *, allow_outside_paths: bool = False) -> list[str]:
     """All problems of the project file at ``path``; an empty list when it loads."""
     return _Loader(path, allow_outside_paths).load()[1]
-
-
-# --------------------------------------------------------------------------------------------------------
-# showing values and keys as they are spelled in TOML
-
-def toml_value(value: Any) -> str:
-    """``value`` in TOML spelling (``true``, ``"text"``, ``[1, 2]``), shortened when it is long."""
-    text = _toml(value)
-    return text if len(text) <= _MAX_SHOWN else text[:_MAX_SHOWN - 3] + "..."
-
-
-def _toml(value: Any) -> str:
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, str):
-        return _quoted(value)
-    if isinstance(value, float):
-        if math.isnan(value):
-            return "nan"
-        if math.isinf(value):
-            return "inf" if value > 0 else "-inf"
-        return repr(value)
-    if isinstance(value, list):
-        return "[" + ", ".join(_toml(v) for v in value) + "]"
-    if isinstance(value, Mapping):
-        if not value:
-            return "{}"
-        return "{ " + ", ".join(f"{_key(k)} = {_toml(v)}" for k, v in value.items()) + " }"
-    if hasattr(value, "isoformat"):          # TOML dates and times
-        return value.isoformat()
-    return str(value)
-
-
-def _key(key: str) -> str:
-    """A key of a key path: bare when it is an identifier-like name, quoted otherwise."""
-    return key if re.fullmatch(r"[A-Za-z0-9_\-\[\]]+", key) else _quoted(key)
-
-
-def _quoted(text: str) -> str:
-    """A TOML basic string; characters that are not printable (line breaks such as U+0085 or U+2028,
-    bidi controls) are escaped so that a message stays one readable line."""
-    return "".join(c if c.isprintable() or c == " " else f"\\u{ord(c):04x}" if ord(c) < 0x10000
-                   else f"\\U{ord(c):08x}" for c in json.dumps(text, ensure_ascii=False))
-
-
-class _Shown:
-    """A value whose ``repr`` is its TOML spelling, so ``Issue.message`` shows what the file says."""
-
-    def __init__(self, value: Any):
-        self.value = value
-
-    def __repr__(self) -> str:
-        return toml_value(self.value)
-
-
-def _leaves(table: Mapping[str, Any], prefix: str = "") -> Iterator[tuple[str, Any]]:
-    """``(dotted path, value)`` of every value that is not a table, and of every empty table, in file
-    order (duplicates kept)."""
-    for key, value in table.items():
-        path = f"{prefix}.{key}" if prefix else str(key)
-        if isinstance(value, Mapping) and value:
-            yield from _leaves(value, path)
-        else:
-            yield path, value
-
-
-def _near(word: str, known: list[str] | tuple[str, ...]) -> str:
-    close = difflib.get_close_matches(word, known, n=3, cutoff=0.6)
-    return "did you mean " + " or ".join(close) + "?" if close else "allowed: " + ", ".join(known)
 
 
 # --------------------------------------------------------------------------------------------------------

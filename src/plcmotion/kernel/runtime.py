@@ -36,12 +36,13 @@ _EPS_T = 1e-9
 _NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 
 #: servo cycle range [s].  The manuals in use give no numbers (S7-1200 V6 §2.2.7.1 only recommends
-#: 2 ms + 2 ms per position-controlled axis); 0.25 ms is the shortest PROFINET IRT send clock an
-#: S7-1500 MC-Servo can follow and 32 ms the longest MC-Servo application cycle of S7-1500 Motion
-#: Control.  Outside this range a simulation is meaningless (and 1e-300 s would never end).
-SERVO_CYCLE_MIN, SERVO_CYCLE_MAX = 0.00025, 0.032
+#: 2 ms + 2 ms per position-controlled axis for MC-Servo); 32 ms is the longest MC-Servo application
+#: cycle of S7-1500 Motion Control and 0.1 ms lies below the shortest MC-Servo cycle of any S7 CPU
+#: (0.25 ms with PROFINET IRT): finer cycles only resolve PTO pulse trains better in the simulation.
+#: Outside this range a simulation is meaningless (and 1e-300 s would never end).
+SERVO_CYCLE_MIN, SERVO_CYCLE_MAX = 0.0001, 0.032
 #: longest application cycle (user program period) [s]: keeps one ``step()`` bounded
-#: (at most APP_CYCLE_MAX / SERVO_CYCLE_MIN = 4000 servo cycles)
+#: (at most APP_CYCLE_MAX / SERVO_CYCLE_MIN = 10000 servo cycles)
 APP_CYCLE_MAX = 1.0
 
 

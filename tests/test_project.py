@@ -628,6 +628,15 @@ def test_a_too_large_project_file_is_refused_at_once_defect_7(tmp_path):
     assert message.startswith(f"{path}: the file has ") and f"at most {MAX_FILE_BYTES} bytes" in message
 
 
+def test_a_project_file_of_too_many_lines_is_refused_before_parsing_defect_7(tmp_path):
+    from plcmotion.project_rules import MAX_LINES
+    path = write(tmp_path, "".join(f"[axes.A{i}]\n" for i in range(MAX_LINES + 1)))
+    started = time.perf_counter()
+    message = only_problem(path)
+    assert time.perf_counter() - started < 1.0
+    assert f"{MAX_LINES + 2} lines; allowed: at most {MAX_LINES} lines" in message
+
+
 def test_too_many_technology_objects_are_refused_before_creating_any_defect_7(tmp_path):
     path = write(tmp_path, "".join(f"[axes.A{i}]\n" for i in range(1001)) + "[command_tables.T]\n")
     started = time.perf_counter()
@@ -660,3 +669,10 @@ def test_an_axis_is_not_its_own_leading_value_s6_1_3(tmp_path):
     path = write(tmp_path, T1500 + '[axes.M]\n[axes.S]\ntype = "synchronous"\nleading_values = ["S"]\n')
     assert only_problem(path).startswith(f'{path}: axes.S.leading_values: "S" is not a technology object of '
                                          f"this file; allowed: M")
+
+
+@pytest.mark.parametrize("value", ["[]", "{}", "1", "[[1]]"])
+def test_an_axis_type_of_the_wrong_kind_is_a_message_config_fuzz(tmp_path, value):
+    """Found by the config fuzz: ``type = []`` raised TypeError (unhashable) before the checks."""
+    path = write(tmp_path, f"[axes.A]\ntype = {value}\n")
+    assert only_problem(path).startswith(f"{path}: axes.A.type = {value}: allowed: one of \"positioning\"")

@@ -40,8 +40,8 @@ below it; ``load_project(path, allow_outside_paths=True)`` (``plcmotion check/ru
 reported by line and reason only, never by its content.
 
 Integer settings and tags take TOML integers only (``1``, not ``1.0``).  Size limits
-(``plcmotion.project_rules``) are checked before any object is built: 4 MiB per file, 1000
-technology objects, lists of 4096 items, 12 levels of nesting, 1000 points and 50 segments per cam,
+(``plcmotion.project_rules``) are checked before any object is built: 2 MiB and 50000
+lines, 1000 technology objects, lists of 4096 items, 12 levels of nesting, 1000 points and 50 segments per cam,
 32 steps per command table.
 
 ``family = "S7-1500T"`` (or ``"S7-1500"``; default ``"S7-1200"``) makes it an S7-1500 controller.  Its
@@ -233,8 +233,8 @@ class _Loader:
         if isinstance(controller, dict) and "family" in controller:
             return ""
         axes = doc.get("axes")
-        kinds = sorted({a.get("type") for a in axes.values() if isinstance(a, dict)} - set(AXIS_TYPES) - {None}) \
-            if isinstance(axes, dict) else []
+        kinds = sorted({a.get("type") for a in axes.values() if isinstance(a, dict) and isinstance(a.get("type"), str)}
+                       - set(AXIS_TYPES)) if isinstance(axes, dict) else []
         found = [f"{k} axes" if k in ("positioning", "synchronous") else k.replace("_", " ") + "s" for k in kinds
                  if isinstance(k, str) and k in AXIS_TYPES_1500]
         if doc.get("cams"):
@@ -261,6 +261,10 @@ class _Loader:
             text = data.decode("utf-8")
         except UnicodeDecodeError as exc:
             self.note(f"not UTF-8 text (invalid byte at offset {exc.start}); TOML files are UTF-8")
+            return None
+        lines = text.count("\n") + 1
+        if lines > R.MAX_LINES:
+            self.note(f"the file has {lines} lines; allowed: at most {R.MAX_LINES} lines for a project file")
             return None
         try:
             return tomllib.loads(text)

@@ -4,7 +4,7 @@ A project file is input like any other: a 50 MB file or a cam with a million poi
 message at once, not minutes of work and gigabytes of memory.  The limits are far above what a real
 machine needs and are checked on the parsed document before technology objects are created:
 
-* ``MAX_FILE_BYTES``: size of the project file (read before parsing).
+* ``MAX_FILE_BYTES``, ``MAX_LINES``: size of the project file (checked before parsing).
 * ``MAX_OBJECTS``: technology objects of all kinds (axes, encoders, proxies, cams, command tables).
 * ``MAX_LIST``: length of any other list (trace signals, leading values, segments of a file).
 * ``MAX_DEPTH``: nesting of tables and lists (a tag path has at most four levels).
@@ -25,7 +25,8 @@ from typing import Any, Iterator
 from .kernel.cam import MAX_POINTS as MAX_CAM_POINTS
 from .kernel.cam import MAX_SEGMENTS as MAX_CAM_SEGMENTS
 
-MAX_FILE_BYTES = 4 * 1024 * 1024
+MAX_FILE_BYTES = 2 * 1024 * 1024
+MAX_LINES = 50_000             # tomllib needs some microseconds per line: bounds the parse to about a second
 MAX_OBJECTS = 1000
 MAX_LIST = 4096
 MAX_DEPTH = 12
@@ -101,5 +102,5 @@ def segment_problem(segments: list[Any], fields: tuple[str, ...]) -> tuple[int |
     return None
 
 
-__all__ = ["MAX_CAM_POINTS", "MAX_CAM_SEGMENTS", "MAX_DEPTH", "MAX_FILE_BYTES", "MAX_LIST", "MAX_OBJECTS",
+__all__ = ["MAX_CAM_POINTS", "MAX_CAM_SEGMENTS", "MAX_DEPTH", "MAX_FILE_BYTES", "MAX_LINES", "MAX_LIST", "MAX_OBJECTS",
            "point_problem", "segment_problem", "size_problems"]

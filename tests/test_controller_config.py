@@ -111,3 +111,24 @@ def test_leading_values_of_a_synchronous_axis_are_checked_defect_7(leading, erro
     with pytest.raises(error, match="synchronous axis S: "):
         ctl.add_synchronous_axis("S", leading_values=leading)
     assert "S" not in ctl.axes
+
+
+@pytest.mark.parametrize("kw", [{"interpolation_mode": 1.0}, {"boundary_conditions": 1.0},
+                                {"interpolation_mode": True}])
+def test_cam_settings_must_be_integers_defect_7(kw):
+    with pytest.raises(ConfigurationError, match="InterpolationSettings"):
+        Controller(family="S7-1500T").add_cam("C", [(0.0, 0.0), (1.0, 1.0)], **kw)
+
+
+@pytest.mark.parametrize("points", [5, "abc", {"x": 1}])
+def test_cam_points_that_are_no_list_are_a_type_error_defect_7(points):
+    with pytest.raises(TypeError, match="cam C: points must be a list"):
+        Controller(family="S7-1500T").add_cam("C", points)
+
+
+def test_cam_value_beyond_lreal_is_kept_as_an_invalid_value_not_overflow_defect_5_7():
+    """10**400 in a cam point or segment does not raise OverflowError: the cam TO keeps an invalid
+    (infinite) value that MC_InterpolateCam reports."""
+    cam = Controller(family="S7-1500T").add_cam("C", [(0.0, 0.0), (1.0, 10**400)],
+                                                [{"xmin": 2.0, "xmax": 3.0, "a1": -10**400}])
+    assert cam.Point[2].y == float("inf") and cam.Segment[1].a1 == float("-inf")

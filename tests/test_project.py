@@ -676,3 +676,10 @@ def test_an_axis_type_of_the_wrong_kind_is_a_message_config_fuzz(tmp_path, value
     """Found by the config fuzz: ``type = []`` raised TypeError (unhashable) before the checks."""
     path = write(tmp_path, f"[axes.A]\ntype = {value}\n")
     assert only_problem(path).startswith(f"{path}: axes.A.type = {value}: allowed: one of \"positioning\"")
+
+
+@pytest.mark.parametrize("value", ["0", '"M"', "true"])
+def test_leading_values_of_the_wrong_kind_are_a_message_config_fuzz(tmp_path, value):
+    """Found by the config fuzz: ``leading_values = 0`` raised TypeError (int not iterable)."""
+    path = write(tmp_path, T1500 + f'[axes.M]\n[axes.S]\ntype = "synchronous"\nleading_values = {value}\n')
+    assert only_problem(path).startswith(f"{path}: axes.S.leading_values = {value}: allowed: a list of names")

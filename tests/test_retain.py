@@ -159,10 +159,10 @@ def test_kill_during_writes_leaves_old_or_new_content_and_no_orphans_defect_8(tm
         proc.stdout.close()
         rounds += 1
         orphans_seen += sum(1 for p in tmp_path.iterdir() if p.name.endswith(".tmp"))
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")              # a torn or invalid file would warn or raise
+            axes = retain.load(sf)                      # also when the first save never completed
         if sf.exists():
-            with warnings.catch_warnings():
-                warnings.simplefilter("error")          # a torn or invalid file would warn or raise
-                axes = retain.load(sf)
             offsets = {entry["AbsEncoderOffset"] for entry in axes.values()}
             assert len(axes) == 200 and len(offsets) == 1, offsets   # one whole save, never a mix
             k = int(offsets.pop())

@@ -445,7 +445,8 @@ class _Loader:
             self.axis(ctl, name, key, table, create=valid_name)
         names = list(section)
         for name, table in section.items():
-            for source in (table.get("leading_values", []) if isinstance(table, dict) else []):
+            raw = table.get("leading_values", []) if isinstance(table, dict) else []
+            for source in (raw if isinstance(raw, (list, dict)) else []):     # other kinds: reported in axis()
                 source_name = source.get("name") if isinstance(source, dict) else source
                 if isinstance(source_name, str) and (source_name not in names or source_name == name):
                     self.note(f"axes.{_key(name)}.leading_values: {_quoted(source_name)} is not a technology "

@@ -211,7 +211,7 @@ def step_problems(row: Mapping[str, Any]) -> list[tuple[str, Any, str]]:
         if _check_position(float(position)):
             out.append(("Position", position, f"a position within +-{LIMIT:g} (not below {TINY:g} in magnitude "
                                               "unless 0)"))
-        if not velocity > 0 or velocity < TINY:
+        if not velocity >= TINY:
             out.append(("Velocity", velocity, "a velocity > 0 for a positioning step"))
     if kind == VELOCITY and 0.0 < abs(velocity) < TINY:
         out.append(("Velocity", velocity, f"0 or a velocity of at least {TINY:g} in magnitude"))

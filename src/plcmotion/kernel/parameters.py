@@ -319,12 +319,18 @@ def flatten_checked(tree: Mapping[str, Any], prefix: str = "") -> tuple[dict[str
             sub = f"{path}.{key}" if path else str(key)
             how = f"{written}[{key!r}]"
             if sub in flat:
-                issues.append(Issue(sub, "duplicate", value, f"params{how} = {value!r} and params{spelled[sub]} = "
-                                                           f"{flat[sub]!r} set the same tag; set each tag once"))
+                issues.append(Issue(sub, "duplicate", value, f"params{how} = {_brief(value)} and params{spelled[sub]} "
+                                                           f"= {_brief(flat[sub])} set the same tag; set each tag once"))
                 continue
             flat[sub] = value
             spelled[sub] = how
     return flat, issues
+
+
+def _brief(value: Any) -> str:
+    """``repr(value)``, shortened to a bounded excerpt (a value may be 10**400 or a long list)."""
+    text = repr(value)
+    return text if len(text) <= 80 else text[:60] + f"... ({len(text)} characters)"
 
 
 @dataclass(frozen=True)
@@ -337,9 +343,7 @@ class Issue:
     allowed: str
 
     def message(self) -> str:
-        value = repr(self.value)
-        if len(value) > 80:                      # 10**400 or a long list: a bounded excerpt
-            value = value[:60] + f"... ({len(value)} characters)"
+        value = _brief(self.value)
         if self.reason == "unknown":
             return f"{self.path}: unknown parameter (value {value}); {self.allowed}"
         return f"{self.path} = {value}: {self.allowed}"
@@ -370,7 +374,7 @@ def _check(params: Mapping[str, Param], canon, suggest, values: Mapping[str, Any
         if path in spelled:                      # two spellings of the manuals for one tag
             first, was = spelled[path]
             issues.append(Issue(raw_path, "duplicate", value,
-                                f"the tag is already set by {first} = {was!r}; set each tag once"))
+                                f"the tag is already set by {first} = {_brief(was)}; set each tag once"))
             continue
         spelled[path] = (raw_path, value)
         reason, norm = param.check(value)

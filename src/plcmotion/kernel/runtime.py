@@ -93,6 +93,21 @@ def _leading_list(name: str, leading_values: Any) -> list[tuple[str, str]]:
     return out
 
 
+def _cam_values(name: str, points: Any, segments: Any) -> tuple[list, list]:
+    """Points and segments of a new cam as lists; an int beyond the LREAL range becomes +-inf, an invalid
+    value that MC_InterpolateCam reports with its ErrorID (the cam TO stores what the program wrote)."""
+    def lreal(v: Any) -> Any:
+        if isinstance(v, numbers.Integral) and not isinstance(v, bool) and abs(v) > 1.0e308:
+            return math.inf if v > 0 else -math.inf
+        return v
+    for what, value in (("points", points), ("segments", segments)):
+        if isinstance(value, (str, bytes, Mapping)) or not hasattr(value, "__iter__"):
+            raise TypeError(f"cam {name}: {what} must be a list, got {_short(value)}")
+    pts = [tuple(lreal(v) for v in p) if isinstance(p, (list, tuple)) else p for p in points]
+    segs = [{k: lreal(v) for k, v in sg.items()} if isinstance(sg, Mapping) else sg for sg in segments]
+    return pts, segs
+
+
 def _short(value: Any, limit: int = 60) -> str:
     text = repr(value)
     return text if len(text) <= limit else text[:limit - 3] + "..."
@@ -294,9 +309,10 @@ class Controller:
                        "0 (linear), 1 (cubic spline) or 2 (Bézier spline)"),
                       ("InterpolationSettings.BoundaryConditions", boundary_conditions, (0, 1),
                        "0 (none) or 1 (equal first derivative at start and end)"))
-                  if isinstance(value, bool) or value not in allowed]
+                  if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value not in allowed]
         if issues:
             raise ConfigurationError(f"cam {name}", issues)
+        points, segments = _cam_values(name, points, segments)
         cam = CamTO(self, name, points, segments, interpolation_mode, boundary_conditions)
         self.cams[name] = cam
         return cam

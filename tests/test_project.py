@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import textwrap
+import time
 from pathlib import Path
 
 import pytest
@@ -449,3 +450,236 @@ def test_quoted_number_or_bool_for_a_real_tag_is_rejected(tmp_path, value):
     path = write(tmp_path, f"[axes.Axis_1.DynamicLimits]\nMaxVelocity = {value}\n")
     message = only_problem(path)
     assert message.startswith(f"{path}: axes.Axis_1.DynamicLimits.MaxVelocity = {value}: allowed: real")
+
+
+# --- issue 8, defect 7: configuration that must not be accepted -------------------------------------------
+
+T1500 = '[controller]\nfamily = "S7-1500T"\n'
+
+DEFECT_7 = {
+    # servo cycle range [0.25 ms, 32 ms], application cycle up to 1 s (docs: robustness)
+    "servo_cycle denormal": ("[controller]\nservo_cycle = 5e-324\n", "controller.servo_cycle = 5e-324",
+                             "allowed: a positive number of seconds in [0.0001, 0.032]"),
+    "servo_cycle tiny": ("[controller]\nservo_cycle = 1e-300\n", "controller.servo_cycle = 1e-300",
+                         "in [0.0001, 0.032]"),
+    "servo_cycle long": ("[controller]\nservo_cycle = 0.1\napp_cycle = 0.1\n", "controller.servo_cycle = 0.1",
+                         "in [0.0001, 0.032]"),
+    "app_cycle huge": ("[controller]\napp_cycle = 1e300\n", "controller.app_cycle = 1e+300",
+                       "allowed: a positive number of seconds in [0.0001, 1]"),
+    "app_cycle inf": ("[controller]\napp_cycle = inf\n", "controller.app_cycle = inf", "in [0.0001, 1]"),
+    # integers beyond the float range (TOML readers accept them): a message, not OverflowError
+    "input_filter huge int": ("[controller]\ninput_filter = 1" + "0" * 400 + "\n", "controller.input_filter = 1000",
+                              "allowed: a time in [0, 20] s"),
+    "servo_cycle huge int": ("[controller]\nservo_cycle = 1" + "0" * 400 + "\n", "controller.servo_cycle = 1000",
+                             "allowed: a positive number of seconds in [0.0001, 0.032]"),
+    "input filter huge int": ('[inputs]\n"I0.3" = { filter = 1' + "0" * 400 + " }\n", 'inputs."I0.3".filter = 1000',
+                              "allowed: a time in [0, 20] s"),
+    "trace every huge int": ("[trace]\nevery = 1" + "0" * 400 + "\n", "trace.every = 1000",
+                             "allowed: an integer >= 1 (record every n-th servo cycle), at most 1000000000"),
+    # integers are integers: TOML tells 1 from 1.0
+    "Actor.Type real": ('[axes.A]\n"Actor.Type" = 1.0\n', "axes.A.Actor.Type = 1.0",
+                        "allowed: one of 0, 1, 2 (an integer: write 1, not 1.0)"),
+    "technology_version real": ("[controller]\ntechnology_version = 7.0\n",
+                                "controller.technology_version = 7.0", "allowed: 6 or 7"),
+    "interpolation_mode real": (T1500 + "[cams.C]\npoints = [[0.0, 0.0], [1.0, 1.0]]\ninterpolation_mode = 1.0\n",
+                                "cams.C.interpolation_mode = 1.0", "allowed: the integer 0 or 1 or 2"),
+    "boundary_conditions real": (T1500 + "[cams.C]\npoints = [[0.0, 0.0], [1.0, 1.0]]\nboundary_conditions = 1.0\n",
+                                 "cams.C.boundary_conditions = 1.0", "allowed: the integer 0 or 1"),
+    # cams (S7-1500T V5 §6.2.5.7): finite values, strictly increasing leading values, 1000 points, 50 segments
+    "cam points not increasing": (T1500 + "[cams.C]\npoints = [[0.0, 0.0], [2.0, 1.0], [1.0, 2.0]]\n",
+                                  "cams.C.points[2] = [1.0, 2.0]", "strictly increasing leading value"),
+    "cam points duplicate": (T1500 + "[cams.C]\npoints = [[0.0, 0.0], [1.0, 1.0], [1.0, 2.0]]\n",
+                             "cams.C.points[2] = [1.0, 2.0]", "each leading value once"),
+    "cam point nan": (T1500 + "[cams.C]\npoints = [[0.0, 0.0], [1.0, nan]]\n",
+                      "cams.C.points[1] = [1.0, nan]", "finite numbers within +-1e+12"),
+    "cam point inf": (T1500 + "[cams.C]\npoints = [[-inf, 0.0], [1.0, 1.0]]\n",
+                      "cams.C.points[0] = [-inf, 0.0]", "finite numbers"),
+    "cam point huge": (T1500 + "[cams.C]\npoints = [[0.0, 0.0], [1.0, 2e12]]\n",
+                       "cams.C.points[1] = [1.0, 2000000000000.0]", "within +-1e+12"),
+    "cam point not a pair": (T1500 + "[cams.C]\npoints = [[0.0, 0.0, 1.0]]\n",
+                             "cams.C.points[0] = [0.0, 0.0, 1.0]", "an [x, y] pair of numbers"),
+    "cam segment nan": (T1500 + "[cams.C]\nsegments = [{ xmin = 0.0, xmax = 1.0, a1 = nan }]\n",
+                        "cams.C.segments[0]", "finite numbers"),
+    "cam segment empty range": (T1500 + "[cams.C]\nsegments = [{ xmin = 1.0, xmax = 1.0, a1 = 1.0 }]\n",
+                                "cams.C.segments[0]", "xmax greater than xmin"),
+    "cam too many points": (T1500 + "[cams.C]\npoints = [" + ", ".join(f"[{i}.0, 0.0]" for i in range(1001)) + "]\n",
+                            "cams.C.points: 1001 points", "allowed: at most 1000 points"),
+    "cam too many segments": (T1500 + "[cams.C]\nsegments = ["
+                              + ", ".join(f"{{ xmin = {i}.0, xmax = {i + 1}.0 }}" for i in range(51)) + "]\n",
+                              "cams.C.segments: 51 segments", "allowed: at most 50 segments"),
+    # command tables (S7-1200 V6 §12.10.8.1)
+    "step Type 99": ("[command_tables.T]\nCommand = [{ Type = 99 }]\n",
+                     "command_tables.T.Command[1].Type = 99", "allowed: one of 0 (Empty), 2 (Halt)"),
+    "step Type real": ("[command_tables.T]\nCommand = [{ Type = 5.0, Position = 1.0, Velocity = 1.0 }]\n",
+                       "command_tables.T.Command[1].Type = 5.0", "allowed: an integer"),
+    "step Position nan": ("[command_tables.T]\nCommand = [{ Type = 5, Position = nan, Velocity = 10.0 }]\n",
+                          "command_tables.T.Command[1].Position = nan", "allowed: a finite number"),
+    "step Position too far": ("[command_tables.T]\nCommand = [{ Type = 6, Position = 2e12, Velocity = 10.0 }]\n",
+                              "command_tables.T.Command[1].Position = 2000000000000.0", "allowed: a finite number within +-1e+12"),
+    "step Velocity inf": ("[command_tables.T]\nCommand = [{ Type = 7, Velocity = inf, Duration = 1.0 }]\n",
+                          "command_tables.T.Command[1].Velocity = inf", "allowed: a finite number"),
+    "step positioning without velocity": ("[command_tables.T]\nCommand = [{ Type = 5, Position = 10.0 }]\n",
+                                          "command_tables.T.Command[1].Velocity = 0.0", "a velocity > 0"),
+    "step Wait without duration": ("[command_tables.T]\nCommand = [{ Type = 151 }]\n",
+                                   "command_tables.T.Command[1].Duration = 0.0", "a time in [0.001, 64800] s"),
+    "step NextStep 2": ("[command_tables.T]\nCommand = [{ Type = 2, NextStep = 2 }]\n",
+                        "command_tables.T.Command[1].NextStep = 2", "0 (complete the step) or 1 (blend)"),
+    "step blend after velocity": ("[command_tables.T]\nCommand = [{ Type = 7, Velocity = 5.0, Duration = 1.0, "
+                                  "NextStep = 1 }]\n",
+                                  "command_tables.T.Command[1].NextStep = 1", "only positioning steps blend"),
+    # a tag set twice: as a dotted key and in a nested table
+    "dotted and nested key": ('[axes.A]\n"DynamicLimits.MaxVelocity" = 100.0\n[axes.A.DynamicLimits]\n'
+                              "MaxVelocity = 200.0\n",
+                              "axes.A.DynamicLimits.MaxVelocity = 200.0",
+                              'already set by axes.A.DynamicLimits.MaxVelocity = 100.0'),
+    # files named by the project stay in its folder unless allowed
+    "state_file up": ('[controller]\nstate_file = "../elsewhere.state.json"\n',
+                      'controller.state_file = "../elsewhere.state.json"', "allowed: a file in the project's folder"),
+    "state_file absolute": ('[controller]\nstate_file = "/tmp/x.state.json"\n',
+                            'controller.state_file = "/tmp/x.state.json"', "--allow-outside-paths"),
+    "cam csv up": (T1500 + '[cams.C]\ncsv = "../../etc/passwd"\n', 'cams.C.csv = "../../etc/passwd"',
+                   "allowed: a file in the project's folder or below it"),
+}
+
+
+@pytest.mark.parametrize("case", list(DEFECT_7))
+def test_configuration_that_must_not_be_accepted_defect_7(tmp_path, case):
+    """Issue 8 defect 7: each gives one clear problem naming the file, the key path and what is allowed."""
+    text, key_and_value, allowed = DEFECT_7[case]
+    path = tmp_path / "case.toml"
+    path.write_text(text, encoding="utf-8")
+    message = only_problem(path)
+    assert message.startswith(f"{path}: {key_and_value}"), message
+    assert allowed in message, message
+    with pytest.raises(ProjectError):
+        load_project(path)
+
+
+def test_valid_cycles_at_the_ends_of_the_ranges_load_defect_7(tmp_path):
+    path = write(tmp_path, "[controller]\nservo_cycle = 0.0001\napp_cycle = 1.0\n")
+    ctl = load_project(path)
+    assert ctl.servo_cycle == 0.0001 and ctl.app_cycle == pytest.approx(1.0)
+    path = write(tmp_path, "[controller]\nservo_cycle = 0.032\napp_cycle = 0.064\n")
+    assert load_project(path).servo_cycle == 0.032
+
+
+def test_valid_cam_and_command_table_still_load_defect_7(tmp_path):
+    path = write(tmp_path, T1500 + "[cams.C]\npoints = [[0.0, 0.0], [90, 1.0], [180.0, 0.0]]\n"
+                 "segments = [{ xmin = 200.0, xmax = 300.0, a0 = 0.0, a1 = 0.01 }]\ninterpolation_mode = 1\n")
+    assert check_project(path) == []
+    path = write(tmp_path, "[command_tables.T]\nCommand = [{ Type = 5, Position = 1.0, Velocity = 10.0, NextStep = 1 },"
+                           " { Type = 7, Velocity = -5.0, Duration = 0.5 }, { Type = 151, Duration = 64800 }, {}]\n")
+    ctl = load_project(path)
+    assert ctl.command_tables["T"].Command[3].Duration == 64800.0
+
+
+def test_paths_outside_the_project_folder_need_the_option_defect_8(tmp_path):
+    project = tmp_path / "project"
+    project.mkdir()
+    (tmp_path / "knife.csv").write_text("0,0\n180,50\n360,0\n")
+    path = write(project, '[controller]\nfamily = "S7-1500T"\nstate_file = "../machine.state.json"\n'
+                 '[cams.C]\ncsv = "../knife.csv"\n')
+    problems = check_project(path)
+    assert len(problems) == 2 and all("allowed: a file in the project's folder" in p for p in problems)
+    ctl = load_project(path, allow_outside_paths=True)
+    assert ctl.state_file == str(project / "../machine.state.json")
+    assert ctl.cams["C"].Point[3].x == 360.0
+    # inside the folder (also in a sub-folder) is fine without the option
+    (project / "cams").mkdir()
+    (project / "cams" / "knife.csv").write_text("0,0\n180,50\n360,0\n")
+    path = write(project, '[controller]\nfamily = "S7-1500T"\nstate_file = "state/m.json"\n'
+                          '[cams.C]\ncsv = "cams/knife.csv"\n')
+    assert check_project(path) == []
+
+
+def test_a_link_that_points_out_of_the_project_folder_is_refused_defect_8(tmp_path):
+    project = tmp_path / "project"
+    project.mkdir()
+    (tmp_path / "secret.csv").write_text("0,0\n1,1\n")
+    (project / "cam.csv").symlink_to(tmp_path / "secret.csv")
+    path = write(project, T1500 + '[cams.C]\ncsv = "cam.csv"\n')
+    assert "allowed: a file in the project's folder" in only_problem(path)
+
+
+def test_a_cam_csv_that_is_no_point_list_is_not_echoed_defect_8(tmp_path):
+    """The error names the line and the reason, never the content of the file."""
+    (tmp_path / "notes.csv").write_text("root:x:0:0:root:/root:/bin/bash\nhunter2:secret-token-1234\n")
+    path = write(tmp_path, T1500 + '[cams.C]\ncsv = "notes.csv"\n')
+    message = only_problem(path)
+    assert message.endswith("notes.csv, line 2: field 1 is not a number"), message
+    assert "hunter2" not in message and "secret-token" not in message and "/bin/bash" not in message
+
+
+def test_toml_syntax_error_excerpt_is_bounded(tmp_path):
+    path = write(tmp_path, '[axes.A]\n"Actor.Type" = ' + "x" * 5000 + "\n")
+    message = only_problem(path)
+    assert "line 2" in message and len(message) < 400
+
+
+# --- size limits, checked before the expensive work ------------------------------------------------------
+
+def test_a_too_large_project_file_is_refused_at_once_defect_7(tmp_path):
+    from plcmotion.project_rules import MAX_FILE_BYTES
+    path = tmp_path / "big.toml"
+    path.write_bytes(b"# padding\n" * (MAX_FILE_BYTES // 10 + 1))
+    started = time.perf_counter()
+    message = only_problem(path)
+    assert time.perf_counter() - started < 1.0
+    assert message.startswith(f"{path}: the file has ") and f"at most {MAX_FILE_BYTES} bytes" in message
+
+
+def test_a_project_file_of_too_many_lines_is_refused_before_parsing_defect_7(tmp_path):
+    from plcmotion.project_rules import MAX_LINES
+    path = write(tmp_path, "".join(f"[axes.A{i}]\n" for i in range(MAX_LINES + 1)))
+    started = time.perf_counter()
+    message = only_problem(path)
+    assert time.perf_counter() - started < 1.0
+    assert f"{MAX_LINES + 2} lines; allowed: at most {MAX_LINES} lines" in message
+
+
+def test_too_many_technology_objects_are_refused_before_creating_any_defect_7(tmp_path):
+    path = write(tmp_path, "".join(f"[axes.A{i}]\n" for i in range(1001)) + "[command_tables.T]\n")
+    started = time.perf_counter()
+    message = only_problem(path)
+    assert time.perf_counter() - started < 2.0
+    assert "1002 technology objects; allowed: at most 1000" in message
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("a = " + "[" * 3000 + "]" * 3000 + "\n", "nested too deeply"),
+    ("[axes.A]\nx = " + "{ y = " * 30 + "1" + " }" * 30 + "\n", "levels deep; allowed: at most 12"),
+    ("[trace]\nsignals = [" + ", ".join(['"A.Position"'] * 5000) + "]\n", "a list of 5000 items; allowed: at most 4096"),
+])
+def test_deep_nesting_and_long_lists_are_refused_defect_7(tmp_path, text, expected):
+    path = write(tmp_path, text)
+    assert expected in only_problem(path)
+
+
+def test_cli_check_needs_the_flag_for_outside_paths_defect_8(tmp_path, capsys):
+    from plcmotion.cli import main
+    project = tmp_path / "project"
+    project.mkdir()
+    path = write(project, '[controller]\nstate_file = "../machine.state.json"\n')
+    assert main(["check", str(path)]) == 1
+    assert "--allow-outside-paths" in capsys.readouterr().err
+    assert main(["check", "--allow-outside-paths", str(path)]) == 0
+
+
+def test_an_axis_is_not_its_own_leading_value_s6_1_3(tmp_path):
+    path = write(tmp_path, T1500 + '[axes.M]\n[axes.S]\ntype = "synchronous"\nleading_values = ["S"]\n')
+    assert only_problem(path).startswith(f'{path}: axes.S.leading_values: "S" is not a technology object of '
+                                         f"this file; allowed: M")
+
+
+@pytest.mark.parametrize("value", ["[]", "{}", "1", "[[1]]"])
+def test_an_axis_type_of_the_wrong_kind_is_a_message_config_fuzz(tmp_path, value):
+    """Found by the config fuzz: ``type = []`` raised TypeError (unhashable) before the checks."""
+    path = write(tmp_path, f"[axes.A]\ntype = {value}\n")
+    assert only_problem(path).startswith(f"{path}: axes.A.type = {value}: allowed: one of \"positioning\"")
+
+
+@pytest.mark.parametrize("value", ["0", '"M"', "true"])
+def test_leading_values_of_the_wrong_kind_are_a_message_config_fuzz(tmp_path, value):
+    """Found by the config fuzz: ``leading_values = 0`` raised TypeError (int not iterable)."""
+    path = write(tmp_path, T1500 + f'[axes.M]\n[axes.S]\ntype = "synchronous"\nleading_values = {value}\n')
+    assert only_problem(path).startswith(f"{path}: axes.S.leading_values = {value}: allowed: a list of names")

@@ -55,7 +55,8 @@ def cmd_demo(args: argparse.Namespace) -> int:
 def cmd_check(args: argparse.Namespace) -> int:
     from .project import check_project
 
-    problems = check_project(args.project)
+    outside = getattr(args, "allow_outside_paths", False)
+    problems = check_project(args.project, allow_outside_paths=outside)
     if problems:
         for p in problems:
             print(p, file=sys.stderr)
@@ -63,7 +64,7 @@ def cmd_check(args: argparse.Namespace) -> int:
         return 1
     from .project import load_project
 
-    ctl = load_project(args.project)
+    ctl = load_project(args.project, allow_outside_paths=outside)
     axes = ", ".join(f"{name} ({_describe(ax)})" for name, ax in ctl.axes.items())
     others = [f"{name} ({type(to).__name__})" for name, to in {**ctl.objects, **ctl.cams}.items()]
     more = f"; {', '.join(others)}" if others else ""
@@ -101,7 +102,7 @@ def cmd_run(args: argparse.Namespace) -> int:
     from .trace import Trace, plot_csv
 
     try:
-        ctl = load_project(args.project)
+        ctl = load_project(args.project, allow_outside_paths=getattr(args, "allow_outside_paths", False))
     except ProjectError as exc:
         print(exc, file=sys.stderr)
         return 2
@@ -170,6 +171,10 @@ def cmd_run(args: argparse.Namespace) -> int:
     return 0
 
 
+OUTSIDE_HELP = ("let state_file and cam csv paths of the project leave the project's folder "
+                "(../ or absolute paths)")
+
+
 def build_parser() -> argparse.ArgumentParser:
     ap = argparse.ArgumentParser(prog="plcmotion", description="Soft motion controller with PLC motion instructions.")
     ap.add_argument("--version", action="version", version=f"plcmotion {__version__}")
@@ -187,9 +192,11 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--every", type=int, help="trace every n-th servo cycle")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     p.add_argument("--progress", action="store_true", help="progress bar even when not on a terminal")
+    p.add_argument("--allow-outside-paths", action="store_true", help=OUTSIDE_HELP)
     p.set_defaults(func=cmd_run)
     p = sub.add_parser("check", help="validate a project file")
     p.add_argument("project", help="project file (TOML)")
+    p.add_argument("--allow-outside-paths", action="store_true", help=OUTSIDE_HELP)
     p.set_defaults(func=cmd_check)
     return ap
 

@@ -30,10 +30,22 @@ A project file has up to three sections::
         { Type = 7, Velocity = 20.0, Duration = 2.0 },
     ]
 
-``[controller]`` may also set ``input_filter`` (default filter time of the digital inputs, 0.0064 s),
-``technology_version`` (6 or 7: the S7-1200 Motion Control version whose rules apply where they differ) and
-``state_file``: where retentive data (the absolute encoder adjustment) is kept, relative to the project
-file; by default ``<project>.state.json`` next to it.
+``servo_cycle`` lies in [0.1 ms, 32 ms], ``app_cycle`` is a whole multiple of it up to 1 s
+(``plcmotion.kernel.runtime.SERVO_CYCLE_MIN`` ...).  ``[controller]`` may also set ``input_filter``
+(default filter time of the digital inputs, 0.0064 s), ``technology_version`` (the integer 6 or 7: the
+S7-1200 Motion Control version whose rules apply where they differ) and ``state_file``: where retentive
+data (the absolute encoder adjustment) is kept, relative to the project file; by default
+``<project>.state.json`` next to it.
+
+Files the project names (``state_file``, a cam's ``csv``) must lie in the project file's folder or
+below it; ``load_project(path, allow_outside_paths=True)`` (``plcmotion check/run
+--allow-outside-paths``) also accepts ``../`` and absolute paths.  A cam CSV that is no point list is
+reported by line and reason only, never by its content.
+
+Integer settings and tags take TOML integers only (``1``, not ``1.0``).  Size limits
+(``plcmotion.project_rules``) are checked before any object is built: 2 MiB and 50000
+lines, 1000 technology objects, lists of 4096 items, 12 levels of nesting, 1000 points and 50 segments per cam,
+32 steps per command table.
 
 ``family = "S7-1500T"`` (or ``"S7-1500"``; default ``"S7-1200"``) makes it an S7-1500 controller.  Its
 axis tables then use the S7-1500 tag names (``plcmotion.kernel.parameters1500``) and may have
@@ -76,20 +88,30 @@ import math
 import os
 import re
 import tomllib
-from collections.abc import Iterator, Mapping
+from collections.abc import Mapping
 from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
+from . import project_rules as R
+from .toml_text import MAX_SHOWN as _MAX_SHOWN
+from .toml_text import Shown as _Shown
+from .toml_text import key as _key
+from .toml_text import leaves as _leaves
+from .toml_text import near as _near
+from .toml_text import quoted as _quoted
+from .toml_text import toml_value
 from .kernel import parameters as P
 from .kernel.axis import ConfigurationError
-from .kernel.runtime import Controller
+from .kernel.runtime import APP_CYCLE_MAX, SERVO_CYCLE_MAX, SERVO_CYCLE_MIN, Controller
 
 SECTIONS = ("controller", "axes", "trace", "inputs", "command_tables", "cams", "switches", "faults")
 CONTROLLER_DEFAULTS: dict[str, float] = {"servo_cycle": 0.001, "app_cycle": 0.004}
+CYCLE_RANGES = {"servo_cycle": (SERVO_CYCLE_MIN, SERVO_CYCLE_MAX), "app_cycle": (SERVO_CYCLE_MIN, APP_CYCLE_MAX)}
 CONTROLLER_KEYS = ("servo_cycle", "app_cycle", "input_filter", "state_file", "technology_version", "family")
 STEP_KEYS = ("Type", "Position", "Velocity", "Duration", "NextStep", "StepCode")
 TRACE_KEYS = ("signals", "every")
+MAX_EVERY = 1_000_000_000
 AXIS_TYPES = ("positioning",)
 AXIS_TYPES_1500 = ("positioning", "synchronous", "external_encoder", "leading_axis_proxy")
 COUPLINGS = ("setpoint", "actual", "delayed")
@@ -97,7 +119,6 @@ CAM_KEYS = ("points", "segments", "csv", "interpolation_mode", "boundary_conditi
 
 _NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")       # the rule Controller.add_positioning_axis applies
 _POSITION = re.compile(r"line (\d+), column (\d+)")
-_MAX_SHOWN = 80
 
 
 class ProjectError(ValueError):
@@ -111,80 +132,21 @@ class ProjectError(ValueError):
         super().__init__("\n".join([head] + ["  " + p for p in self.problems]))
 
 
-def load_project(path: str | os.PathLike) -> Controller:
-    """Read the project file at ``path`` and return a controller with its axes created."""
-    ctl, problems = _Loader(path).load()
+def load_project(path: str | os.PathLike, *, allow_outside_paths: bool = False) -> Controller:
+    """Read the project file at ``path`` and return a controller with its axes created.
+
+    Files the project names (``state_file``, cam ``csv``) must lie in the project file's folder or
+    below it; ``allow_outside_paths=True`` also accepts ``../`` and absolute paths."""
+    ctl, problems = _Loader(path, allow_outside_paths).load()
     if problems:
         raise ProjectError(path, problems)
     assert ctl is not None
     return ctl
 
 
-def check_project(path: str | os.PathLike) -> list[str]:
+def check_project(path: str | os.PathLike, *, allow_outside_paths: bool = False) -> list[str]:
     """All problems of the project file at ``path``; an empty list when it loads."""
-    return _Loader(path).load()[1]
-
-
-# --------------------------------------------------------------------------------------------------------
-# showing values and keys as they are spelled in TOML
-
-def toml_value(value: Any) -> str:
-    """``value`` in TOML spelling (``true``, ``"text"``, ``[1, 2]``), shortened when it is long."""
-    text = _toml(value)
-    return text if len(text) <= _MAX_SHOWN else text[:_MAX_SHOWN - 3] + "..."
-
-
-def _toml(value: Any) -> str:
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, str):
-        return json.dumps(value, ensure_ascii=False)
-    if isinstance(value, float):
-        if math.isnan(value):
-            return "nan"
-        if math.isinf(value):
-            return "inf" if value > 0 else "-inf"
-        return repr(value)
-    if isinstance(value, list):
-        return "[" + ", ".join(_toml(v) for v in value) + "]"
-    if isinstance(value, Mapping):
-        if not value:
-            return "{}"
-        return "{ " + ", ".join(f"{_key(k)} = {_toml(v)}" for k, v in value.items()) + " }"
-    if hasattr(value, "isoformat"):          # TOML dates and times
-        return value.isoformat()
-    return str(value)
-
-
-def _key(key: str) -> str:
-    """A key of a key path: bare when it is an identifier-like name, quoted otherwise."""
-    return key if re.fullmatch(r"[A-Za-z0-9_\-\[\]]+", key) else json.dumps(key, ensure_ascii=False)
-
-
-class _Shown:
-    """A value whose ``repr`` is its TOML spelling, so ``Issue.message`` shows what the file says."""
-
-    def __init__(self, value: Any):
-        self.value = value
-
-    def __repr__(self) -> str:
-        return toml_value(self.value)
-
-
-def _leaves(table: Mapping[str, Any], prefix: str = "") -> Iterator[tuple[str, Any]]:
-    """``(dotted path, value)`` of every value that is not a table, and of every empty table, in file
-    order (duplicates kept)."""
-    for key, value in table.items():
-        path = f"{prefix}.{key}" if prefix else str(key)
-        if isinstance(value, Mapping) and value:
-            yield from _leaves(value, path)
-        else:
-            yield path, value
-
-
-def _near(word: str, known: list[str] | tuple[str, ...]) -> str:
-    close = difflib.get_close_matches(word, known, n=3, cutoff=0.6)
-    return "did you mean " + " or ".join(close) + "?" if close else "allowed: " + ", ".join(known)
+    return _Loader(path, allow_outside_paths).load()[1]
 
 
 # --------------------------------------------------------------------------------------------------------
@@ -192,10 +154,28 @@ def _near(word: str, known: list[str] | tuple[str, ...]) -> str:
 class _Loader:
     """Reads one project file, collecting every problem instead of stopping at the first."""
 
-    def __init__(self, path: str | os.PathLike):
+    def __init__(self, path: str | os.PathLike, allow_outside_paths: bool = False):
         self.path = Path(path)
         self.label = os.fspath(path)
         self.problems: list[str] = []
+        self.allow_outside = allow_outside_paths
+
+    def inside(self, key: str, name: str) -> Path | None:
+        """``name`` relative to the project file's folder; None (and a problem) when it leaves the
+        folder (``../``, an absolute path, a link pointing out) and outside paths are not allowed."""
+        folder = self.path.parent
+        target = folder / name
+        if self.allow_outside:
+            return target
+        try:
+            inside = target.resolve().is_relative_to(folder.resolve())
+        except (OSError, RuntimeError, ValueError):  # a link loop, a NUL byte
+            inside = False
+        if not inside:
+            self.bad(key, name, "a file in the project's folder or below it (outside paths need "
+                                "load_project(..., allow_outside_paths=True) or --allow-outside-paths)")
+            return None
+        return target
 
     # --- messages -----------------------------------------------------------------------------------
     def note(self, text: str) -> None:
@@ -223,6 +203,11 @@ class _Loader:
     def load(self) -> tuple[Controller | None, list[str]]:
         doc = self.read()
         if doc is None:
+            return None, self.problems
+        limits = R.size_problems(doc)
+        if limits:                               # before any work that grows with the file
+            for key, message in limits:
+                self.note(f"{key}: {message}")
             return None, self.problems
         for key, value in doc.items():
             if key not in SECTIONS:
@@ -255,8 +240,8 @@ class _Loader:
         if isinstance(controller, dict) and "family" in controller:
             return ""
         axes = doc.get("axes")
-        kinds = sorted({a.get("type") for a in axes.values() if isinstance(a, dict)} - set(AXIS_TYPES) - {None}) \
-            if isinstance(axes, dict) else []
+        kinds = sorted({a.get("type") for a in axes.values() if isinstance(a, dict) and isinstance(a.get("type"), str)}
+                       - set(AXIS_TYPES)) if isinstance(axes, dict) else []
         found = [f"{k} axes" if k in ("positioning", "synchronous") else k.replace("_", " ") + "s" for k in kinds
                  if isinstance(k, str) and k in AXIS_TYPES_1500]
         if doc.get("cams"):
@@ -265,6 +250,10 @@ class _Loader:
 
     def read(self) -> dict[str, Any] | None:
         try:
+            size = self.path.stat().st_size
+            if size > R.MAX_FILE_BYTES and self.path.is_file():
+                self.note(f"the file has {size} bytes; allowed: at most {R.MAX_FILE_BYTES} bytes for a project file")
+                return None
             data = self.path.read_bytes()
         except FileNotFoundError:
             self.note("file not found")
@@ -280,6 +269,10 @@ class _Loader:
         except UnicodeDecodeError as exc:
             self.note(f"not UTF-8 text (invalid byte at offset {exc.start}); TOML files are UTF-8")
             return None
+        lines = text.count("\n") + 1
+        if lines > R.MAX_LINES:
+            self.note(f"the file has {lines} lines; allowed: at most {R.MAX_LINES} lines for a project file")
+            return None
         try:
             return tomllib.loads(text)
         except tomllib.TOMLDecodeError as exc:
@@ -289,8 +282,13 @@ class _Loader:
                 lines = text.splitlines()
                 row = int(where.group(1))
                 if 1 <= row <= len(lines):
-                    message += f"; line {row} reads: {lines[row - 1].strip()}"
+                    line = lines[row - 1].strip()
+                    line = line if len(line) <= _MAX_SHOWN else line[:_MAX_SHOWN - 3] + "..."
+                    message += f"; line {row} reads: {line}"
             self.note(f"TOML syntax error: {message}")
+            return None
+        except RecursionError:                   # tomllib parses nested arrays and inline tables recursively
+            self.note(f"tables or lists nested too deeply; allowed: at most {R.MAX_DEPTH} levels")
             return None
 
     # --- [controller] -------------------------------------------------------------------------------
@@ -317,15 +315,14 @@ class _Loader:
         else:
             extra["family"] = family
         filt = section.get("input_filter", 0.0064)
-        if isinstance(filt, bool) or not isinstance(filt, (int, float)) or not math.isfinite(filt) \
-                or not 0.0 <= filt <= 20.0:
+        if isinstance(filt, bool) or not isinstance(filt, (int, float)) or not 0.0 <= filt <= 20.0:
             self.bad("controller.input_filter", filt, "a time in [0, 20] s, e.g. 0.0064")
         else:
             extra["input_filter"] = float(filt)
         s71200 = extra.get("family", "S7-1200") == "S7-1200"
         version = section.get("technology_version", 6 if s71200 else 5)
         allowed = (6, 7) if s71200 else (5,)
-        if version not in allowed or isinstance(version, bool):
+        if type(version) is not int or version not in allowed:     # 7.0 is a float in TOML: refused
             self.bad("controller.technology_version", version, "6 or 7 (S7-1200 Motion Control V6.0 / V7.0)"
                      if s71200 else "5 (S7-1500 Motion Control V5.0)")
         else:
@@ -334,13 +331,16 @@ class _Loader:
         if not isinstance(state, str) or not state.strip():
             self.bad("controller.state_file", state, "a file name, relative to the project file")
         else:
-            extra["state_file"] = os.fspath(self.path.parent / state)
+            where = self.inside("controller.state_file", state)
+            if where is not None:
+                extra["state_file"] = os.fspath(where)
         cycles: dict[str, float] = {}
         for key, default in CONTROLLER_DEFAULTS.items():
             value = section.get(key, default)
-            if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) \
-                    or value <= 0:
-                self.bad(f"controller.{key}", value, "a positive number of seconds, e.g. 0.001")
+            lo, hi = CYCLE_RANGES[key]
+            if isinstance(value, bool) or not isinstance(value, (int, float)) or not lo <= value <= hi:
+                self.bad(f"controller.{key}", value, f"a positive number of seconds in [{lo:g}, {hi:g}], "
+                                                     f"e.g. {default:g}")
             else:
                 cycles[key] = float(value)
         if len(cycles) == 2:
@@ -351,8 +351,8 @@ class _Loader:
                 lower, upper = max(1, math.floor(ratio)) * servo, max(1, math.ceil(ratio)) * servo
                 self.note(f"controller.app_cycle = {toml_value(app)}{given}: allowed: a whole multiple "
                           f"of servo_cycle = {toml_value(servo)} s, e.g. {lower:g} or {upper:g}")
-        if len(self.problems) > before:
-            return Controller()
+        if len(self.problems) > before:         # go on checking the objects against the right family
+            return Controller(family=extra.get("family", "S7-1200"))
         try:
             return Controller(cycles["servo_cycle"], cycles["app_cycle"], **extra)
         except ValueError as exc:               # a rule of the runtime this loader does not know
@@ -382,6 +382,8 @@ class _Loader:
                     self.unknown(f"{key}.{name}", value, "key", ["filter"])
                     continue
                 try:
+                    if isinstance(value, bool) or not isinstance(value, (int, float)) or not 0.0 <= value <= 20.0:
+                        raise ValueError(value)          # also ints beyond float range (no OverflowError)
                     ctl.inputs.set_filter(address, value)
                 except ValueError:
                     self.bad(f"{key}.filter", value, "a time in [0, 20] s")
@@ -408,6 +410,7 @@ class _Loader:
             if not isinstance(steps, list) or len(steps) > 32:
                 self.bad(f"{key}.Command", steps, "a list of at most 32 steps")
                 continue
+            from .kernel.command_table import step_problems
             rows = []
             ok = True
             for n, step in enumerate(steps, start=1):
@@ -416,18 +419,12 @@ class _Loader:
                     self.bad(skey, step, "a table { Type = 5, Position = 100.0, Velocity = 50.0 }")
                     ok = False
                     continue
-                for field, value in step.items():
+                for field, value, allowed in step_problems(step):
                     if field not in STEP_KEYS:
                         self.unknown(f"{skey}.{field}", value, "key", STEP_KEYS)
-                        ok = False
-                    elif isinstance(value, bool) or not isinstance(value, (int, float)) or (
-                            field in ("Type", "NextStep", "StepCode") and not isinstance(value, int)):
-                        kind = "an integer" if field in ("Type", "NextStep", "StepCode") else "a number"
-                        self.bad(f"{skey}.{field}", value, kind)
-                        ok = False
-                    elif field == "StepCode" and not 0 <= value <= 0xFFFF:
-                        self.bad(f"{skey}.{field}", value, "0..65535")
-                        ok = False
+                    else:
+                        self.bad(f"{skey}.{field}", value, allowed)
+                    ok = False
                 rows.append(step)
             if ok:
                 try:
@@ -447,7 +444,7 @@ class _Loader:
             key = f"axes.{_key(name)}"
             valid_name = bool(_NAME.match(name))
             if not valid_name:
-                self.note(f"{key}: the axis name {json.dumps(name, ensure_ascii=False)} is not an identifier; "
+                self.note(f"{key}: the axis name {_quoted(name)} is not an identifier; "
                           f"allowed: letters, digits and underscores, not starting with a digit")
             if not isinstance(table, dict):
                 self.bad(key, table, f"a table of axis tags, e.g. [{key}] with \"Actor.Type\" = 2")
@@ -455,10 +452,11 @@ class _Loader:
             self.axis(ctl, name, key, table, create=valid_name)
         names = list(section)
         for name, table in section.items():
-            for source in (table.get("leading_values", []) if isinstance(table, dict) else []):
+            raw = table.get("leading_values", []) if isinstance(table, dict) else []
+            for source in (raw if isinstance(raw, (list, dict)) else []):     # other kinds: reported in axis()
                 source_name = source.get("name") if isinstance(source, dict) else source
-                if isinstance(source_name, str) and source_name not in names:
-                    self.note(f"axes.{_key(name)}.leading_values: {json.dumps(source_name)} is not a technology "
+                if isinstance(source_name, str) and (source_name not in names or source_name == name):
+                    self.note(f"axes.{_key(name)}.leading_values: {_quoted(source_name)} is not a technology "
                               f"object of this file; allowed: {', '.join(n for n in names if n != name) or 'none'}")
         return names
 
@@ -507,7 +505,8 @@ class _Loader:
                 create = False
             else:
                 leading = self._leading_values(f"{key}.leading_values", raw)
-                create = create and leading is not None
+                # itself as leading value: reported with the other unknown sources in axes()
+                create = create and leading is not None and all(source != name for source, _ in leading)
         schema = self._schema(ctl, kind)
         flat: dict[str, Any] = {}
         written: dict[str, str] = {}                # canonical tag path -> spelling in the file
@@ -569,35 +568,58 @@ class _Loader:
                     self.unknown(f"{key}.{extra}", value, "key", CAM_KEYS)
                     ok = False
             points = table.get("points", [])
-            if not isinstance(points, list) or not all(
-                    isinstance(p, list) and len(p) == 2 and all(isinstance(v, (int, float)) and not isinstance(v, bool)
-                                                               for v in p) for p in points):
+            if not isinstance(points, list):
                 self.bad(f"{key}.points", points, "a list of [x, y] number pairs")
-                ok = False
-                points = []
+                ok, points = False, []
+            elif (bad := R.point_problem(points)) is not None:
+                i, allowed = bad
+                if i is None:
+                    self.note(f"{key}.points: {len(points)} points; allowed: {allowed}")
+                else:
+                    self.bad(f"{key}.points[{i}]", points[i], allowed)
+                ok, points = False, []
             if "csv" in table:
                 path = table["csv"]
                 if not isinstance(path, str):
                     self.bad(f"{key}.csv", path, "a file name relative to the project file")
                     ok = False
+                elif (where := self.inside(f"{key}.csv", path)) is None:
+                    ok = False
                 else:
                     from .cams.io import PointListError, import_points
                     try:
-                        points = list(points) + [list(p) for p in import_points(self.path.parent / path)]
-                    except (OSError, PointListError) as exc:
+                        # a file that is no point list is named with line and reason, never its content
+                        read = [list(p) for p in import_points(where, show_content=False,
+                                                               max_points=R.MAX_CAM_POINTS)]
+                    except PointListError as exc:
                         self.note(f"{key}.csv = {toml_value(path)}: {exc}")
                         ok = False
+                    except OSError as exc:
+                        self.note(f"{key}.csv = {toml_value(path)}: cannot read the file: {exc.strerror or exc}")
+                        ok = False
+                    else:
+                        if ok and (bad := R.point_problem(points + read)) is not None:
+                            at = "" if bad[0] is None else f" (at point {bad[0] + 1} of both together)"
+                            self.bad(f"{key}.csv", path, "points that continue the points of the table: "
+                                     + bad[1] + at)
+                            ok = False
+                        points = points + read
             segments = table.get("segments", [])
-            if not isinstance(segments, list) or not all(
-                    isinstance(sg, dict) and set(sg) <= set(SEGMENT_FIELDS) for sg in segments):
+            if not isinstance(segments, list):
                 self.bad(f"{key}.segments", segments, "a list of tables with " + ", ".join(SEGMENT_FIELDS))
-                ok = False
-                segments = []
+                ok, segments = False, []
+            elif (bad := R.segment_problem(segments, SEGMENT_FIELDS)) is not None:
+                i, allowed = bad
+                if i is None:
+                    self.note(f"{key}.segments: {len(segments)} segments; allowed: {allowed}")
+                else:
+                    self.bad(f"{key}.segments[{i}]", segments[i], allowed)
+                ok, segments = False, []
             settings = {}
             for field, allowed in (("interpolation_mode", (0, 1, 2)), ("boundary_conditions", (0, 1))):
                 value = table.get(field, 0)
-                if isinstance(value, bool) or value not in allowed:
-                    self.bad(f"{key}.{field}", value, " or ".join(map(str, allowed)))
+                if type(value) is not int or value not in allowed:      # 1.0 is a float in TOML: refused
+                    self.bad(f"{key}.{field}", value, "the integer " + " or ".join(map(str, allowed)))
                     ok = False
                 settings[field] = value
             if ok:
@@ -624,8 +646,8 @@ class _Loader:
             settings["signals"] = [s for i, s in enumerate(signals)
                                    if self.signal(ctl, f"trace.signals[{i}]", s, declared)]
         every = section.get("every", 1)
-        if isinstance(every, bool) or not isinstance(every, int) or every < 1:
-            self.bad("trace.every", every, "an integer >= 1 (record every n-th servo cycle)")
+        if isinstance(every, bool) or not isinstance(every, int) or not 1 <= every <= MAX_EVERY:
+            self.bad("trace.every", every, f"an integer >= 1 (record every n-th servo cycle), at most {MAX_EVERY}")
         else:
             settings["every"] = every
         return settings

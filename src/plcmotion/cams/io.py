@@ -96,16 +96,39 @@ def _number(text: str) -> float | None:
         return None
 
 
-def import_points(path: str | os.PathLike, *, require_increasing: bool = True) -> list[tuple[float, float]]:
+#: largest point-list file read [bytes]: an export of MAX_EXPORT_POINTS rows with all derivatives
+#: (5 columns of 17 digits) stays below it
+MAX_IMPORT_BYTES = 16 * 1024 * 1024
+_EXCERPT = 16
+
+
+def import_points(path: str | os.PathLike, *, require_increasing: bool = True, show_content: bool = True,
+                  max_points: int | None = None) -> list[tuple[float, float]]:
     """(leading, following) pairs of a point-list file: comma or tab separated, an optional header row,
     further columns (velocity, ...) checked and ignored, blank lines and lines starting with '#'
     skipped.  Raises PointListError naming the file and line for anything else, and for leading
-    values that do not increase (``require_increasing``)."""
+    values that do not increase (``require_increasing``).
+
+    A message shows at most a short excerpt of a bad field; with ``show_content=False`` (a file named
+    by a project, which might be any file) only the line number, field number and the reason.
+    ``max_points``: refuse files with more points (checked while reading)."""
     name = str(path)
+    try:
+        size = os.path.getsize(path)
+    except OSError:
+        size = 0                                 # let the read below report it
+    if size > MAX_IMPORT_BYTES:
+        raise PointListError(name, None, f"{size} bytes; a point list has at most {MAX_IMPORT_BYTES} bytes")
     try:
         text = Path(path).read_text(encoding="utf-8-sig")
     except UnicodeDecodeError as exc:
         raise PointListError(name, None, f"not a text file ({exc.reason})") from None
+
+    def shown(index: int, field: str) -> str:
+        if not show_content:
+            return f"field {index + 1}"
+        excerpt = field if len(field) <= _EXCERPT else field[:_EXCERPT] + "..."
+        return repr(excerpt)
     points: list[tuple[float, float]] = []
     width: int | None = None
     header_allowed = True
@@ -121,13 +144,13 @@ def import_points(path: str | os.PathLike, *, require_increasing: bool = True) -
             width = len(fields)
             continue
         header_allowed = False
-        for f, v in zip(fields, values):
+        for k, (f, v) in enumerate(zip(fields, values)):
             if v is None:
                 hint = " (decimal comma? use a decimal point)" if "," in f else ""
                 hint = hint or (" (fields are separated by comma or tab)" if ";" in f else "")
-                raise PointListError(name, lineno, f"{f!r} is not a number{hint}")
+                raise PointListError(name, lineno, f"{shown(k, f)} is not a number{hint}")
             if not math.isfinite(v):
-                raise PointListError(name, lineno, f"{f!r} is not a finite number")
+                raise PointListError(name, lineno, f"{shown(k, f)} is not a finite number")
         if len(fields) < 2:
             raise PointListError(name, lineno, f"expected a leading and a following value, got {len(fields)} field(s)")
         if width is None:
@@ -138,6 +161,8 @@ def import_points(path: str | os.PathLike, *, require_increasing: bool = True) -
         if require_increasing and points and not x > points[-1][0]:  # type: ignore[operator]
             raise PointListError(name, lineno, f"leading value {x!r} does not increase (line {last_line}: "
                                                f"{points[-1][0]!r})")
+        if max_points is not None and len(points) >= max_points:
+            raise PointListError(name, lineno, f"more than {max_points} points")
         points.append((x, y))  # type: ignore[arg-type]
         last_line = lineno
     if not points:
@@ -145,5 +170,5 @@ def import_points(path: str | os.PathLike, *, require_increasing: bool = True) -
     return points
 
 
-__all__ = ["DEFAULT_EXPORT_POINTS", "DERIVATIVES", "MAX_EXPORT_POINTS", "PointListError", "export_points",
+__all__ = ["DEFAULT_EXPORT_POINTS", "DERIVATIVES", "MAX_EXPORT_POINTS", "MAX_IMPORT_BYTES", "PointListError", "export_points",
            "import_points"]

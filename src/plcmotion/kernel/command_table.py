@@ -58,7 +58,10 @@ class CommandStep:
             if name == "StepCode" and not 0 <= value <= 0xFFFF:
                 raise ValueError(f"Command[{self._n}].StepCode is a WORD: 0..65535, got {value}")
         else:
-            value = float(value)
+            try:
+                value = float(value)
+            except OverflowError:        # an int beyond the LREAL range: the step check shows 16#870x
+                value = math.inf if value > 0 else -math.inf
         object.__setattr__(self, name, value)
 
     def as_dict(self) -> dict[str, Any]:
@@ -181,3 +184,47 @@ def _check_velocity(v: float, axis: "PositioningAxis", positive: bool) -> str:
     if (positive and v <= 0.0) or abs(v) < axis.eff["DynamicLimits.MinVelocity"] * (1 - 1e-12):
         return "below_start_stop"
     return ""
+
+
+def step_problems(row: Mapping[str, Any]) -> list[tuple[str, Any, str]]:
+    """``(field, value, allowed)`` for the values of one configured step that no axis could run
+    (S7-1200 V6 §12.10.8.1 ranges; the checks that need the axis, e.g. Velocity above MaxVelocity,
+    stay with the run of the step).  A project file is refused for these; the Python API keeps
+    accepting them so that the ErrorIDs 16#8700-16#8704 can be shown at runtime."""
+    out: list[tuple[str, Any, str]] = []
+    for name, value in row.items():
+        if name not in _FIELDS:
+            out.append((name, value, "one of the fields " + ", ".join(_FIELDS)))
+        elif _FIELDS[name] is int and (isinstance(value, bool) or not isinstance(value, numbers.Integral)):
+            out.append((name, value, "an integer"))
+        elif _FIELDS[name] is float and (isinstance(value, bool) or not isinstance(value, numbers.Real)
+                                         or not abs(value) <= LIMIT):
+            out.append((name, value, f"a finite number within +-{LIMIT:g}"))
+    if out:
+        return out
+    kind = row.get("Type", EMPTY)
+    if kind not in TYPES:
+        out.append(("Type", kind, "one of " + ", ".join(f"{t} ({TYPE_NAMES[t]})" for t in TYPES)))
+        return out
+    position, velocity = row.get("Position", 0.0), row.get("Velocity", 0.0)
+    if kind in (RELATIVE, ABSOLUTE):
+        if _check_position(float(position)):
+            out.append(("Position", position, f"a position within +-{LIMIT:g} (not below {TINY:g} in magnitude "
+                                              "unless 0)"))
+        if not velocity >= TINY:
+            out.append(("Velocity", velocity, "a velocity > 0 for a positioning step"))
+    if kind == VELOCITY and 0.0 < abs(velocity) < TINY:
+        out.append(("Velocity", velocity, f"0 or a velocity of at least {TINY:g} in magnitude"))
+    if kind in (VELOCITY, WAIT):
+        duration = row.get("Duration", 0.0)
+        if not MIN_DURATION <= duration <= MAX_DURATION:
+            out.append(("Duration", duration, f"a time in [{MIN_DURATION:g}, {MAX_DURATION:g}] s"))
+    nxt = row.get("NextStep", COMPLETE)
+    if nxt not in (COMPLETE, BLEND):
+        out.append(("NextStep", nxt, f"{COMPLETE} (complete the step) or {BLEND} (blend)"))
+    elif nxt == BLEND and kind not in (RELATIVE, ABSOLUTE):
+        out.append(("NextStep", nxt, f"{COMPLETE}: only positioning steps blend into the next step"))
+    code = row.get("StepCode", 0)
+    if not 0 <= code <= 0xFFFF:
+        out.append(("StepCode", code, "a WORD: 0..65535"))
+    return out

@@ -66,16 +66,17 @@ class Param:
                 return None, bool(value)
             return "type", value
         if self.kind == INT:
-            if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+            # integers only: 1.0 is a REAL (a TOML file and the Python API tell them apart)
+            if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Integral):
                 return "type", value
-            if not isinstance(value, numbers.Integral):
-                if not math.isfinite(value) or value != int(value):
-                    return "type", value
-                value = int(value)
+            value = int(value)
         else:  # REAL: numbers only (numpy scalars included), never strings or booleans
             if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
                 return "type", value
-            value = float(value)
+            try:
+                value = float(value)
+            except OverflowError:                # an int beyond the LREAL range (10**400)
+                return ("too_high" if value > 0 else "too_low"), value
             if not math.isfinite(value):
                 return "format", value
         if self.choices is not None and value not in self.choices:
@@ -280,15 +281,56 @@ def canonical(path: str) -> str:
 
 
 def flatten(tree: Mapping[str, Any], prefix: str = "") -> dict[str, Any]:
-    """Flatten nested dicts keyed by tag path components into ``{"A.B.C": value}``."""
-    flat: dict[str, Any] = {}
-    for key, value in tree.items():
-        path = f"{prefix}.{key}" if prefix else str(key)
-        if isinstance(value, Mapping):
-            flat.update(flatten(value, path))
-        else:
-            flat[path] = value
+    """Flatten nested dicts keyed by tag path components into ``{"A.B.C": value}``.
+
+    Raises ValueError when two spellings give the same path (``"A.B": 1`` beside ``"A": {"B": 2}``)
+    or the nesting is deeper than any tag path; :func:`flatten_checked` reports these as issues."""
+    flat, issues = flatten_checked(tree, prefix)
+    if issues:
+        raise ValueError("; ".join(i.message() for i in issues))
     return flat
+
+
+#: deeper nesting than any tag path has (``Sensor[1].ActiveHoming.Mode``: 3 levels) is a mistake
+MAX_DEPTH = 8
+
+
+def flatten_checked(tree: Mapping[str, Any], prefix: str = "") -> tuple[dict[str, Any], list["Issue"]]:
+    """``flatten`` that reports (instead of silently resolving) a tag set twice, once as a dotted key
+    and once nested, and nesting deeper than ``MAX_DEPTH`` (also a dict that contains itself)."""
+    flat: dict[str, Any] = {}
+    issues: list[Issue] = []
+    spelled: dict[str, str] = {}                 # flat path -> how it was written first
+    stack = [(tree, prefix, "", 0)]
+    while stack:                                 # iterative: no RecursionError on deep or cyclic input
+        node, path, written, depth = stack.pop()
+        if depth > MAX_DEPTH:
+            issues.append(Issue(path, "nesting", "{...}", f"allowed: tag paths of at most {MAX_DEPTH} levels"))
+            continue
+        items = list(node.items())
+        for key, value in reversed(items):       # the stack reverses again: keep the given order
+            sub = f"{path}.{key}" if path else str(key)
+            how = f"{written}[{key!r}]"
+            if isinstance(value, Mapping):
+                stack.append((value, sub, how, depth + 1))
+        for key, value in items:
+            if isinstance(value, Mapping):
+                continue
+            sub = f"{path}.{key}" if path else str(key)
+            how = f"{written}[{key!r}]"
+            if sub in flat:
+                issues.append(Issue(sub, "duplicate", value, f"params{how} = {_brief(value)} and params{spelled[sub]} "
+                                                           f"= {_brief(flat[sub])} set the same tag; set each tag once"))
+                continue
+            flat[sub] = value
+            spelled[sub] = how
+    return flat, issues
+
+
+def _brief(value: Any) -> str:
+    """``repr(value)``, shortened to a bounded excerpt (a value may be 10**400 or a long list)."""
+    text = repr(value)
+    return text if len(text) <= 80 else text[:60] + f"... ({len(text)} characters)"
 
 
 @dataclass(frozen=True)
@@ -301,9 +343,10 @@ class Issue:
     allowed: str
 
     def message(self) -> str:
+        value = _brief(self.value)
         if self.reason == "unknown":
-            return f"{self.path}: unknown parameter (value {self.value!r}); {self.allowed}"
-        return f"{self.path} = {self.value!r}: {self.allowed}"
+            return f"{self.path}: unknown parameter (value {value}); {self.allowed}"
+        return f"{self.path} = {value}: {self.allowed}"
 
 
 def _suggest(path: str) -> str:
@@ -321,18 +364,32 @@ def _check(params: Mapping[str, Param], canon, suggest, values: Mapping[str, Any
            ) -> tuple[dict[str, Any], list[Issue]]:
     out: dict[str, Any] = {}
     issues: list[Issue] = []
+    spelled: dict[str, tuple[str, Any]] = {}    # canonical path -> (spelling, value) of its first setting
     for raw_path, value in values.items():
         path = canon(raw_path)
         param = params.get(path)
         if param is None:
             issues.append(Issue(raw_path, "unknown", value, suggest(path)))
             continue
+        if path in spelled:                      # two spellings of the manuals for one tag
+            first, was = spelled[path]
+            issues.append(Issue(raw_path, "duplicate", value,
+                                f"the tag is already set by {first} = {_brief(was)}; set each tag once"))
+            continue
+        spelled[path] = (raw_path, value)
         reason, norm = param.check(value)
         if reason is not None:
-            issues.append(Issue(path, reason, value, "allowed: " + param.allowed()))
+            issues.append(Issue(path, reason, value, "allowed: " + param.allowed() + _hint(param, value)))
         else:
             out[path] = norm
     return out, issues
+
+
+def _hint(param: Param, value: Any) -> str:
+    """Why a whole-numbered REAL is refused for an integer tag."""
+    if param.kind == INT and isinstance(value, float) and value.is_integer():
+        return f" (an integer: write {int(value)}, not {value!r})"
+    return ""
 
 
 def check_values(values: Mapping[str, Any]) -> tuple[dict[str, Any], list[Issue]]:

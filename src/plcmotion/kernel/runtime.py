@@ -35,6 +35,83 @@ FAMILIES = ("S7-1200", "S7-1500", "S7-1500T")
 _EPS_T = 1e-9
 _NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 
+#: servo cycle range [s].  The manuals in use give no numbers (S7-1200 V6 §2.2.7.1 only recommends
+#: 2 ms + 2 ms per position-controlled axis for MC-Servo); 32 ms is the longest MC-Servo application
+#: cycle of S7-1500 Motion Control and 0.1 ms lies below the shortest MC-Servo cycle of any S7 CPU
+#: (0.25 ms with PROFINET IRT): finer cycles only resolve PTO pulse trains better in the simulation.
+#: Outside this range a simulation is meaningless (and 1e-300 s would never end).
+SERVO_CYCLE_MIN, SERVO_CYCLE_MAX = 0.0001, 0.032
+#: longest application cycle (user program period) [s]: keeps one ``step()`` bounded
+#: (at most APP_CYCLE_MAX / SERVO_CYCLE_MIN = 10000 servo cycles)
+APP_CYCLE_MAX = 1.0
+
+
+def cycle_problem(servo_cycle: Any, app_cycle: Any) -> tuple[str, Any, str] | None:
+    """The first problem of a servo/application cycle pair as ``(name, value, allowed)``, else None."""
+    ranges = (("servo_cycle", servo_cycle, SERVO_CYCLE_MIN, SERVO_CYCLE_MAX),
+              ("app_cycle", app_cycle, SERVO_CYCLE_MIN, APP_CYCLE_MAX))
+    for name, value, lo, hi in ranges:
+        # one comparison refuses NaN, inf and ints beyond float range (math.isfinite(10**400) raises)
+        if isinstance(value, bool) or not isinstance(value, numbers.Real) or not lo <= value <= hi:
+            return name, value, f"a positive number of seconds in [{lo:g}, {hi:g}]"
+    ratio = app_cycle / servo_cycle
+    if abs(ratio - round(ratio)) > 1e-9 * ratio or round(ratio) < 1:
+        return "app_cycle", app_cycle, f"a whole multiple of servo_cycle ({servo_cycle!r} s)"
+    return None
+
+
+def _flat(params: Any, where: str) -> dict[str, Any]:
+    """The tag values of ``params`` (nested and/or dotted keys) as one flat dict; a tag given twice
+    (``"A.B"`` beside ``{"A": {"B": ...}}``) is a ConfigurationError naming both."""
+    if params is None:
+        return {}
+    if not isinstance(params, Mapping):
+        raise TypeError(f"{where}: params must be a mapping of tag paths to values, e.g. "
+                        f"{{'DynamicLimits.MaxVelocity': 100.0}} or {{'DynamicLimits': {{'MaxVelocity': 100.0}}}}; "
+                        f"got {type(params).__name__} {_short(params)}")
+    flat, issues = P.flatten_checked(params)
+    if issues:
+        raise ConfigurationError(where, issues)
+    return flat
+
+
+def _leading_list(name: str, leading_values: Any) -> list[tuple[str, str]]:
+    """The possible leading values of synchronous axis ``name`` as ``(source, coupling)`` pairs."""
+    form = "a list of names or (name, coupling) pairs, e.g. ['Master', ('Encoder', 'actual')]"
+    if leading_values is None:
+        return []
+    if isinstance(leading_values, (str, bytes)) or not isinstance(leading_values, (list, tuple)):
+        raise TypeError(f"synchronous axis {name}: leading_values must be {form}; got {_short(leading_values)}")
+    out = []
+    for item in leading_values:
+        pair = (item, "setpoint") if isinstance(item, str) else item
+        if not (isinstance(pair, (list, tuple)) and len(pair) == 2 and all(isinstance(v, str) for v in pair)):
+            raise TypeError(f"synchronous axis {name}: leading_values must be {form}; got the item {_short(item)}")
+        if pair[0] == name:
+            raise ValueError(f"synchronous axis {name}: an axis is not a leading value of itself (leading_values)")
+        out.append((pair[0], pair[1]))
+    return out
+
+
+def _cam_values(name: str, points: Any, segments: Any) -> tuple[list, list]:
+    """Points and segments of a new cam as lists; an int beyond the LREAL range becomes +-inf, an invalid
+    value that MC_InterpolateCam reports with its ErrorID (the cam TO stores what the program wrote)."""
+    def lreal(v: Any) -> Any:
+        if isinstance(v, numbers.Integral) and not isinstance(v, bool) and abs(v) > 1.0e308:
+            return math.inf if v > 0 else -math.inf
+        return v
+    for what, value in (("points", points), ("segments", segments)):
+        if isinstance(value, (str, bytes, Mapping)) or not hasattr(value, "__iter__"):
+            raise TypeError(f"cam {name}: {what} must be a list, got {_short(value)}")
+    pts = [tuple(lreal(v) for v in p) if isinstance(p, (list, tuple)) else p for p in points]
+    segs = [{k: lreal(v) for k, v in sg.items()} if isinstance(sg, Mapping) else sg for sg in segments]
+    return pts, segs
+
+
+def _short(value: Any, limit: int = 60) -> str:
+    text = repr(value)
+    return text if len(text) <= limit else text[:limit - 3] + "..."
+
 
 class ControllerStopped(RuntimeError):
     """The controller went to STOP (a program raised, or ``stop()`` was called)."""
@@ -62,13 +139,10 @@ class Controller:
     def __init__(self, servo_cycle: float = 0.001, app_cycle: float = 0.004, *,
                  input_filter: float = DEFAULT_FILTER, state_file: str | None = None,
                  technology_version: int | None = None, family: str = "S7-1200"):
-        for name, value in (("servo_cycle", servo_cycle), ("app_cycle", app_cycle)):
-            if (not isinstance(value, numbers.Real) or isinstance(value, bool) or not math.isfinite(value)
-                    or value <= 0):
-                raise ValueError(f"{name} must be a positive number of seconds, got {value!r}")
+        problem = cycle_problem(servo_cycle, app_cycle)
+        if problem:
+            raise ValueError(f"{problem[0]} = {problem[1]!r}: {problem[2]}")
         ratio = app_cycle / servo_cycle
-        if abs(ratio - round(ratio)) > 1e-9 * ratio or round(ratio) < 1:
-            raise ValueError(f"app_cycle ({app_cycle} s) must be a whole multiple of servo_cycle ({servo_cycle} s)")
         if family not in FAMILIES:
             raise ValueError(f"family must be one of {', '.join(FAMILIES)}, got {family!r}")
         #: the controller family whose technology objects are created: S7-1200, S7-1500 or S7-1500T
@@ -77,11 +151,12 @@ class Controller:
         if technology_version is None:
             technology_version = 6 if family == "S7-1200" else 5
         allowed = (6, 7) if family == "S7-1200" else (5,)
-        if technology_version not in allowed:
+        if (isinstance(technology_version, bool) or not isinstance(technology_version, numbers.Integral)
+                or technology_version not in allowed):
             raise ValueError(f"technology_version for {family} must be "
                              + (" or ".join(map(str, allowed))) + f", got {technology_version!r}")
         #: behaviour of S7-1200 Motion Control V6.0 or V7.0 where they differ (PTOSliceTime, MC_Home 0/1)
-        self.technology_version = technology_version
+        self.technology_version = int(technology_version)
         self.servo_cycle = float(servo_cycle)
         self.app_cycle = round(ratio) * self.servo_cycle
         # time = k / rate when the servo frequency is a whole number: 1.001 instead of 1.0010000000000001
@@ -153,7 +228,8 @@ class Controller:
         ``(name, type)`` pairs with type "setpoint" (default), "actual" or "delayed" (S7-1500T)."""
         self._need_1500("a synchronous axis")
         from .axis1500 import SynchronousAxis
-        return self._add_axis(SynchronousAxis, name, params, source, leading_values=leading_values)
+        leading = _leading_list(name, leading_values)
+        return self._add_axis(SynchronousAxis, name, params, source, leading_values=leading)
 
     def add_external_encoder(self, name: str, params: Mapping[str, Any] | None = None, *,
                              source: str | None = None):
@@ -162,9 +238,10 @@ class Controller:
         self._need_1500("an external encoder", t_only=True)
         from .external_encoder import ENCODER_SCHEMA, ExternalEncoder
         self._check_name(name)
-        cfg, issues = ENCODER_SCHEMA.validate(P.flatten(params or {}))
+        where = source or f"external encoder {name}"
+        cfg, issues = ENCODER_SCHEMA.validate(_flat(params, where))
         if issues:
-            raise ConfigurationError(source or f"external encoder {name}", issues)
+            raise ConfigurationError(where, issues)
         enc = ExternalEncoder(self, name, cfg)
         self.objects[name] = enc
         return enc
@@ -176,9 +253,10 @@ class Controller:
         self._need_1500("a leading axis proxy", t_only=True)
         from .proxy import PROXY_SCHEMA, LeadingAxisProxy
         self._check_name(name)
-        cfg, issues = PROXY_SCHEMA.validate(P.flatten(params or {}))
+        where = source or f"leading axis proxy {name}"
+        cfg, issues = PROXY_SCHEMA.validate(_flat(params, where))
         if issues:
-            raise ConfigurationError(source or f"leading axis proxy {name}", issues)
+            raise ConfigurationError(where, issues)
         proxy = LeadingAxisProxy(self, name, cfg, source_link)
         self.objects[name] = proxy
         return proxy
@@ -198,10 +276,10 @@ class Controller:
 
     def _add_axis(self, cls: type, name: str, params: Mapping[str, Any] | None, source: str | None, **kw: Any):
         self._check_name(name)
-        flat = P.flatten(params or {})
-        cfg, issues = cls.schema.validate(flat)
+        where = source or f"axis {name}"
+        cfg, issues = cls.schema.validate(_flat(params, where))
         if issues:
-            raise ConfigurationError(source or f"axis {name}", issues)
+            raise ConfigurationError(where, issues)
         axis = cls(self, name, cfg, **kw)
         self.axes[name] = axis
         self._by_index.append(axis)
@@ -231,9 +309,10 @@ class Controller:
                        "0 (linear), 1 (cubic spline) or 2 (Bézier spline)"),
                       ("InterpolationSettings.BoundaryConditions", boundary_conditions, (0, 1),
                        "0 (none) or 1 (equal first derivative at start and end)"))
-                  if isinstance(value, bool) or value not in allowed]
+                  if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value not in allowed]
         if issues:
             raise ConfigurationError(f"cam {name}", issues)
+        points, segments = _cam_values(name, points, segments)
         cam = CamTO(self, name, points, segments, interpolation_mode, boundary_conditions)
         self.cams[name] = cam
         return cam

@@ -30,7 +30,9 @@ A project file has up to three sections::
 ``[controller]`` may also set ``input_filter`` (default filter time of the digital inputs, 0.0064 s),
 ``technology_version`` (6 or 7: the S7-1200 Motion Control version whose rules apply where they differ) and
 ``state_file``: where retentive data (the absolute encoder adjustment) is kept, relative to the project
-file; by default ``<project>.state.json`` next to it.
+file; by default ``<project>.state.json`` next to it.  ``cycle_watchdog`` (default 10; 0 = off) is the
+wall-clock time the user programs of one application cycle may take, in application cycles, and
+``cycle_watchdog_stop = true`` puts the controller in STOP on an overrun (S7-1200 V6 §2.2.7.3).
 
 ``family = "S7-1500T"`` (or ``"S7-1500"``; default ``"S7-1200"``) makes it an S7-1500 controller.  Its
 axis tables then use the S7-1500 tag names (``plcmotion.kernel.parameters1500``) and may have
@@ -84,7 +86,8 @@ from .kernel.runtime import Controller
 
 SECTIONS = ("controller", "axes", "trace", "inputs", "command_tables", "cams")
 CONTROLLER_DEFAULTS: dict[str, float] = {"servo_cycle": 0.001, "app_cycle": 0.004}
-CONTROLLER_KEYS = ("servo_cycle", "app_cycle", "input_filter", "state_file", "technology_version", "family")
+CONTROLLER_KEYS = ("servo_cycle", "app_cycle", "input_filter", "state_file", "technology_version", "family",
+                   "cycle_watchdog", "cycle_watchdog_stop")
 STEP_KEYS = ("Type", "Position", "Velocity", "Duration", "NextStep", "StepCode")
 TRACE_KEYS = ("signals", "every")
 AXIS_TYPES = ("positioning",)
@@ -328,6 +331,7 @@ class _Loader:
             self.bad("controller.state_file", state, "a file name, relative to the project file")
         else:
             extra["state_file"] = os.fspath(self.path.parent / state)
+        self._watchdog(section, extra)
         cycles: dict[str, float] = {}
         for key, default in CONTROLLER_DEFAULTS.items():
             value = section.get(key, default)
@@ -351,6 +355,23 @@ class _Loader:
         except ValueError as exc:               # a rule of the runtime this loader does not know
             self.note(f"controller: {exc}")
             return Controller()
+
+    def _watchdog(self, section: dict[str, Any], extra: dict[str, Any]) -> None:
+        """cycle_watchdog / cycle_watchdog_stop (plcmotion.kernel.watchdog)."""
+        from .kernel.watchdog import MAX_MULTIPLE, check_multiple
+
+        if "cycle_watchdog" in section:
+            try:
+                extra["cycle_watchdog"] = check_multiple(section["cycle_watchdog"])
+            except ValueError:
+                self.bad("controller.cycle_watchdog", section["cycle_watchdog"],
+                         f"a number of application cycles in [1, {MAX_MULTIPLE:g}], or 0 (off)")
+        if "cycle_watchdog_stop" in section:
+            stop = section["cycle_watchdog_stop"]
+            if isinstance(stop, bool):
+                extra["cycle_watchdog_stop"] = stop
+            else:
+                self.bad("controller.cycle_watchdog_stop", stop, "true or false")
 
     # --- [inputs] -----------------------------------------------------------------------------------
     def inputs(self, ctl: Controller, section: Any) -> None:

@@ -46,7 +46,7 @@ class ProgramErrorWarning(RuntimeWarning):
     """A user program raised: the controller went to STOP (``run`` goes on, ``run_until`` raises)."""
 
 
-def _exception_text(exc: BaseException) -> str:
+def exception_text(exc: BaseException) -> str:
     """'Type: message' of any exception, also one whose ``__str__`` raises (user code must not escape)."""
     name = type(exc).__name__
     try:
@@ -401,7 +401,7 @@ class Controller:
     def _user_fault(self, who: str, exc: BaseException) -> None:
         """A program or hook raised: STOP with the reason; like a PLC the controller goes on in STOP, and
         a warning says so where a script would not look (not for Ctrl-C: that one is re-raised)."""
-        text = _exception_text(exc)
+        text = exception_text(exc)
         self.stop(f"{who} raised {text}\n" + _traceback_text(exc))
         if not isinstance(exc, KeyboardInterrupt):
             warnings.warn(f"controller in STOP at t = {self.time:.6g} s: {who} raised {text} "
@@ -458,7 +458,7 @@ class Controller:
             self._servo_pipeline(t)
         except Exception as exc:  # a defect in the kernel: stop in a defined state, keep the reason
             self._servo_defect = True
-            self.stop(f"internal error in the servo cycle at t = {t:.6g} s: {_exception_text(exc)}\n"
+            self.stop(f"internal error in the servo cycle at t = {t:.6g} s: {exception_text(exc)}\n"
                       + _traceback_text(exc))
 
     def _servo_pipeline(self, t: float) -> None:

@@ -4,7 +4,9 @@ Each servo cycle the plant looks at the machine position of every axis (``DriveC
 and sets the electrical level of the inputs the switches are wired to: hardware limit switches stay
 actuated beyond their position (S7-1200 V6 §5.4.4.3 requires switches that remain actuated), a homing
 switch (reference cam) is actuated over its length.  A drive's "ready" signal is wired the same way.
-The controller's input filters then decide what the CPU sees.
+The controller's input filters then decide what the CPU sees.  A switch edge is stamped with the time the
+load crossed the end of the switch (linear between two servo cycles), so that the input filter runs from
+the edge itself and not from the servo cycle that first sampled it (decision 33).
 """
 from __future__ import annotations
 
@@ -17,13 +19,15 @@ from .base import DriveChannel
 class Switch:
     """A switch actuated while the machine position lies in [low, high] (repeating every ``period``)."""
 
-    __slots__ = ("channel", "address", "low", "high", "active_high", "name", "period")
+    __slots__ = ("channel", "address", "low", "high", "active_high", "name", "period", "_x", "_t")
 
     def __init__(self, channel: DriveChannel, address: str, low: float, high: float, active_high: bool, name: str,
                  period: float | None = None):
         self.channel, self.address = channel, address
         self.low, self.high, self.active_high, self.name = low, high, active_high, name
         self.period = period
+        self._x: float | None = None        # machine position and time of the last sample
+        self._t = 0.0
 
     def actuated(self) -> bool:
         x = self.channel.mechanical_position()
@@ -33,6 +37,30 @@ class Switch:
 
     def level(self, t: float) -> bool:
         return self.actuated() == self.active_high
+
+    def sample(self, t: float) -> tuple[bool, float]:
+        """(level, time of its last edge): the edge is where the machine crossed an end of the switch
+        between the last sample and now, linear in between; ``t`` when that is unknown."""
+        level = self.level(t)
+        x1 = self.channel.mechanical_position()
+        x0, t0 = self._x, self._t
+        self._x, self._t = x1, t
+        if x0 is None or x1 == x0 or not math.isfinite(x0 + x1):
+            return level, t
+        up = x1 > x0
+        crossed = []
+        for end in (self.low, self.high):
+            if not math.isfinite(end):
+                continue
+            if self.period:                 # the nearest copy of this end behind x1
+                k = math.floor((x1 - end) / self.period) if up else math.ceil((x1 - end) / self.period)
+                end += k * self.period
+            if (x0 < end <= x1) if up else (x1 <= end < x0):
+                crossed.append(end)
+        if not crossed:
+            return level, t
+        end = max(crossed) if up else min(crossed)     # the last end crossed decides the level
+        return level, t0 + (t - t0) * ((end - x0) / (x1 - x0))
 
 
 class Signal:
@@ -46,6 +74,9 @@ class Signal:
     def level(self, t: float) -> bool:
         return bool(self.source(t))
 
+    def sample(self, t: float) -> tuple[bool, float]:
+        return self.level(t), t
+
 
 class Plant:
     """All switches and signals of the simulated machine of one controller."""
@@ -56,12 +87,13 @@ class Plant:
 
     def add(self, item: Switch | Signal, t: float = 0.0) -> None:
         self.items.append(item)
-        self.inputs.initialize(item.address, item.level(t))
+        self.inputs.initialize(item.address, item.sample(t)[0])
 
     def update(self, t: float) -> None:
         set_level = self.inputs.set_level
         for item in self.items:
-            set_level(item.address, item.level(t))
+            level, edge = item.sample(t)
+            set_level(item.address, level, edge)
 
     def wire_axis(self, cfg: dict, channel: DriveChannel, t: float) -> None:
         """Create the switches an axis configuration describes (``Plant.*`` and the input addresses)."""

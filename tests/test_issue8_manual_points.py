@@ -31,3 +31,69 @@ def test_decision33_filtered_input_changes_within_filter_plus_one_servo_cycle(fi
     edge = t0 + (t1 - t0) * (100.0 - x0) / (x1 - x0)               # where the load crossed the switch end
     seen = next(r[0] for r in rows if r[2])                         # first servo cycle that sees it
     assert filt - 1e-9 <= seen - edge < filt + SERVO, (seen - edge, filt)
+
+
+# --- S7-1200 V6 §12.9.19: Simulation.Mode of a PTO axis is WP --------------------------------------------
+def _pto_axis():
+    from plcmotion import Controller
+
+    ctl = Controller()
+    axis = ctl.add_positioning_axis("Axis_1", {"Actor": {"Type": 2},
+                                               "DynamicLimits": {"MaxVelocity": 100.0, "MinVelocity": 1.0}})
+    return ctl, axis
+
+
+def test_12_9_19_pto_simulation_mode_written_with_write_param_gives_8647_at_enable():
+    """S7-1200 V6 §12.9.19: Simulation.Mode has access WP for a PTO axis (MC_WriteParam while the axis is
+    disabled, effective at enable, code 2); §12.8 16#8647/16#0001 "simulation is not supported for PTO axes":
+    enabling the PTO axis with Mode 1 fails with that code; writing 0 back, MC_Reset and enable work again."""
+    from plcmotion.s7_1200 import MC_Power, MC_Reset, MC_WriteParam
+    from plcmotion.s7_1200.variables import DInt
+
+    ctl, axis = _pto_axis()
+    wp = MC_WriteParam(Parameter=axis.ref("Simulation.Mode"), Value=DInt(1), Execute=True)
+    wp()
+    assert wp.Done and not wp.Error, wp.outputs
+    assert axis.tag("Simulation.Mode") == 1 and not axis.StatusBits.AxisSimulation
+    power = MC_Power(Axis=axis, Enable=True)
+    for _ in range(5):
+        power()
+        ctl.step()
+    power()
+    assert power.Error and (power.ErrorID, power.ErrorInfo) == (0x8647, 0x0001), power.outputs
+    assert not power.Status and not axis.StatusBits.Enable and axis.StatusBits.Error
+    assert axis.ErrorBits.ConfigFault
+    # correct the value (axis still disabled), acknowledge, enable
+    power.Enable = False
+    power()
+    back = MC_WriteParam(Parameter=axis.ref("Simulation.Mode"), Value=DInt(0), Execute=True)
+    back()
+    assert back.Done, back.outputs
+    reset = MC_Reset(Axis=axis, Execute=True)
+    reset()
+    ctl.step()
+    power.Enable = True
+    for _ in range(5):
+        power()
+        reset()
+        ctl.step()
+    assert power.Status and not power.Error and axis.StatusBits.Enable, (power.outputs, axis.alarms)
+
+
+def test_12_9_19_pto_simulation_mode_not_written_while_enabled_nor_directly():
+    """WP: only while the axis is disabled (16#8410/16#002C otherwise, §12.8); not by direct assignment."""
+    from plcmotion import TagAccessError
+    from plcmotion.s7_1200 import MC_Power, MC_WriteParam
+    from plcmotion.s7_1200.variables import DInt
+
+    ctl, axis = _pto_axis()
+    power = MC_Power(Axis=axis, Enable=True)
+    ctl.program(power)
+    ctl.run(0.02)
+    assert power.Status
+    wp = MC_WriteParam(Parameter=axis.ref("Simulation.Mode"), Value=DInt(1), Execute=True)
+    wp()
+    assert wp.Error and (wp.ErrorID, wp.ErrorInfo) == (0x8410, 0x002C), wp.outputs
+    with pytest.raises(TagAccessError):
+        axis.set_tag("Simulation.Mode", 1)
+    assert axis.ref("Simulation.Mode").access == "WP"

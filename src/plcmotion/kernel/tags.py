@@ -183,7 +183,8 @@ class TagRef:
         """Access right of §12.9: 'RP' status tags, 'RW', 'WP', 'R' configuration tags."""
         if self.status:
             return "RP" if self.path in self.axis._read_param_tags else "RCCP"
-        return self.axis.schema.params[self.path].access
+        access_of = getattr(self.axis, "tag_access", None)
+        return access_of(self.path) if access_of is not None else self.axis.schema.params[self.path].access
 
     def __repr__(self) -> str:
         return f"<TagRef {self.axis.name}.{self.path} : {self.data_type}>"

@@ -97,3 +97,60 @@ def test_12_9_19_pto_simulation_mode_not_written_while_enabled_nor_directly():
     with pytest.raises(TagAccessError):
         axis.set_tag("Simulation.Mode", 1)
     assert axis.ref("Simulation.Mode").access == "WP"
+
+
+# --- S7-1200 V7 §12.9.20 / §12.9.22: StatusSensor[1].* and ErrorBits.AdaptionError -------------------------
+V7_SENSOR = ("StatusSensor[1].State", "StatusSensor[1].CommunicationOK", "StatusSensor[1].AbsEncoderOffset",
+             "StatusSensor[1].AdaptionState")
+
+
+def _pd_axis(version: int):
+    from plcmotion import Controller
+
+    ctl = Controller(technology_version=version)
+    axis = ctl.add_positioning_axis("Axis_1", {"Actor": {"Type": 1}})
+    return ctl, axis
+
+
+def test_v7_12_9_20_status_sensor_array_and_adaption_error_read_and_trace():
+    """S7-1200 V7 §12.9.20: the encoder status is the structure StatusSensor[1] (State 0/1/2, CommunicationOK,
+    AbsEncoderOffset, AdaptionState); §12.9.22: ErrorBits.AdaptionError (error in the data transfer).  With
+    technology_version=7 they read by path and attribute, trace, and MC_ReadParam reads them (RP)."""
+    from plcmotion.s7_1200 import MC_ReadParam
+    from plcmotion.s7_1200.variables import Bool
+    from plcmotion.trace import Trace
+
+    ctl, axis = _pd_axis(7)
+    assert axis.tag("StatusSensor[1].State") == 2                     # 2: valid
+    assert axis.StatusSensor[1].State == 2
+    assert axis.tag("StatusSensor[1].CommunicationOK") is True
+    assert axis.StatusSensor[1].AbsEncoderOffset == 0.0
+    assert axis.ErrorBits.AdaptionError is False
+    assert axis.tag("StatusSensor.State") == 2                         # the Openness name still reads
+    axis.inject_fault("encoder", "station")
+    assert axis.StatusSensor[1].State == 0 and axis.StatusSensor[1].CommunicationOK is False
+    trace = Trace(ctl, [f"Axis_1.{p}" for p in V7_SENSOR] + ["Axis_1.ErrorBits.AdaptionError"]).start()
+    ctl.run(0.01)
+    data = trace.stop().data
+    assert list(data["Axis_1.StatusSensor[1].State"][-3:]) == [0, 0, 0]
+    assert list(data["Axis_1.ErrorBits.AdaptionError"][-3:]) == [0, 0, 0]
+    value = Bool(True)
+    rp = MC_ReadParam(Enable=True, Parameter=axis.ref("StatusSensor[1].CommunicationOK"), Value=value)
+    rp()
+    assert rp.Valid and value.value is False, rp.outputs
+
+
+def test_v6_12_9_22_has_no_status_sensor_array_nor_adaption_error():
+    """S7-1200 V6 §12.9.22 lists StatusSensor.State/CommunicationOK/AbsEncoderOffset (no array) and V6's
+    ErrorBits (§12.9.24) have no AdaptionError: with technology_version=6 these V7 tags do not exist."""
+    from plcmotion.trace import Trace, UnknownSignalError
+
+    ctl, axis = _pd_axis(6)
+    assert axis.tag("StatusSensor.State") == 2
+    for path in ("StatusSensor[1].State", "StatusSensor[1].CommunicationOK", "ErrorBits.AdaptionError"):
+        with pytest.raises(KeyError):
+            axis.tag(path)
+    with pytest.raises(AttributeError):
+        axis.ErrorBits.AdaptionError
+    with pytest.raises(UnknownSignalError):
+        Trace(ctl, ["Axis_1.StatusSensor[1].State"])

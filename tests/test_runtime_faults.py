@@ -1,6 +1,6 @@
 """Issue 8 defect 6: user program faults and the cycle-time watchdog.
 
-Rule (docs/robustness.md): whatever a user program or servo hook raises - any BaseException, also one whose
+Rule (Controller.step, plcmotion.kernel.watchdog): whatever a user program or servo hook raises - any BaseException, also one whose
 ``__str__`` raises - puts the controller in STOP with the reason; nothing but KeyboardInterrupt leaves
 ``step()``, and KeyboardInterrupt only after the controller went to STOP.  A program that runs longer than
 ``cycle_watchdog`` x application cycle (wall clock) is an overrun: reported, and with ``cycle_watchdog_stop``
@@ -212,3 +212,30 @@ def test_defect6_watchdog_from_project_file(tmp_path):
         bad.write_text("[controller]\n" + text + "\n")
         with pytest.raises(ProjectError, match="controller.cycle_watchdog"):
             load_project(bad)
+
+
+def test_defect6_hook_fault_with_warnings_as_errors_is_not_an_internal_error():
+    """With a filter that turns warnings into errors, a faulty hook's ProgramErrorWarning reaches the caller;
+    the controller is in STOP for the hook, not for an 'internal error in the servo cycle'."""
+    ctl, _ = _enabled_controller()
+    ctl.on_post_servo(lambda t: 1 / 0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", ProgramErrorWarning)
+        with pytest.raises(ProgramErrorWarning):
+            ctl.step()
+    assert ctl.mode == "STOP" and "ZeroDivisionError" in ctl.stop_reason
+    assert "internal error" not in ctl.stop_reason
+    ctl.start()
+    ctl.step()
+    assert ctl.mode == "RUN"
+
+
+def test_defect6_watchdog_default_reports_only():
+    """Default: watchdog time 100 application cycles (0.4 s at 4 ms), report only (virtual time and the
+    controller's mode never depend on the wall clock unless cycle_watchdog_stop is chosen)."""
+    ctl = Controller()
+    assert ctl.watchdog.limit == pytest.approx(0.4) and ctl.watchdog.stop is False
+    ctl.inject_cycle_overrun()
+    with pytest.warns(CycleOverrunWarning, match="800 ms"):
+        ctl.step()
+    assert ctl.mode == "RUN" and ctl.cycle_overruns == 1

@@ -30,7 +30,7 @@ A project file has up to three sections::
 ``[controller]`` may also set ``input_filter`` (default filter time of the digital inputs, 0.0064 s),
 ``technology_version`` (6 or 7: the S7-1200 Motion Control version whose rules apply where they differ) and
 ``state_file``: where retentive data (the absolute encoder adjustment) is kept, relative to the project
-file; by default ``<project>.state.json`` next to it.  ``cycle_watchdog`` (default 10; 0 = off) is the
+file; by default ``<project>.state.json`` next to it.  ``cycle_watchdog`` (default 100; 0 = off) is the
 wall-clock time the user programs of one application cycle may take, in application cycles, and
 ``cycle_watchdog_stop = true`` puts the controller in STOP on an overrun (S7-1200 V6 §2.2.7.3).
 

@@ -88,7 +88,7 @@ class Controller:
     def __init__(self, servo_cycle: float = 0.001, app_cycle: float = 0.004, *,
                  input_filter: float = DEFAULT_FILTER, state_file: str | None = None,
                  technology_version: int | None = None, family: str = "S7-1200",
-                 cycle_watchdog: float | None = 10.0, cycle_watchdog_stop: bool = False):
+                 cycle_watchdog: float | None = 100.0, cycle_watchdog_stop: bool = False):
         for name, value in (("servo_cycle", servo_cycle), ("app_cycle", app_cycle)):
             if (not isinstance(value, numbers.Real) or isinstance(value, bool) or not math.isfinite(value)
                     or value <= 0):
@@ -457,6 +457,8 @@ class Controller:
         try:
             self._servo_pipeline(t)
         except Exception as exc:  # a defect in the kernel: stop in a defined state, keep the reason
+            if isinstance(exc, Warning):    # a hook's ProgramErrorWarning turned into an error by a filter
+                raise
             self._servo_defect = True
             self.stop(f"internal error in the servo cycle at t = {t:.6g} s: {exception_text(exc)}\n"
                       + _traceback_text(exc))

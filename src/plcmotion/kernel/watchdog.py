@@ -15,6 +15,9 @@ import numbers
 from dataclasses import dataclass
 
 MAX_MULTIPLE = 1e6          # watchdog times beyond a million application cycles are a typing error
+#: default watchdog time in application cycles (0.4 s at the default 4 ms): generous, because a Python
+#: program may pause for an import or the garbage collector without anything being wrong
+DEFAULT_MULTIPLE = 100.0
 
 
 class CycleOverrunWarning(RuntimeWarning):
@@ -45,7 +48,7 @@ def check_multiple(value: object) -> float | None:
 class CycleWatchdog:
     """Counts the overruns of the program cycle; ``check`` says whether a run was one."""
 
-    def __init__(self, app_cycle: float, multiple: object = 10.0, stop: object = False):
+    def __init__(self, app_cycle: float, multiple: object = DEFAULT_MULTIPLE, stop: object = False):
         if not isinstance(stop, bool):
             raise ValueError(f"cycle_watchdog_stop must be True or False, got {stop!r}")
         self.multiple = check_multiple(multiple)

@@ -374,7 +374,7 @@ class Controller:
         Whatever a program or servo hook raises puts the controller in STOP with the reason
         (``stop_reason``) and a ``ProgramErrorWarning``; ``step`` then returns.  Only KeyboardInterrupt
         leaves ``step``, after the controller went to STOP: the person at the terminal gets it."""
-        if self.mode == RUN and self._programs:
+        if self.mode == RUN:
             self._run_programs()
         self.app_cycles += 1
         try:

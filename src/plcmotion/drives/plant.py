@@ -19,18 +19,21 @@ from .base import DriveChannel
 class Switch:
     """A switch actuated while the machine position lies in [low, high] (repeating every ``period``)."""
 
-    __slots__ = ("channel", "address", "low", "high", "active_high", "name", "period", "_x", "_t")
+    __slots__ = ("channel", "address", "low", "high", "active_high", "name", "period", "_x", "_t", "_on")
 
     def __init__(self, channel: DriveChannel, address: str, low: float, high: float, active_high: bool, name: str,
                  period: float | None = None):
         self.channel, self.address = channel, address
         self.low, self.high, self.active_high, self.name = low, high, active_high, name
         self.period = period
-        self._x: float | None = None        # machine position and time of the last sample
+        self._x: float | None = None        # machine position, time and level of the last sample
         self._t = 0.0
+        self._on: bool | None = None
 
     def actuated(self) -> bool:
-        x = self.channel.mechanical_position()
+        return self._actuated_at(self.channel.mechanical_position())
+
+    def _actuated_at(self, x: float) -> bool:
         if self.period:
             x = self.low + (x - self.low) % self.period
         return self.low <= x <= self.high
@@ -41,11 +44,11 @@ class Switch:
     def sample(self, t: float) -> tuple[bool, float]:
         """(level, time of its last edge): the edge is where the machine crossed an end of the switch
         between the last sample and now, linear in between; ``t`` when that is unknown."""
-        level = self.level(t)
         x1 = self.channel.mechanical_position()
-        x0, t0 = self._x, self._t
-        self._x, self._t = x1, t
-        if x0 is None or x1 == x0 or not math.isfinite(x0 + x1):
+        level = self._actuated_at(x1) == self.active_high
+        x0, t0, before = self._x, self._t, self._on
+        self._x, self._t, self._on = x1, t, level
+        if level == before or x0 is None or x1 == x0 or not math.isfinite(x0 + x1):
             return level, t
         up = x1 > x0
         crossed = []

@@ -396,7 +396,7 @@ def _paths(axis, access: str) -> list[str]:
 
 
 RW_TAGS = _paths(make("default")[1], "RW")
-WP_TAGS = _paths(make("default")[1], "WP")
+WP_TAGS = _paths(make("pd")[1], "WP")      # used on a PROFIdrive axis (Simulation.Mode: WP only for PTO, §12.9.19)
 R_TAGS = _paths(make("default")[1], "R")
 
 

@@ -3,8 +3,8 @@
 >>> from plcmotion import Controller
 >>> from plcmotion.s7_1200 import MC_Power, MC_MoveAbsolute
 """
-from .kernel import (ConfigurationError, Controller, ControllerStopped, PositioningAxis, ProgramErrorWarning,
-                     RunTimeout, TagAccessError)
+from .kernel import (ConfigurationError, Controller, ControllerStopped, CycleOverrunWarning, PositioningAxis,
+                     ProgramErrorWarning, RunTimeout, TagAccessError)
 
 __version__ = "0.1.0"
 
@@ -16,5 +16,6 @@ def load_project(path):
     return _load(path)
 
 
-__all__ = ["Controller", "ControllerStopped", "ProgramErrorWarning", "RunTimeout", "ConfigurationError", "TagAccessError",
+__all__ = ["Controller", "ControllerStopped", "ProgramErrorWarning", "CycleOverrunWarning", "RunTimeout",
+           "ConfigurationError", "TagAccessError",
            "PositioningAxis", "load_project", "__version__"]

@@ -1,7 +1,13 @@
-"""Command line: ``plcmotion demo``, ``plcmotion run``, ``plcmotion check``."""
+"""Command line: ``plcmotion demo``, ``plcmotion run``, ``plcmotion check``.
+
+Every argument is checked before anything runs: a bad one gives one line on stderr and exit code 2
+(issue 8, defect 10).  ``run`` exits 1 when the controller ended in STOP and 130 after Ctrl-C.
+"""
 from __future__ import annotations
 
 import argparse
+import math
+import os
 import runpy
 import sys
 import time
@@ -9,7 +15,80 @@ import warnings
 from pathlib import Path
 from typing import Sequence
 
-from . import ProgramErrorWarning, __version__
+from . import CycleOverrunWarning, ProgramErrorWarning, __version__
+
+#: longest ``--duration`` [s of virtual time] (116 days): beyond it a run does not end in practice
+MAX_DURATION = 1e7
+#: plot formats matplotlib writes without extra packages
+PLOT_FORMATS = (".png", ".pdf", ".svg", ".svgz", ".eps", ".ps")
+
+
+class UsageError(Exception):
+    """A bad command line argument (one line, exit code 2)."""
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message: str):  # type: ignore[override]  # one line instead of usage + message + exit
+        raise UsageError(f"{self.prog}: error: {message} (see {self.prog} --help)")
+
+
+def _output_file(option: str, path: str) -> str | None:
+    """Why ``path`` cannot be written as the file of ``option`` (checked before the run), or None."""
+    where = f"{option} {path}"
+    if not path.strip():
+        return f"{option}: needs a file name"
+    p = Path(path)
+    try:
+        if p.is_dir():
+            return f"{where}: is a folder; give a file name"
+        parent = p.parent
+        if not parent.exists():
+            return f"{where}: the folder {parent} does not exist (create it first)"
+        if not parent.is_dir():
+            return f"{where}: {parent} is not a folder"
+        if not os.access(parent, os.W_OK | os.X_OK) or (p.exists() and not os.access(p, os.W_OK)):
+            return f"{where}: no permission to write it"
+    except OSError as exc:
+        return f"{where}: {exc.strerror or exc}"
+    return None
+
+
+def _check_run_args(args: argparse.Namespace) -> str | None:
+    """The first problem of the ``run`` arguments (before the project is loaded), or None."""
+    d = args.duration
+    if not math.isfinite(d) or d <= 0:
+        return f"--duration {d!r}: allowed: a finite time > 0 s of virtual time"
+    if d > MAX_DURATION:
+        return f"--duration {d:g}: allowed: at most {MAX_DURATION:g} s of virtual time"
+    if args.every is not None and args.every < 1:
+        return f"--every {args.every}: allowed: a whole number >= 1 of servo cycles"
+    if (args.signal or args.every is not None) and not (args.trace or args.plot):
+        return "--signal and --every set what is traced: give --trace FILE.csv or --plot FILE.png"
+    for option, path in (("--trace", args.trace), ("--plot", args.plot)):
+        if path is not None:
+            problem = _output_file(option, path)
+            if problem:
+                return problem
+    if args.plot is not None and Path(args.plot).suffix.lower() not in PLOT_FORMATS:
+        return f"--plot {args.plot}: the file name must end in {', '.join(PLOT_FORMATS)}"
+    if args.trace is not None and args.plot is not None and Path(args.trace).resolve() == Path(args.plot).resolve():
+        return f"--trace and --plot name the same file {args.plot}: the plot would overwrite the trace"
+    return None
+
+
+def _out_folder(out: Path) -> str | None:
+    """Why the demo's output folder cannot be used, or None (it is created if missing)."""
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        return f"--out {out}: cannot create the folder ({exc.strerror or exc})"
+    if not os.access(out, os.W_OK | os.X_OK):
+        return f"--out {out}: no permission to write into the folder"
+    for name in ("trace.csv", "trace.png"):
+        problem = _output_file("--out", os.fspath(out / name))
+        if problem:
+            return problem
+    return None
 
 
 def _progress(fraction: float, wall: float, virtual: float, width: int = 30) -> None:
@@ -25,7 +104,10 @@ def cmd_demo(args: argparse.Namespace) -> int:
     from .trace import Trace
 
     out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
+    problem = _out_folder(out)
+    if problem:
+        print(f"plcmotion demo: {problem}", file=sys.stderr)
+        return 2
     d = demo.build()
     instr = d.instructions
     signals: dict = {f"Axis_1.{tag}": f"Axis_1.{tag}" for tag in (
@@ -87,7 +169,10 @@ def load_program(ctl, program: str) -> None:
     path = Path(program)
     if not path.is_file():
         raise FileNotFoundError(f"{program}: program file not found")
-    namespace = runpy.run_path(str(path), init_globals={"ctl": ctl, "axes": ctl.axes}, run_name="__plcmotion__")
+    try:
+        namespace = runpy.run_path(str(path), init_globals={"ctl": ctl, "axes": ctl.axes}, run_name="__plcmotion__")
+    except SystemExit as exc:            # not the CLI's exit: the program file must register programs
+        raise RuntimeError(f"the file called sys.exit({exc.code!r}) while it was loaded") from None
     setup = namespace.get("setup")
     if callable(setup):
         setup(ctl)
@@ -98,9 +183,14 @@ def load_program(ctl, program: str) -> None:
 
 def cmd_run(args: argparse.Namespace) -> int:
     from .kernel.tags1500 import alarm_description
+    from .kernel.runtime import exception_text
     from .project import ProjectError, load_project
     from .trace import Trace, plot_csv
 
+    problem = _check_run_args(args)
+    if problem:
+        print(f"plcmotion run: {problem}", file=sys.stderr)
+        return 2
     try:
         ctl = load_project(args.project, allow_outside_paths=getattr(args, "allow_outside_paths", False))
     except ProjectError as exc:
@@ -108,8 +198,11 @@ def cmd_run(args: argparse.Namespace) -> int:
         return 2
     try:
         load_program(ctl, args.program)
-    except Exception as exc:  # the user's file: report it, do not show our internals
-        print(f"{args.program}: {type(exc).__name__}: {exc}", file=sys.stderr)
+    except KeyboardInterrupt:
+        print(f"{args.program}: interrupted while loading", file=sys.stderr)
+        return 130
+    except BaseException as exc:  # noqa: BLE001 - the user's file: report it, do not show our internals
+        print(f"{args.program}: {exception_text(exc)}", file=sys.stderr)
         return 2
     settings = getattr(ctl, "project", None) or {}
     trace_settings = settings.get("trace", {}) if isinstance(settings, dict) else {}
@@ -118,35 +211,46 @@ def cmd_run(args: argparse.Namespace) -> int:
         signals = args.signal or trace_settings.get("signals") or None
         try:
             trace = Trace(ctl, signals, every=args.every or trace_settings.get("every", 1), stream_to=args.trace)
+            trace.start()
         except (KeyError, ValueError, TypeError) as exc:
             print(f"trace: {exc.args[0] if exc.args else exc}", file=sys.stderr)
             return 2
-        trace.start()
+        except OSError as exc:
+            print(f"--trace {args.trace}: {exc.strerror or exc}", file=sys.stderr)
+            return 2
     n = max(1, round(args.duration / ctl.app_cycle))
     wall0 = time.perf_counter()
     last = 0.0
     show = args.progress or (not args.quiet and sys.stderr.isatty())
+    interrupted = False
     try:
         with warnings.catch_warnings():
-            # the CLI reports a STOP with its reason at the end of the run
+            # the CLI reports a STOP with its reason and the cycle overruns at the end of the run
             warnings.simplefilter("ignore", ProgramErrorWarning)
+            warnings.simplefilter("ignore", CycleOverrunWarning)
             for k in range(n):
                 ctl.step()
                 now = time.perf_counter()
                 if show and (now - last > 0.2 or k == n - 1):
                     last = now
                     _progress((k + 1) / n, now - wall0, ctl.time)
+    except KeyboardInterrupt:           # Ctrl-C: the controller went to STOP; keep what was recorded
+        interrupted = True
     finally:
         if show:
             sys.stderr.write("\n")
         if trace is not None:
             trace.stop()
     wall = time.perf_counter() - wall0
-    if trace is not None and args.plot:
-        if args.trace:
-            plot_csv(args.trace, args.plot)
-        else:
-            trace.plot(args.plot)
+    plot_failed = None
+    if trace is not None and args.plot and not interrupted:
+        try:
+            if args.trace:
+                plot_csv(args.trace, args.plot)
+            else:
+                trace.plot(args.plot)
+        except (OSError, ValueError) as exc:   # e.g. the disk filled up during the run
+            plot_failed = f"--plot {args.plot}: {getattr(exc, 'strerror', None) or exc}"
     print(f"ran {ctl.time:.3f} s of virtual time in {wall:.2f} s (x{ctl.time / wall if wall else 0:.1f} real time), "
           f"mode {ctl.mode}")
     def alarms(to) -> str:
@@ -161,14 +265,23 @@ def cmd_run(args: argparse.Namespace) -> int:
     for name, to in ctl.objects.items():
         errors = alarms(to)
         print(f"  {name}: {type(to).__name__}, {errors}")
+    wd = ctl.watchdog
+    if wd.count:
+        print(f"cycle watchdog: {wd.count} cycle time overrun{'s' if wd.count != 1 else ''} (longest program "
+              f"run {wd.longest * 1000:.4g} ms, watchdog time {wd.limit * 1000:.4g} ms)")
     if args.trace:
         print(f"trace: {args.trace}")
-    if args.plot:
+    if args.plot and not interrupted and plot_failed is None:
         print(f"plot: {args.plot}")
+    if interrupted:
+        print(f"interrupted at t = {ctl.time:.6g} s: controller in {ctl.mode}", file=sys.stderr)
+        return 130
+    if plot_failed:
+        print(plot_failed, file=sys.stderr)
     if ctl.mode != "RUN":
         print(f"controller in {ctl.mode}: {ctl.stop_reason}", file=sys.stderr)
         return 1
-    return 0
+    return 1 if plot_failed else 0
 
 
 OUTSIDE_HELP = ("let state_file and cam csv paths of the project leave the project's folder "
@@ -176,7 +289,7 @@ OUTSIDE_HELP = ("let state_file and cam csv paths of the project leave the proje
 
 
 def build_parser() -> argparse.ArgumentParser:
-    ap = argparse.ArgumentParser(prog="plcmotion", description="Soft motion controller with PLC motion instructions.")
+    ap = _Parser(prog="plcmotion", description="Soft motion controller with PLC motion instructions.")
     ap.add_argument("--version", action="version", version=f"plcmotion {__version__}")
     sub = ap.add_subparsers(dest="command", required=True)
     p = sub.add_parser("demo", help="run the built-in demo scenario; writes trace.csv and trace.png")
@@ -202,7 +315,11 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    args = build_parser().parse_args(argv)
+    try:
+        args = build_parser().parse_args(argv)
+    except UsageError as exc:
+        print(exc, file=sys.stderr)
+        return 2
     return int(args.func(args) or 0)
 
 

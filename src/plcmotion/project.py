@@ -46,6 +46,9 @@ Integer settings and tags take TOML integers only (``1``, not ``1.0``).  Size li
 (``plcmotion.project_rules``) are checked before any object is built: 2 MiB and 50000
 lines, 1000 technology objects, lists of 4096 items, 12 levels of nesting, 1000 points and 50 segments per cam,
 32 steps per command table.
+``cycle_watchdog`` (default 100; 0 = off) is the wall-clock time the user programs of one application
+cycle may take, in application cycles, and ``cycle_watchdog_stop = true`` puts the controller in STOP on
+an overrun (S7-1200 V6 §2.2.7.3).
 
 ``family = "S7-1500T"`` (or ``"S7-1500"``; default ``"S7-1200"``) makes it an S7-1500 controller.  Its
 axis tables then use the S7-1500 tag names (``plcmotion.kernel.parameters1500``) and may have
@@ -108,7 +111,8 @@ from .kernel.runtime import APP_CYCLE_MAX, SERVO_CYCLE_MAX, SERVO_CYCLE_MIN, Con
 SECTIONS = ("controller", "axes", "trace", "inputs", "command_tables", "cams", "switches", "faults")
 CONTROLLER_DEFAULTS: dict[str, float] = {"servo_cycle": 0.001, "app_cycle": 0.004}
 CYCLE_RANGES = {"servo_cycle": (SERVO_CYCLE_MIN, SERVO_CYCLE_MAX), "app_cycle": (SERVO_CYCLE_MIN, APP_CYCLE_MAX)}
-CONTROLLER_KEYS = ("servo_cycle", "app_cycle", "input_filter", "state_file", "technology_version", "family")
+CONTROLLER_KEYS = ("servo_cycle", "app_cycle", "input_filter", "state_file", "technology_version", "family",
+                   "cycle_watchdog", "cycle_watchdog_stop")
 STEP_KEYS = ("Type", "Position", "Velocity", "Duration", "NextStep", "StepCode")
 TRACE_KEYS = ("signals", "every")
 MAX_EVERY = 1_000_000_000
@@ -334,6 +338,7 @@ class _Loader:
             where = self.inside("controller.state_file", state)
             if where is not None:
                 extra["state_file"] = os.fspath(where)
+        self._watchdog(section, extra)
         cycles: dict[str, float] = {}
         for key, default in CONTROLLER_DEFAULTS.items():
             value = section.get(key, default)
@@ -358,6 +363,23 @@ class _Loader:
         except ValueError as exc:               # a rule of the runtime this loader does not know
             self.note(f"controller: {exc}")
             return Controller()
+
+    def _watchdog(self, section: dict[str, Any], extra: dict[str, Any]) -> None:
+        """cycle_watchdog / cycle_watchdog_stop (plcmotion.kernel.watchdog)."""
+        from .kernel.watchdog import MAX_MULTIPLE, check_multiple
+
+        if "cycle_watchdog" in section:
+            try:
+                extra["cycle_watchdog"] = check_multiple(section["cycle_watchdog"])
+            except ValueError:
+                self.bad("controller.cycle_watchdog", section["cycle_watchdog"],
+                         f"a number of application cycles in [1, {MAX_MULTIPLE:g}], or 0 (off)")
+        if "cycle_watchdog_stop" in section:
+            stop = section["cycle_watchdog_stop"]
+            if isinstance(stop, bool):
+                extra["cycle_watchdog_stop"] = stop
+            else:
+                self.bad("controller.cycle_watchdog_stop", stop, "true or false")
 
     # --- [inputs] -----------------------------------------------------------------------------------
     def inputs(self, ctl: Controller, section: Any) -> None:

@@ -4,7 +4,9 @@ Each servo cycle the plant looks at the machine position of every axis (``DriveC
 and sets the electrical level of the inputs the switches are wired to: hardware limit switches stay
 actuated beyond their position (S7-1200 V6 §5.4.4.3 requires switches that remain actuated), a homing
 switch (reference cam) is actuated over its length.  A drive's "ready" signal is wired the same way.
-The controller's input filters then decide what the CPU sees.
+The controller's input filters then decide what the CPU sees.  A switch edge is stamped with the time the
+load crossed the end of the switch (linear between two servo cycles), so that the input filter runs from
+the edge itself and not from the servo cycle that first sampled it (decision 33).
 
 Switches can be placed by a program (``Plant.place_switch``) and can fail like real ones
 (``Switch.stick``, ``Switch.chatter``, ``Switch.repair``; docs/fault_injection.md).
@@ -39,7 +41,7 @@ class Switch:
     """
 
     __slots__ = ("channel", "address", "low", "high", "active_high", "name", "period", "stuck", "chatter_period",
-                 "_chatter_t0")
+                 "_chatter_t0", "_x", "_t", "_on")
 
     def __init__(self, channel: DriveChannel, address: str, low: float, high: float, active_high: bool, name: str,
                  period: float | None = None):
@@ -49,21 +51,31 @@ class Switch:
         self.stuck: bool | None = None
         self.chatter_period: float | None = None
         self._chatter_t0 = 0.0
+        self._x: float | None = None        # machine position, time and level of the last sample
+        self._t = 0.0
+        self._on: bool | None = None
 
     def actuated(self) -> bool:
-        x = self.channel.mechanical_position()
+        return self._actuated_at(self.channel.mechanical_position())
+
+    def _actuated_at(self, x: float) -> bool:
         if self.period:
             x = self.low + (x - self.low) % self.period
         return self.low <= x <= self.high
 
     def level(self, t: float) -> bool:
-        on = self.actuated() if self.stuck is None else self.stuck
+        return self._faulty(self.actuated(), t) == self.active_high
+
+    def _faulty(self, on: bool, t: float) -> bool:
+        """What the contact shows when the load says ``on`` (a stuck or chattering contact lies)."""
+        if self.stuck is not None:
+            on = self.stuck
         if self.chatter_period is not None:
             # phase in periods, robust against rounding of the cycle times (t = k * servo_cycle)
             x = (t - self._chatter_t0) / self.chatter_period
             if x - math.floor(x + 1e-9) >= 0.5 - 1e-9:
                 on = not on
-        return on == self.active_high
+        return on
 
     # --- faults of the contact (fault injection) ---------------------------------------------------------
     def stick(self, actuated: bool) -> None:
@@ -91,6 +103,32 @@ class Switch:
             f" chattering {self.chatter_period:g} s" if self.chatter_period is not None else "")
         return f"<Switch {self.name} {self.address} [{self.low:g}, {self.high:g}]{fault}>"
 
+    def sample(self, t: float) -> tuple[bool, float]:
+        """(level, time of its last edge): the edge is where the machine crossed an end of the switch
+        between the last sample and now, linear in between; ``t`` when that is unknown."""
+        x1 = self.channel.mechanical_position()
+        physical = self._actuated_at(x1)
+        level = self._faulty(physical, t) == self.active_high
+        x0, t0, before = self._x, self._t, self._on
+        self._x, self._t, self._on = x1, t, level
+        if (level == before or x0 is None or x1 == x0 or not math.isfinite(x0 + x1)
+                or level != (physical == self.active_high)):
+            return level, t                  # no edge, no motion, or the contact's fault made the edge
+        up = x1 > x0
+        crossed = []
+        for end in (self.low, self.high):
+            if not math.isfinite(end):
+                continue
+            if self.period:                 # the nearest copy of this end behind x1
+                k = math.floor((x1 - end) / self.period) if up else math.ceil((x1 - end) / self.period)
+                end += k * self.period
+            if (x0 < end <= x1) if up else (x1 <= end < x0):
+                crossed.append(end)
+        if not crossed:
+            return level, t
+        end = max(crossed) if up else min(crossed)     # the last end crossed decides the level
+        return level, t0 + (t - t0) * ((end - x0) / (x1 - x0))
+
 
 class Signal:
     """An input wired to a signal of the drive (e.g. 'Drive ready')."""
@@ -102,6 +140,9 @@ class Signal:
 
     def level(self, t: float) -> bool:
         return bool(self.source(t))
+
+    def sample(self, t: float) -> tuple[bool, float]:
+        return self.level(t), t
 
 
 class Plant:
@@ -123,7 +164,7 @@ class Plant:
 
     def add(self, item: Switch | Signal, t: float = 0.0) -> None:
         self.items.append(item)
-        self.inputs.initialize(item.address, item.level(t))
+        self.inputs.initialize(item.address, item.sample(t)[0])
 
     @property
     def switches(self) -> list[Switch]:
@@ -185,7 +226,8 @@ class Plant:
     def update(self, t: float) -> None:
         set_level = self.inputs.set_level
         for item in self.items:
-            set_level(item.address, item.level(t))
+            level, edge = item.sample(t)
+            set_level(item.address, level, edge)
 
     def wire_axis(self, cfg: dict, channel: DriveChannel, t: float) -> None:
         """Create the switches an axis configuration describes (``Plant.*`` and the input addresses)."""

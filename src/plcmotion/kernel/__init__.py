@@ -8,6 +8,7 @@ from .config import TagAccessError
 from .faults import Fault, Reaction
 from .jobs import Job, JobKind, JobState
 from .runtime import RUN, STOP, Controller, ControllerStopped, ProgramErrorWarning, RunTimeout
+from .watchdog import CycleOverrunWarning, Overrun
 
-__all__ = ["Controller", "ControllerStopped", "ProgramErrorWarning", "RunTimeout", "ConfigurationError", "TagAccessError",
-           "PositioningAxis", "Fault", "Reaction", "Job", "JobKind", "JobState", "RUN", "STOP"]
+__all__ = ["Controller", "ControllerStopped", "ProgramErrorWarning", "CycleOverrunWarning", "Overrun", "RunTimeout",
+           "ConfigurationError", "TagAccessError", "PositioningAxis", "Fault", "Reaction", "Job", "JobKind", "JobState", "RUN", "STOP"]

@@ -53,6 +53,8 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
     def __init__(self, ctl: "Controller", name: str, cfg: Mapping[str, Any], *, db_number: int | None = None):
         self.ctl = ctl
         self.name = name
+        if self.family == "S7-1200" and ctl.technology_version >= 7:
+            self._use_v7_tags()
         self.db_number = db_number if db_number is not None else ctl._next_db_number()
         self.cfg: dict[str, Any] = dict(cfg)          # tag values (work memory)
         self.load_cfg: dict[str, Any] = dict(cfg)     # start values (load memory), used by a restart

@@ -89,16 +89,23 @@ class ConfigMixin:
             self._apply_bank_config()
         return bad
 
+    def tag_access(self: "PositioningAxis", path: str) -> str:
+        """Access right of configuration tag ``path`` on this axis (§12.9 legends; WP of Simulation.Mode
+        only for PTO axes, §12.9.19)."""
+        access = self.schema.params[path].access
+        return P.R if access == P.WP and path in P.PTO_ONLY_WP and not self.pto else access
+
     def write_tag(self: "PositioningAxis", path: str, value: Any, *, via_write_param: bool = False) -> None:
         """Assign a configuration tag from the user program (direct access or MC_WriteParam)."""
         path = self.schema.canonical(path)
         param = self.schema.params.get(path)
         if param is None or param.access == P.P or param.kind == P.ADDR:
             raise TagAccessError(f"{self.name}.{path} is not a writable tag of the {self.schema.title}")
-        allowed = param.access == P.RW or (via_write_param and param.access == P.WP)
+        access = self.tag_access(path)
+        allowed = access == P.RW or (via_write_param and access == P.WP)
         if not allowed:
-            raise TagAccessError(f"{self.name}.{path} is read-only in the user program (access {param.access}"
-                                 + (", write it with MC_WriteParam while the axis is disabled" if param.access == P.WP
+            raise TagAccessError(f"{self.name}.{path} is read-only in the user program (access {access}"
+                                 + (", write it with MC_WriteParam while the axis is disabled" if access == P.WP
                                     else "") + ")")
         reason, norm = param.check(value)
         if reason == "type":

@@ -4,7 +4,9 @@ Addresses are written as on an S7 CPU: ``I0.3`` for input byte 0 bit 3, ``Q0.1``
 program, a test or the simulated plant sets the electrical level of an input; what the technology
 objects and programs read is the filtered value: a change becomes visible only after it has been stable
 for the input's filter time (S7-1200 V6 §5.4.4.3, §5.4.4.5: 6.4 ms by default), so a pulse shorter
-than the filter is lost.  ``force`` overrides the level like a force table, e.g. to break a wire.
+than the filter is lost.  The filter runs from the time of the edge (the plant stamps a switch edge with
+the moment the load crossed it), so the value changes in the first servo cycle at or after edge + filter
+time: at most one servo cycle later than the filter time (decision 33).  ``force`` overrides the level like a force table, e.g. to break a wire.
 """
 from __future__ import annotations
 
@@ -49,19 +51,20 @@ class DigitalInputs:
     def __iter__(self) -> Iterator[str]:
         return iter(sorted(set(self._level) | set(self._value)))
 
-    def set_level(self, address: str, level: bool) -> None:
-        """Set the electrical level (address already checked)."""
+    def set_level(self, address: str, level: bool, at: float | None = None) -> None:
+        """Set the electrical level (address already checked); ``at``: time of the edge (default: now)."""
         if address in self._forced:
             return
         if self._level.get(address) == level and address in self._value:
             return
         self._level[address] = level
+        when = self._time if at is None else min(at, self._time)
         if address not in self._value:
             self._value[address] = level if self.filter_time(address) == 0.0 else False
             if self._value[address] != level:
-                self._since[address] = self._time
+                self._since[address] = when
         elif self._value[address] != level:
-            self._since.setdefault(address, self._time)
+            self._since.setdefault(address, when)
         else:
             self._since.pop(address, None)      # back to the old value before the filter expired
         if self.filter_time(address) == 0.0 and address in self._since:

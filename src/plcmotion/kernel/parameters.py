@@ -23,6 +23,8 @@ BOOL, INT, REAL, ADDR = "bool", "int", "real", "address"
 #: access rights (§12.9 legend): R read, RW read/write, WP write with MC_WriteParam while disabled,
 #: P plant/simulation parameter (configuration only)
 R, RW, WP, P = "R", "RW", "WP", "P"
+#: tags whose WP access the manual grants only to PTO axes (read-only on PROFIdrive/analog axes)
+PTO_ONLY_WP = frozenset({"Simulation.Mode"})
 
 
 @dataclass(frozen=True)
@@ -204,9 +206,10 @@ _PARAMS: list[Param] = [
     Param("PositioningMonitoring.Window", REAL, 1.0, WP, (10,), 0.001, E12),
     Param("StandstillSignal.VelocityThreshold", REAL, 5.0, WP, (10,), 0.0, E12),
     Param("StandstillSignal.MinDwellTime", REAL, 0.01, WP, (10,), 0.0, E12),
-    # the manual lets PROFIdrive/analog axes change it only through the load memory (WRIT_DBL) and a
-    # restart; plcmotion fixes it at configuration (docs/decisions.md)
-    Param("Simulation.Mode", INT, 0, R, (2, 9), choices=(0, 1)),
+    # §12.9.19: WP (effective at enable) for a PTO axis - where Mode 1 then gives 16#8647 -, while
+    # PROFIdrive/analog axes change it only through the load memory (WRIT_DBL) and a restart, which
+    # plcmotion does not have: read-only for them (PTO_ONLY_WP, docs/decisions.md)
+    Param("Simulation.Mode", INT, 0, WP, (2, 9), choices=(0, 1)),
     # --- Simulated plant (not tags of the technology object) ----------------------------------------
     Param("Plant.SpeedTimeConstant", REAL, 0.002, P, (), 0.0, 10.0,
           doc="first-order time constant [s] of the simulated drive's closed speed loop"),

@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 import numbers
 import re
+import time as _wall
 import traceback
 import warnings
 from typing import Any, Callable, Mapping
@@ -29,6 +30,7 @@ from .cam_to import CamTO
 from .sync import SyncStage
 from .command_table import CommandTable
 from .io import DEFAULT_FILTER, DigitalInputs, DigitalOutputs
+from .watchdog import CycleOverrunWarning, CycleWatchdog, Overrun
 
 RUN, STOP = "RUN", "STOP"
 FAMILIES = ("S7-1200", "S7-1500", "S7-1500T")
@@ -121,6 +123,25 @@ class ProgramErrorWarning(RuntimeWarning):
     """A user program raised: the controller went to STOP (``run`` goes on, ``run_until`` raises)."""
 
 
+def exception_text(exc: BaseException) -> str:
+    """'Type: message' of any exception, also one whose ``__str__`` raises (user code must not escape)."""
+    name = type(exc).__name__
+    try:
+        text = str(exc)
+    except BaseException:  # noqa: BLE001 - the message is user code
+        text = "<str() of the exception failed>"
+    if isinstance(exc, SystemExit):
+        text = f"{text or None} (sys.exit() in a program: a PLC program cannot end the controller)"
+    return f"{name}: {text}" if text else name
+
+
+def _traceback_text(exc: BaseException) -> str:
+    try:
+        return "".join(traceback.format_exception(exc))
+    except BaseException:  # noqa: BLE001
+        return "(no traceback: formatting the exception failed)\n"
+
+
 class RunTimeout(TimeoutError):
     """``run_until`` did not see its condition within the timeout."""
 
@@ -134,11 +155,17 @@ class Controller:
     ``state_file``: where retentive data is kept (absolute encoder adjustment); None keeps it in memory.
     ``technology_version``: 6 or 7, the S7-1200 Motion Control version whose rules apply where they
     differ (V7: PTO segment time, direct homing of a disabled PROFIdrive/analog axis).
+    ``cycle_watchdog``: the user programs of one application cycle may take this many application cycles of
+    wall-clock time; a longer run is an overrun (``CycleOverrunWarning``, ``cycle_overruns``,
+    ``last_overrun``).  0 or None: no monitoring.  ``cycle_watchdog_stop``: an overrun puts the controller in
+    STOP, as an overflow does on the CPU (S7-1200 V6 §2.2.7.3); by default it is only reported, because the
+    wall clock of a simulation says nothing about the virtual controller.
     """
 
     def __init__(self, servo_cycle: float = 0.001, app_cycle: float = 0.004, *,
                  input_filter: float = DEFAULT_FILTER, state_file: str | None = None,
-                 technology_version: int | None = None, family: str = "S7-1200"):
+                 technology_version: int | None = None, family: str = "S7-1200",
+                 cycle_watchdog: float | None = 100.0, cycle_watchdog_stop: bool = False):
         problem = cycle_problem(servo_cycle, app_cycle)
         if problem:
             raise ValueError(f"{problem[0]} = {problem[1]!r}: {problem[2]}")
@@ -163,6 +190,8 @@ class Controller:
         rate = 1.0 / self.servo_cycle
         self._rate = float(round(rate)) if abs(rate - round(rate)) < 1e-9 * rate else None
         self._ratio = int(round(ratio))
+        #: cycle-time monitoring of the user programs (see ``cycle_watchdog``)
+        self.watchdog = CycleWatchdog(self.app_cycle, cycle_watchdog, cycle_watchdog_stop)
         self.bank = AxisBank()
         self.axes: dict[str, PositioningAxis] = {}
         self.command_tables: dict[str, CommandTable] = {}
@@ -419,22 +448,67 @@ class Controller:
 
     # --- running ---------------------------------------------------------------------------------------
     def step(self) -> None:
-        """One application cycle: user programs, then the servo cycles of that period."""
+        """One application cycle: user programs, then the servo cycles of that period.
+
+        Whatever a program or servo hook raises puts the controller in STOP with the reason
+        (``stop_reason``) and a ``ProgramErrorWarning``; ``step`` then returns.  Only KeyboardInterrupt
+        leaves ``step``, after the controller went to STOP: the person at the terminal gets it."""
         if self.mode == RUN:
-            for name, fn in self._programs:
-                try:
-                    fn()
-                except Exception as exc:
-                    self.stop(f"program {name!r} raised {type(exc).__name__}: {exc}\n"
-                              + "".join(traceback.format_exception(exc)))
-                    # like a PLC the controller goes on in STOP; say so where a script would not look
-                    warnings.warn(f"controller in STOP at t = {self.time:.6g} s: program {name!r} raised "
-                                  f"{type(exc).__name__}: {exc} (details: Controller.stop_reason)",
-                                  ProgramErrorWarning, stacklevel=2)
-                    break
+            self._run_programs()
         self.app_cycles += 1
-        for _ in range(self._ratio):
-            self._servo()
+        try:
+            for _ in range(self._ratio):
+                self._servo()
+        except KeyboardInterrupt:
+            self.stop(f"interrupted (KeyboardInterrupt) in the servo cycle at t = {self.time:.6g} s")
+            raise
+
+    def _run_programs(self) -> None:
+        t0 = _wall.perf_counter()
+        for name, fn in self._programs:
+            try:
+                fn()
+            except BaseException as exc:  # noqa: BLE001 - a user program: any exception is a program fault
+                self._user_fault(f"program {name!r}", exc)
+                if isinstance(exc, KeyboardInterrupt):
+                    raise
+                return
+        overrun = self.watchdog.check(self.time, _wall.perf_counter() - t0)
+        if overrun is not None:
+            self._on_overrun(overrun)
+
+    def _user_fault(self, who: str, exc: BaseException) -> None:
+        """A program or hook raised: STOP with the reason; like a PLC the controller goes on in STOP, and
+        a warning says so where a script would not look (not for Ctrl-C: that one is re-raised)."""
+        text = exception_text(exc)
+        self.stop(f"{who} raised {text}\n" + _traceback_text(exc))
+        if not isinstance(exc, KeyboardInterrupt):
+            warnings.warn(f"controller in STOP at t = {self.time:.6g} s: {who} raised {text} "
+                          f"(details: Controller.stop_reason)", ProgramErrorWarning, stacklevel=4)
+
+    def _on_overrun(self, overrun: Overrun) -> None:
+        text = self.watchdog.describe(overrun)
+        if self.watchdog.stop:
+            self.stop(text + " (S7-1200 V6 §2.2.7.3: an overflow puts the CPU in STOP)")
+        if self.watchdog.stop or self.watchdog.reportable():
+            warnings.warn(text + (": controller in STOP" if self.watchdog.stop else ""), CycleOverrunWarning,
+                          stacklevel=4)
+
+    @property
+    def cycle_overruns(self) -> int:
+        """Number of overruns of the cycle watchdog (see ``cycle_watchdog``)."""
+        return self.watchdog.count
+
+    @property
+    def last_overrun(self) -> Overrun | None:
+        """The last overrun of the cycle watchdog: virtual time, wall-clock duration, limit, injected."""
+        return self.watchdog.last
+
+    def inject_cycle_overrun(self, cycles: int = 1, duration: float | None = None) -> None:
+        """Fault injection for virtual commissioning: the next ``cycles`` application cycles count as
+        program runs of ``duration`` wall-clock seconds (default twice the watchdog time), so the cycle
+        watchdog trips as on an overloaded CPU - deterministically."""
+        self.watchdog.inject(cycles, duration)
 
     def run(self, seconds: float) -> None:
         """Advance the virtual time by ``seconds`` (whole application cycles, rounded up)."""
@@ -462,9 +536,11 @@ class Controller:
         try:
             self._servo_pipeline(t)
         except Exception as exc:  # a defect in the kernel: stop in a defined state, keep the reason
+            if isinstance(exc, Warning):    # a hook's ProgramErrorWarning turned into an error by a filter
+                raise
             self._servo_defect = True
-            self.stop(f"internal error in the servo cycle at t = {t:.6g} s: {type(exc).__name__}: {exc}\n"
-                      + "".join(traceback.format_exception(exc)))
+            self.stop(f"internal error in the servo cycle at t = {t:.6g} s: {exception_text(exc)}\n"
+                      + _traceback_text(exc))
 
     def _servo_pipeline(self, t: float) -> None:
         b = self.bank
@@ -541,12 +617,14 @@ class Controller:
         for hook in tuple(hooks):
             try:
                 hook(t)
-            except Exception as exc:
-                if hook in hooks:
+            except BaseException as exc:  # noqa: BLE001 - user code (see step)
+                if hook in hooks and not isinstance(exc, KeyboardInterrupt):
                     hooks.remove(hook)
-                self.stop(f"servo hook {getattr(hook, '__qualname__', hook)!r} raised {type(exc).__name__}: "
-                          f"{exc}\n" + "".join(traceback.format_exception(exc)))
+                self._user_fault(f"servo hook {getattr(hook, '__qualname__', hook)!r}", exc)
+                if isinstance(exc, KeyboardInterrupt):
+                    raise
 
 
-__all__ = ["Controller", "ControllerStopped", "ProgramErrorWarning", "RunTimeout", "ConfigurationError", "RUN", "STOP"]
+__all__ = ["Controller", "ControllerStopped", "ProgramErrorWarning", "CycleOverrunWarning", "Overrun", "RunTimeout",
+           "ConfigurationError", "RUN", "STOP"]
 

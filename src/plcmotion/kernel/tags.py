@@ -164,6 +164,21 @@ _DYNAMIC_ALIASES = {
     "StatusSensor[1].AdaptionState": "StatusSensor.AdaptionState",
     "ErrorBits.FollowingError": "ErrorBits.FollowingErrorFault",      # V7 table spelling
 }
+
+#: S7-1200 V7 (technology_version 7): the encoder status is the structure StatusSensor[1] (V7 §12.9.20; the
+#: V6 names stay, they are V7's Openness names) and ErrorBits has AdaptionError (V7 §12.9.22).  The
+#: simulated drives take no parameters from the drive (AdaptionState 3), so no transfer can fail.
+DYNAMIC_V7: dict[str, Callable[["PositioningAxis"], Any]] = {
+    **DYNAMIC,
+    **{f"StatusSensor[1].{name}": DYNAMIC[f"StatusSensor.{name}"]
+       for name in ("State", "CommunicationOK", "AbsEncoderOffset", "AdaptionState")},
+    "ErrorBits.AdaptionError": lambda ax: False,
+}
+DYNAMIC_TYPES_V7: dict[str, str] = {**DYNAMIC_TYPES, **{
+    path: DYNAMIC_TYPES[path.replace("[1]", "")] for path in DYNAMIC_V7 if path.startswith("StatusSensor[1].")},
+    "ErrorBits.AdaptionError": "Bool"}
+READ_PARAM_TAGS_V7 = frozenset(p for p in DYNAMIC_V7 if p != "ErrorBits.HWLimit" and p != "Acceleration")
+_DYNAMIC_ALIASES_V7 = {"ErrorBits.FollowingError": "ErrorBits.FollowingErrorFault"}
 _STATUS_GROUPS = ("StatusBits", "ErrorBits", "StatusPositioning", "StatusDrive", "StatusSensor")
 
 
@@ -188,7 +203,8 @@ class TagRef:
         """Access right of §12.9: 'RP' status tags, 'RW', 'WP', 'R' configuration tags."""
         if self.status:
             return "RP" if self.path in self.axis._read_param_tags else "RCCP"
-        return self.axis.schema.params[self.path].access
+        access_of = getattr(self.axis, "tag_access", None)
+        return access_of(self.path) if access_of is not None else self.axis.schema.params[self.path].access
 
     def __repr__(self) -> str:
         return f"<TagRef {self.axis.name}.{self.path} : {self.data_type}>"
@@ -313,6 +329,13 @@ class AxisTagsMixin:
     _dynamic_aliases: dict[str, str] = _DYNAMIC_ALIASES
     _status_groups: tuple[str, ...] = _STATUS_GROUPS
     _read_param_tags: frozenset[str] = READ_PARAM_TAGS
+
+    def _use_v7_tags(self) -> None:
+        """Present the S7-1200 V7 status tags on this axis (StatusSensor[1].*, ErrorBits.AdaptionError)."""
+        self._dynamic = DYNAMIC_V7
+        self._dynamic_types = DYNAMIC_TYPES_V7
+        self._dynamic_aliases = _DYNAMIC_ALIASES_V7
+        self._read_param_tags = READ_PARAM_TAGS_V7
 
     @property
     def Sensor(self) -> _SensorArray:  # noqa: N802

@@ -10,7 +10,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from .jobs import Job, JobKind
-from .profiles import INF, Limits, Planner, Profile, ReversalRequired, first_time_at_velocity
+from .profiles import INF, Limits, Planner, PlanningError, Profile, ReversalRequired, first_time_at_velocity
 
 if TYPE_CHECKING:  # pragma: no cover
     from .axis import PositioningAxis
@@ -86,7 +86,8 @@ def limits(axis: "PositioningAxis", velocity: float | None = None, *, emergency:
         j = jmax_lim
         limited.append("jerk")
     return Limits(velocity=v, acceleration=acc, deceleration=dec, jerk=j if jerk else INF,
-                  start_stop=e["DynamicLimits.MinVelocity"] if axis.pto else 0.0, limited=tuple(limited))
+                  start_stop=e["DynamicLimits.MinVelocity"] if axis.pto else 0.0, limited=tuple(limited),
+                  max_velocity=vmax)
 
 
 def max_dynamics(axis: "PositioningAxis") -> Limits:
@@ -216,8 +217,15 @@ class MotionPlanner:
             lim = limits(ax, None, emergency=True, jerk=False)
         else:
             lim = limits(ax, None, emergency=emergency, jerk=jerk)
-            profile = self.planner.stop(t, p, v, a, lim)
-        return self._guard(Plan(profile), t, p, v, a, lim, cruise=abs(v))
+            try:
+                profile = self.planner.stop(t, p, v, a, lim)
+            except PlanningError:
+                # the stop must happen whatever the dynamics: emergency ramp without jerk (§12.8)
+                profile = _ramp_stop(t, p, v, ax.eff["DynamicDefaults.EmergencyDeceleration"], lim.start_stop)
+        try:
+            return self._guard(Plan(profile), t, p, v, a, lim, cruise=abs(v))
+        except (PlanningError, DirectionFault):
+            return Plan(profile)
 
     def ramp_out(self, t: float, p: float, v: float, duration: float) -> Plan:
         """Linear velocity ramp to zero in ``duration`` (PTO immediate stop, §11.1.1)."""

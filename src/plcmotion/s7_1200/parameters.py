@@ -75,6 +75,7 @@ from ..kernel.jobs import Job, JobKind, JobState
 from ..kernel.parameters import E12
 from ..kernel.tags import TagRef
 from . import errors as E
+from ..fb import ProgramError
 from .base import ExecuteInstruction, Instruction, InstructionError, as_bool
 from .variables import Variable, plain, type_of
 
@@ -260,7 +261,7 @@ class MC_ReadParam(Instruction):  # noqa: N801
             return                                   # error shown until Enable goes FALSE
         target = self.Value
         if not isinstance(target, Variable):
-            raise TypeError(f"MC_ReadParam.Value is an InOut VARIANT: give a typed variable "
+            raise ProgramError(f"MC_ReadParam.Value is an InOut VARIANT: give a typed variable "
                             f"(plcmotion.s7_1200.variables Bool/Int/DInt/UDInt/Real), not {target!r}")
         try:
             ref = _tag_ref(self)

@@ -283,7 +283,7 @@ class PositioningAxis1500(SuperimposedMixin, LeadingValueMixin, PositioningAxis)
             return
         if stop_mode == 2:
             lim = self._max_dynamics()
-            plan_profile = self.motion.planner.stop(t, p, v, a, lim)
+            plan_profile = self.motion.stop_with(t, p, v, a, lim)
             self._start_profile(plan_profile)
         else:
             plan = self.motion.stop(t, p, v, a, emergency=True, jerk=False)

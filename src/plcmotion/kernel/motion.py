@@ -217,15 +217,19 @@ class MotionPlanner:
             lim = limits(ax, None, emergency=True, jerk=False)
         else:
             lim = limits(ax, None, emergency=emergency, jerk=jerk)
-            try:
-                profile = self.planner.stop(t, p, v, a, lim)
-            except PlanningError:
-                # the stop must happen whatever the dynamics: emergency ramp without jerk (§12.8)
-                profile = _ramp_stop(t, p, v, ax.eff["DynamicDefaults.EmergencyDeceleration"], lim.start_stop)
+            profile = self.stop_with(t, p, v, a, lim)
         try:
             return self._guard(Plan(profile), t, p, v, a, lim, cruise=abs(v))
         except (PlanningError, DirectionFault):
             return Plan(profile)
+
+    def stop_with(self, t: float, p: float, v: float, a: float, lim: Limits) -> Profile:
+        """A stop with the dynamics ``lim`` that always gives a profile: where even the closed-form
+        fallback of the planner fails, the emergency ramp without jerk (§12.8) stops the axis."""
+        try:
+            return self.planner.stop(t, p, v, a, lim)
+        except PlanningError:
+            return _ramp_stop(t, p, v, self.axis.eff["DynamicDefaults.EmergencyDeceleration"], lim.start_stop)
 
     def ramp_out(self, t: float, p: float, v: float, duration: float) -> Plan:
         """Linear velocity ramp to zero in ``duration`` (PTO immediate stop, §11.1.1)."""

@@ -52,6 +52,20 @@ def as_real(value: Any) -> float | None:
     return x if math.isfinite(x) else None
 
 
+def as_number(value: Any) -> float | None:
+    """Like ``as_real``, but a number beyond the REAL range (a Python int such as 10**400) is +-inf, so
+    that the range check of the input (e.g. > 1.0E12) names it; NaN, infinity and non-numbers: None."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        return None
+    try:
+        x = float(value)
+    except OverflowError:
+        return math.inf if value > 0 else -math.inf
+    except (ValueError, TypeError):
+        return None
+    return x if math.isfinite(x) else None
+
+
 def as_int(value: Any) -> int | None:
     """INT input value, None when not a whole number."""
     if isinstance(value, _BOOL_TYPES):

@@ -58,7 +58,10 @@ class CommandStep:
             if name == "StepCode" and not 0 <= value <= 0xFFFF:
                 raise ValueError(f"Command[{self._n}].StepCode is a WORD: 0..65535, got {value}")
         else:
-            value = float(value)
+            try:
+                value = float(value)
+            except OverflowError:      # beyond the REAL range: stored as +-inf, the step check rejects it
+                value = math.inf if value > 0 else -math.inf
         object.__setattr__(self, name, value)
 
     def as_dict(self) -> dict[str, Any]:

@@ -75,7 +75,10 @@ class Param:
         else:  # REAL: numbers only (numpy scalars included), never strings or booleans
             if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
                 return "type", value
-            value = float(value)
+            try:
+                value = float(value)
+            except OverflowError:      # an integer beyond the REAL range: not a finite REAL
+                value = math.inf if value > 0 else -math.inf
             if not math.isfinite(value):
                 return "format", value
         if self.choices is not None and value not in self.choices:

@@ -90,6 +90,7 @@ class Limits:
     start_stop: float = 0.0         # PTO start/stop velocity
     limited: tuple[str, ...] = ()   # commanded values cut to the dynamic limits (S7-1500 alarms 501-504)
     max_velocity: float = 0.0       # velocity limit of the axis (0: ``velocity``), never to be exceeded
+    strict: bool = False            # re-plan of a running job: its own velocity bounds are hard too
 
     @property
     def hard_velocity(self) -> float:
@@ -343,7 +344,9 @@ class Planner:
 
         Speeds are counted in direction ``sign``.  Reducing the builder's acceleration to zero with the
         jerk limit ends at speed ``u0``; when ``u0`` stays between standstill (no reversal) and the axis's
-        velocity limit, the state is left to ruckig as it is.  Otherwise the acceleration is brought to
+        velocity limit -- for a re-plan of the running job (``lim.strict``) between ``lo`` and ``hi`` --
+        the state is left to ruckig as it is: the overshoot of a new command's velocity that the jerk
+        limit makes unavoidable is ordinary.  Otherwise the acceleration is brought to
         zero with the smallest jerk (at least the configured one) that ends within [``lo``, ``hi``] --
         the bounds of the job (its velocity, the target velocity) -- or stepped to zero when the speed is
         already at the bound.
@@ -353,10 +356,11 @@ class Planner:
         if jerk == INF or abs(alpha) <= 1e-12:
             return
         u = sign * b.v
-        hard = max(lim.hard_velocity, u)
+        hard = max(hi if lim.strict else lim.hard_velocity, u)
+        floor = min(lo, u) if lim.strict else 0.0
         u0 = u + alpha * abs(alpha) / (2.0 * jerk)
         tol = 1e-9 * max(1.0, hard)
-        if -tol <= u0 <= hard + tol:
+        if floor - tol <= u0 <= hard + tol:
             return
         bound = max(hi, u) if alpha > 0 else min(lo, u)
         room = abs(bound - u)

@@ -198,3 +198,42 @@ def test_write_param_and_tags_beyond_real_range_defect5():
     table = ctl.add_command_table("T", [{"Type": 1, "Position": 10.0, "Velocity": 5.0}])
     table.Command[1].Position = -HUGE
     assert table.Command[1].Position == -math.inf
+
+
+# --- defect 5: planning always gives a profile -------------------------------------------------------------
+@pytest.mark.parametrize("dist, vmax, acc, dec, jerk", [
+    (445.3, 40.0, 0.05, 0.05, 5e-8), (1e-3, 40.0, 500.0, 100.0, 1e4), (1e6, 10.0, 1e-3, 1e3, math.inf),
+    (-3.0, 1.0, 2.0, 0.5, 0.1)])
+def test_closed_form_fallback_stays_within_the_limits_defect5(dist, vmax, acc, dec, jerk):
+    """Where ruckig gives up, the closed-form S-curve positioning takes over: it arrives at the target at
+    standstill and never exceeds velocity, acceleration/deceleration or jerk (S7-1200 V6 §5.4.4.4)."""
+    from plcmotion.kernel.profile_fallback import closed_form
+    from plcmotion.kernel.profiles import _Builder
+    b = _Builder(0.0, 0.0, 0.0, 0.0)
+    amax, amin = (acc, -dec) if dist > 0 else (dec, -acc)
+    assert closed_form(b, dist, 0.0, vmax, amax, amin, jerk)
+    prof = b.finish(dist, 0.0)
+    for k, seg in enumerate(prof.segments[:-1]):
+        dur = prof.segments[k + 1].t - seg.t
+        end_v = seg.v + dur * (seg.a + dur * seg.j / 2)
+        end_a = seg.a + dur * seg.j
+        assert abs(seg.v) <= vmax * (1 + 1e-9) and abs(end_v) <= vmax * (1 + 1e-9)
+        assert max(abs(seg.a), abs(end_a)) <= max(acc, dec) * (1 + 1e-9)
+        assert abs(seg.j) <= jerk
+        assert (seg.v if seg.v else end_v) * dist >= -1e-12           # never backwards
+    last = prof.segments[-2]
+    dur = prof.t_end - last.t
+    assert last.p + dur * (last.v + dur * (last.a / 2 + dur * last.j / 6)) == pytest.approx(dist, rel=1e-9, abs=1e-12)
+
+
+def test_planner_gives_a_profile_where_ruckig_fails_defect5():
+    """The state of issue 8 defect 5 (acceleration 130 left over, new limits a = 0.05, j = 5e-8): ruckig
+    raised; the velocity ramp and the positioning are planned within the velocity limit."""
+    from plcmotion.kernel.profiles import Limits, Planner
+    pl = Planner()
+    lim = Limits(velocity=40.0, acceleration=0.05, deceleration=0.05, jerk=5e-8)
+    for prof in (pl.velocity(0.0, 0.0, 0.845, 130.0, 40.0, lim), pl.position(0.0, 0.0, 0.845, 130.0, 445.3, lim),
+                 pl.stop(0.0, 0.0, 0.845, 130.0, lim)):
+        for seg in prof.segments:
+            assert abs(seg.v) <= 40.0 * (1 + 1e-9) and math.isfinite(seg.p)
+    assert pl.position(0.0, 0.0, 0.845, 130.0, 445.3, lim).final.p == 445.3

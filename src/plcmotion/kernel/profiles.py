@@ -28,6 +28,8 @@ from dataclasses import dataclass, field
 
 import ruckig
 
+from .profile_fallback import closed_form
+
 INF = math.inf
 _EPS_V = 1e-9
 
@@ -166,7 +168,7 @@ class Planner:
         if result not in (ruckig.Result.Working, ruckig.Result.Finished):
             if target_p is not None and self._solve_long(b, target_p, target_v, vmax, amax, amin, jerk):
                 return
-            if not self._closed_form(b, target_p, target_v, vmax, amax, amin, jerk):
+            if not closed_form(b, target_p, target_v, vmax, amax, amin, jerk):
                 raise PlanningError(f"ruckig: {result!r} for p={b.p!r} v={b.v!r} a={b.a!r} -> "
                                     f"p={target_p!r} v={target_v!r} (vmax={vmax}, a=[{amin}, {amax}], j={jerk})")
             return
@@ -185,78 +187,6 @@ class Planner:
         if target_p is not None:
             b.p = target_p
         b.v, b.a = target_v, 0.0
-
-    # --- closed-form fallbacks (ruckig out of its numerical range) ----------------------------------
-    @staticmethod
-    def _scurve(b: _Builder, target_v: float, amax: float, amin: float, jerk: float) -> None:
-        """Jerk-limited velocity change from zero acceleration to ``target_v`` (an acceleration still
-        present is dropped: a fallback, used only where ruckig gives up)."""
-        b.a = 0.0
-        dv = target_v - b.v
-        if dv == 0.0:
-            return
-        sgn = 1.0 if dv > 0 else -1.0
-        acc = amax if dv > 0 else -amin
-        if not acc > 0.0:
-            raise PlanningError(f"no acceleration to change the velocity ({amin}, {amax})")
-        if jerk == INF:
-            b.add(abs(dv) / acc, b.p, b.v, sgn * acc, 0.0)
-        else:
-            t1 = acc / jerk
-            if abs(dv) <= acc * t1:
-                t1, t2 = math.sqrt(abs(dv) / jerk), 0.0
-            else:
-                t2 = abs(dv) / acc - t1
-            b.add(t1, b.p, b.v, 0.0, sgn * jerk)
-            b.add(t2, b.p, b.v, b.a, 0.0)
-            b.add(t1, b.p, b.v, b.a, -sgn * jerk)
-        b.v, b.a = target_v, 0.0
-
-    @staticmethod
-    def _ramp_time(dv: float, acc: float, jerk: float) -> float:
-        """Duration of a jerk-limited velocity change ``dv`` >= 0 from and to zero acceleration."""
-        if jerk == INF:
-            return dv / acc
-        t1 = acc / jerk
-        return 2.0 * math.sqrt(dv / jerk) if dv <= acc * t1 else dv / acc + t1
-
-    def _closed_form(self, b: _Builder, target_p: float | None, target_v: float, vmax: float, amax: float,
-                     amin: float, jerk: float) -> bool:
-        """Defined fallback where ruckig gives up: velocity ramps in closed form; a positioning brakes to
-        standstill and travels rest to rest (peak speed found by bisection, the distance rises with it)."""
-        try:
-            if target_p is None:
-                self._scurve(b, target_v, amax, amin, jerk)
-                return True
-            self._scurve(b, 0.0, amax, amin, jerk)
-            dist = abs(target_p - b.p)
-            sgn = 1.0 if target_p >= b.p else -1.0
-            acc, dec = (amax, -amin) if sgn > 0 else (-amin, amax)
-            if dist > 0.0 and vmax > 0.0:
-                def travel(u: float) -> float:
-                    return u / 2.0 * (self._ramp_time(u, acc, jerk) + self._ramp_time(u, dec, jerk))
-                peak = vmax
-                if travel(vmax) > dist:
-                    lo, hi = 0.0, vmax
-                    for _ in range(200):
-                        mid = 0.5 * (lo + hi)
-                        if travel(mid) > dist:
-                            hi = mid
-                        else:
-                            lo = mid
-                        if hi - lo <= 1e-15 * vmax:
-                            break
-                    peak = lo
-                if peak > 0.0:
-                    self._scurve(b, sgn * peak, amax, amin, jerk)
-                    cruise = dist - travel(peak)
-                    if cruise > 0.0:
-                        b.add(cruise / peak, b.p, b.v, 0.0, 0.0)
-                    self._scurve(b, 0.0, amax, amin, jerk)
-            b.p, b.v, b.a = target_p, target_v, 0.0
-            return all(math.isfinite(x) for x in (b.t, b.p, b.v))
-        except (PlanningError, ArithmeticError, ValueError):
-            return False
 
     @staticmethod
     def _ramp(b: _Builder, target_v: float, amax: float, amin: float) -> None:

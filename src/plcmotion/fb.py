@@ -27,19 +27,42 @@ from .kernel.jobs import Job, JobState
 _BOOL_TYPES = (bool, np.bool_)
 
 
+class ProgramError(TypeError):
+    """A programming mistake in an instruction call (an input name that does not exist, a non-boolean
+    at a BOOL input, a constant at an InOut): raised like a program that would not compile."""
+
+
 def as_bool(fb: "Instruction", name: str, value: Any) -> bool:
     if isinstance(value, _BOOL_TYPES):
         return bool(value)
-    if isinstance(value, (int, np.integer)) and value in (0, 1):
+    if isinstance(value, (int, np.integer)) and not isinstance(value, bool) and value in (0, 1):
         return bool(value)
-    raise TypeError(f"{type(fb).__name__}.{name} is a BOOL input; got {value!r}")
+    raise ProgramError(f"{type(fb).__name__}.{name} is a BOOL input; got {value!r}")
 
 
 def as_real(value: Any) -> float | None:
-    """REAL input value, None for an invalid number format (NaN, infinity, not a number)."""
+    """REAL input value, None for an invalid number format (NaN, infinity, not a number, an integer
+    beyond the REAL range)."""
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
         return None
-    x = float(value)
+    try:
+        x = float(value)
+    except (OverflowError, ValueError, TypeError):
+        return None
+    return x if math.isfinite(x) else None
+
+
+def as_number(value: Any) -> float | None:
+    """Like ``as_real``, but a number beyond the REAL range (a Python int such as 10**400) is +-inf, so
+    that the range check of the input (e.g. > 1.0E12) names it; NaN, infinity and non-numbers: None."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        return None
+    try:
+        x = float(value)
+    except OverflowError:
+        return math.inf if value > 0 else -math.inf
+    except (ValueError, TypeError):
+        return None
     return x if math.isfinite(x) else None
 
 
@@ -86,7 +109,8 @@ class Instruction:
             return
         for name in inputs:
             if name not in self.INPUTS:
-                raise TypeError(f"{type(self).__name__} has no input {name!r}; inputs: {', '.join(self.INPUTS)}")
+                raise ProgramError(f"{type(self).__name__} has no input {name!r}; "
+                                   f"inputs: {', '.join(self.INPUTS)}")
 
     def __setattr__(self, name: str, value: Any) -> None:
         if name in self.OUTPUTS:
@@ -98,8 +122,46 @@ class Instruction:
 
     def __call__(self, **inputs: Any) -> "Instruction":
         self._set_inputs(inputs)
-        self._evaluate()
+        try:
+            self._evaluate()
+        except ProgramError:
+            raise
+        except Exception as exc:       # a defect behind the instruction never reaches the user program
+            self._internal_failure(exc)
         return self
+
+    def _internal_failure(self, exc: Exception) -> None:
+        """An unexpected exception while the instruction ran: the axis it works on is stopped with the
+        internal-error alarm (16#8FFF, S7-1200 V6 §12.8 / S7-1500 'internal error') and the instruction
+        shows the dialect's internal-error ErrorID."""
+        from .kernel import faults as F
+        fault = F.alarm(F.INTERNAL, "", F.Reaction.REMOVE_ENABLE, f"{type(exc).__name__}: {exc}")
+        object.__setattr__(self, "_internal_fault", fault)
+        for name in ("Axis", "Slave", "Master"):
+            to = self.__dict__.get(name)
+            handler = getattr(to, "_internal_error", None)
+            if callable(handler):
+                try:
+                    handler(exc)
+                except Exception:  # noqa: BLE001 - the axis is stopped as far as it can be
+                    pass
+                break
+        try:
+            error_id, error_info = self._fault_codes(fault)
+        except Exception:  # noqa: BLE001
+            error_id, error_info = 0x8FFF, 0
+        self._show_internal(error_id, error_info)
+
+    def _show_internal(self, error_id: int, error_info: int) -> None:
+        values: dict[str, Any] = {name: default for name, default in self.OUTPUTS.items()
+                                  if isinstance(default, bool)}
+        if "Error" in self.OUTPUTS:
+            values["Error"] = True
+        if "ErrorID" in self.OUTPUTS:
+            values["ErrorID"] = error_id
+        if "ErrorInfo" in self.OUTPUTS:
+            values["ErrorInfo"] = error_info
+        self._out(**values)
 
     def _evaluate(self) -> None:  # pragma: no cover - abstract
         raise NotImplementedError
@@ -198,6 +260,15 @@ class ExecuteInstruction(Instruction):
         for name, default in self.OUTPUTS.items():
             object.__setattr__(self, name, default)
 
+    def _show_internal(self, error_id: int, error_info: int) -> None:
+        job = self._job
+        if job is not None and job.busy:
+            job.finish(JobState.ERROR, self.__dict__.get("_internal_fault"))
+        object.__setattr__(self, "_job", None)
+        self._end("Error", error_id, error_info)
+        object.__setattr__(self, "_shown", True)
+        self._show("Error", error_id, error_info)
+
     def _set_busy(self, busy: bool) -> None:
         if "Busy" in self.OUTPUTS:
             self._out(Busy=busy)
@@ -290,6 +361,15 @@ class JogInstruction(Instruction):
     def _clear(self) -> None:
         for name, default in self.OUTPUTS.items():
             object.__setattr__(self, name, default)
+
+    def _show_internal(self, error_id: int, error_info: int) -> None:
+        job = self._job
+        if job is not None and job.busy:
+            job.finish(JobState.ERROR, self.__dict__.get("_internal_fault"))
+        object.__setattr__(self, "_job", None)
+        self._clear()
+        self._fail(error_id, error_info, bool(self._prev_f or self._prev_b))
+        self._update(bool(self._prev_f or self._prev_b))
 
     def _fail(self, error_id: int, error_info: int, held: bool) -> None:
         object.__setattr__(self, "_final", ("Error", error_id, error_info))

@@ -660,7 +660,8 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
                                  p, v, a, lim, self.motion.planner)
         return job.position
 
-    def _plan_job(self, job: Job, t: float, spec: Job | None = None, *, new_command: bool = True) -> bool:
+    def _plan_job(self, job: Job, t: float, spec: Job | None = None, *, new_command: bool = True,
+                  replan: bool = False) -> bool:
         """Plan and start the motion of ``job`` (or of ``spec``, a command table step run by ``job``).
 
         A new command on a PTO axis starts at the next segment boundary (V7 PTOSliceTime).  Faults found
@@ -669,7 +670,7 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
         t_plan = self._slice_start(t) if new_command else t
         p, v, a = self._state_at(t_plan)
         try:
-            plan = self.motion.plan(spec or job, t_plan, p, v, a)
+            plan = self.motion.plan(spec or job, t_plan, p, v, a, replan=replan)
         except DirectionFault as exc:
             self.raise_alarm(F.alarm(F.DIRECTION, exc.detail, Reaction.STOP), job=job)
             return False
@@ -710,7 +711,7 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
         if job is not None and job.busy and job.kind in (JobKind.HOME_ACTIVE, JobKind.TABLE):
             return                                          # homing and tables plan their own steps
         if job is not None and job.busy and job.kind in MOTION_KINDS and self._interpolating:
-            self._plan_job(job, t)
+            self._plan_job(job, t, replan=True)
         elif self.sw_limits_effective() and self.state in (ENABLED, DISABLING):
             p, v, a = self._state_now()
             if abs(v) > 1e-12:

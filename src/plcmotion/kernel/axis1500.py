@@ -187,7 +187,7 @@ class PositioningAxis1500(SuperimposedMixin, LeadingValueMixin, PositioningAxis)
         if job is not None and job.busy and job.kind in (JobKind.VELOCITY, JobKind.JOG) and not self._interpolating \
                 and not job.jog_released:
             job.in_velocity = False
-            self._plan_job(job, self.now)
+            self._plan_job(job, self.now, replan=True)
         else:
             super()._replan()
         self._renote_limits(job, before)
@@ -298,7 +298,7 @@ class PositioningAxis1500(SuperimposedMixin, LeadingValueMixin, PositioningAxis)
             return
         if stop_mode == 2:
             lim = self._max_dynamics()
-            plan_profile = self.motion.planner.stop(t, p, v, a, lim)
+            plan_profile = self.motion.stop_with(t, p, v, a, lim)
             self._start_profile(plan_profile)
         else:
             plan = self.motion.stop(t, p, v, a, emergency=True, jerk=False)

@@ -110,7 +110,8 @@ class ConfigMixin:
         reason, norm = param.check(value)
         if reason == "type":
             raise TypeError(f"{self.name}.{path}: {value!r} is not a {param.kind.upper()} value")
-        self.cfg[path] = norm if reason is None else (float(value) if param.kind == P.REAL else value)
+        # an invalid value is stored and becomes the tag's configuration error when it takes effect
+        self.cfg[path] = norm if reason is None or param.kind == P.REAL else value
         self._dirty.add(path)
         if not self.pto:
             self.ctl._dirty_axes.add(self)

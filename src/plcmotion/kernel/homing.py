@@ -227,7 +227,7 @@ class HomingMixin:
         p, v, a = self._state_now()
         lim = self._homing_limits()
         profile = (self.motion.planner.velocity(t, p, v, a, velocity, lim) if velocity != 0.0
-                   else self.motion.planner.stop(t, p, v, a, lim))
+                   else self.motion.stop_with(t, p, v, a, lim))
         self._interpolating = True
         self._start_profile(profile)
 
@@ -377,7 +377,7 @@ class HomingMixin:
             self._start_profile(self.motion.planner.position(t, p, v, a, target, lim))
         else:
             job.extra["phase"] = "stop"
-            self._start_profile(self.motion.planner.stop(t, p, v, a, self._homing_limits()))
+            self._start_profile(self.motion.stop_with(t, p, v, a, self._homing_limits()))
         self._interpolating = True
 
     # --- passive homing ------------------------------------------------------------------------------------

@@ -5,12 +5,13 @@ coordinates), never per cycle.
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from .jobs import Job, JobKind
-from .profiles import INF, Limits, Planner, Profile, ReversalRequired, first_time_at_velocity
+from .profiles import INF, Limits, Planner, PlanningError, Profile, ReversalRequired, first_time_at_velocity
 
 if TYPE_CHECKING:  # pragma: no cover
     from .axis import PositioningAxis
@@ -86,7 +87,12 @@ def limits(axis: "PositioningAxis", velocity: float | None = None, *, emergency:
         j = jmax_lim
         limited.append("jerk")
     return Limits(velocity=v, acceleration=acc, deceleration=dec, jerk=j if jerk else INF,
-                  start_stop=e["DynamicLimits.MinVelocity"] if axis.pto else 0.0, limited=tuple(limited))
+                  start_stop=e["DynamicLimits.MinVelocity"] if axis.pto else 0.0, limited=tuple(limited),
+                  max_velocity=vmax)
+
+
+def _strict(lim: Limits, on: bool) -> Limits:
+    return dataclasses.replace(lim, strict=True) if on else lim
 
 
 def max_dynamics(axis: "PositioningAxis") -> Limits:
@@ -169,12 +175,14 @@ class MotionPlanner:
             raise DirectionFault("not_permitted")
 
     # --- job plans --------------------------------------------------------------------------------------
-    def plan(self, job: Job, t: float, p: float, v: float, a: float) -> Plan:
+    def plan(self, job: Job, t: float, p: float, v: float, a: float, *, replan: bool = False) -> Plan:
+        """Plan ``job`` from the state (p, v, a) at ``t``; ``replan``: the running job anew with changed
+        dynamics (S7-1200 V6 §12.9.11 code 10), which must not leave the job's velocity bounds either."""
         ax = self.axis
         kind = job.kind
         pl = self.planner
         if kind in (JobKind.ABSOLUTE, JobKind.RELATIVE):
-            lim = limits(ax, ax.commanded_velocity(job.velocity), job=job)
+            lim = _strict(limits(ax, ax.commanded_velocity(job.velocity), job=job), replan)
             self.last_limits = lim
             target = job.target
             if lim.velocity <= 0.0:                  # velocity override 0 %: wait at standstill
@@ -191,7 +199,7 @@ class MotionPlanner:
             return self._guard(Plan(profile), t, p, v, a, lim, cruise=abs(job.velocity))
         if kind in (JobKind.VELOCITY, JobKind.JOG):
             target_v = 0.0 if job.jog_released else ax.commanded_velocity(job.velocity)
-            lim = limits(ax, None, job=job)
+            lim = _strict(limits(ax, None, job=job), replan)
             self.last_limits = lim
             if abs(target_v) > lim.velocity:
                 target_v = math.copysign(lim.velocity, target_v)
@@ -201,7 +209,7 @@ class MotionPlanner:
             plan = self._guard(Plan(profile, reach_time=profile.t_end), t, p, v, a, lim, cruise=abs(target_v))
             return plan
         if kind in (JobKind.HALT, JobKind.STOP):
-            lim = max_dynamics(ax) if job.extra.get("max_dynamics") else limits(ax, None, job=job)
+            lim = _strict(max_dynamics(ax) if job.extra.get("max_dynamics") else limits(ax, None, job=job), replan)
             self.last_limits = lim
             return self._guard(Plan(pl.stop(t, p, v, a, lim)), t, p, v, a, lim, cruise=abs(v))
         raise ValueError(f"no motion plan for {kind}")
@@ -216,8 +224,19 @@ class MotionPlanner:
             lim = limits(ax, None, emergency=True, jerk=False)
         else:
             lim = limits(ax, None, emergency=emergency, jerk=jerk)
-            profile = self.planner.stop(t, p, v, a, lim)
-        return self._guard(Plan(profile), t, p, v, a, lim, cruise=abs(v))
+            profile = self.stop_with(t, p, v, a, lim)
+        try:
+            return self._guard(Plan(profile), t, p, v, a, lim, cruise=abs(v))
+        except (PlanningError, DirectionFault):
+            return Plan(profile)
+
+    def stop_with(self, t: float, p: float, v: float, a: float, lim: Limits) -> Profile:
+        """A stop with the dynamics ``lim`` that always gives a profile: where even the closed-form
+        fallback of the planner fails, the emergency ramp without jerk (§12.8) stops the axis."""
+        try:
+            return self.planner.stop(t, p, v, a, lim)
+        except PlanningError:
+            return _ramp_stop(t, p, v, self.axis.eff["DynamicDefaults.EmergencyDeceleration"], lim.start_stop)
 
     def ramp_out(self, t: float, p: float, v: float, duration: float) -> Plan:
         """Linear velocity ramp to zero in ``duration`` (PTO immediate stop, §11.1.1)."""

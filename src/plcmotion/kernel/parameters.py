@@ -77,8 +77,8 @@ class Param:
                 return "type", value
             try:
                 value = float(value)
-            except OverflowError:                # an int beyond the LREAL range (10**400)
-                return ("too_high" if value > 0 else "too_low"), value
+            except OverflowError:                # an int beyond the LREAL range (10**400): held as +-inf
+                return ("too_high", math.inf) if value > 0 else ("too_low", -math.inf)
             if not math.isfinite(value):
                 return "format", value
         if self.choices is not None and value not in self.choices:

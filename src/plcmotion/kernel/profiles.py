@@ -11,6 +11,15 @@ in the other direction with the acceleration.  Within one direction the signed l
 
 Stepper (PTO) profiles start and end with a velocity step between 0 and the start/stop velocity
 (S7-1200 V6 §5.4.4.4, §12.6): the ramp is planned from and to the start/stop velocity.
+
+Re-planning from a moving state with new dynamics (S7-1200 V6 §11.1.10, §12.9.11 effective code 10: a
+changed Acceleration/Jerk acts from the next servo cycle) can start with an acceleration that the new
+jerk cannot take back in time: reducing 500 mm/s² with a jerk of 40 mm/s³ takes 12.5 s, during which
+the velocity runs far past every limit (ruckig's brake pre-trajectory only respects the jerk).  Such a
+start state is first *settled*: the acceleration is brought to zero with the smallest jerk that keeps the
+velocity within the job's bounds (at least the configured jerk; an acceleration step when even that is
+too late).  A state the new jerk can absorb within the velocity limit is planned unchanged.  When ruckig
+gives up numerically, closed-form jerk-limited ramps take over, so that planning always gives a profile.
 """
 from __future__ import annotations
 
@@ -18,6 +27,8 @@ import math
 from dataclasses import dataclass, field
 
 import ruckig
+
+from .profile_fallback import closed_form
 
 INF = math.inf
 _EPS_V = 1e-9
@@ -80,6 +91,12 @@ class Limits:
     jerk: float = INF               # INF: jerk limit disabled (trapezoid)
     start_stop: float = 0.0         # PTO start/stop velocity
     limited: tuple[str, ...] = ()   # commanded values cut to the dynamic limits (S7-1500 alarms 501-504)
+    max_velocity: float = 0.0       # velocity limit of the axis (0: ``velocity``), never to be exceeded
+    strict: bool = False            # re-plan of a running job: its own velocity bounds are hard too
+
+    @property
+    def hard_velocity(self) -> float:
+        return self.max_velocity or self.velocity
 
 
 class _Builder:
@@ -151,8 +168,10 @@ class Planner:
         if result not in (ruckig.Result.Working, ruckig.Result.Finished):
             if target_p is not None and self._solve_long(b, target_p, target_v, vmax, amax, amin, jerk):
                 return
-            raise PlanningError(f"ruckig: {result!r} for p={b.p!r} v={b.v!r} a={b.a!r} -> "
-                                f"p={target_p!r} v={target_v!r} (vmax={vmax}, a=[{amin}, {amax}], j={jerk})")
+            if not closed_form(b, target_p, target_v, vmax, amax, amin, jerk):
+                raise PlanningError(f"ruckig: {result!r} for p={b.p!r} v={b.v!r} a={b.a!r} -> "
+                                    f"p={target_p!r} v={target_v!r} (vmax={vmax}, a=[{amin}, {amax}], j={jerk})")
+            return
         prof = self._traj.profiles[0][0]
         brake = prof.brake
         if brake.duration > 0.0:
@@ -249,6 +268,68 @@ class Planner:
         return lim.deceleration, -lim.acceleration
 
     # --- building blocks ----------------------------------------------------------------------------
+    @staticmethod
+    def _settle(b: _Builder, lim: Limits, sign: float, lo: float, hi: float) -> None:
+        """Take back an acceleration the jerk of ``lim`` cannot absorb within the velocity limits.
+
+        Speeds are counted in direction ``sign``.  Reducing the builder's acceleration to zero with the
+        jerk limit ends at speed ``u0``; when ``u0`` stays between standstill (no reversal) and the axis's
+        velocity limit -- for a re-plan of the running job (``lim.strict``) between ``lo`` and ``hi`` --
+        the state is left to ruckig as it is: the overshoot of a new command's velocity that the jerk
+        limit makes unavoidable is ordinary.  Otherwise the acceleration is brought to
+        zero with the smallest jerk (at least the configured one) that ends within [``lo``, ``hi``] --
+        the bounds of the job (its velocity, the target velocity) -- or stepped to zero when the speed is
+        already at the bound.
+        """
+        jerk = lim.jerk
+        alpha = sign * b.a
+        if jerk == INF or abs(alpha) <= 1e-12:
+            return
+        u = sign * b.v
+        hard = max(hi if lim.strict else lim.hard_velocity, u)
+        floor = min(lo, u) if lim.strict else 0.0
+        u0 = u + alpha * abs(alpha) / (2.0 * jerk)
+        tol = 1e-9 * max(1.0, hard)
+        if floor - tol <= u0 <= hard + tol:
+            return
+        bound = max(hi, u) if alpha > 0 else min(lo, u)
+        room = abs(bound - u)
+        if room > 1e-12 * max(1.0, hard):
+            j2 = max(jerk, alpha * alpha / (2.0 * room))
+            b.add(abs(alpha) / j2, b.p, b.v, b.a, -math.copysign(j2, b.a))
+            b.v = sign * bound
+        b.a = 0.0
+
+    def _settle_before(self, b: _Builder, lim: Limits, sign: float, target: float) -> None:
+        """Settle (see ``_settle``) for a positioning: at most to the job's velocity, and only as fast as
+        still lets the new dynamics stop before ``target`` (found by bisection; the stop point moves
+        out with the speed the settling ends at)."""
+        def settled(hi: float) -> _Builder:
+            c = _Builder(b.t, b.p, b.v, b.a)
+            self._settle(c, lim, sign, 0.0, hi)
+            return c
+
+        def short(c: _Builder) -> bool:
+            return (target - self.stop_position(c.p, c.v, c.a, lim)) * sign >= -1e-12 * max(1.0, abs(target))
+
+        c = settled(lim.velocity)
+        if c.a == b.a:
+            return                                   # the new jerk absorbs the acceleration
+        u = sign * b.v
+        if lim.velocity > u and not short(c):
+            lo, hi = u, lim.velocity
+            for _ in range(60):
+                mid = 0.5 * (lo + hi)
+                if short(settled(mid)):
+                    lo = mid
+                else:
+                    hi = mid
+                if hi - lo <= 1e-9 * max(1.0, hi):
+                    break
+            c = settled(lo)
+        b.segments.extend(c.segments)
+        b.t, b.p, b.v, b.a = c.t, c.p, c.v, c.a
+
     def _brake_to_standstill(self, b: _Builder, lim: Limits) -> None:
         """Slow down to zero velocity (stepper: to the start/stop velocity, then step to zero)."""
         vss = lim.start_stop
@@ -257,6 +338,10 @@ class Planner:
             b.jump(0.0)
             return
         sign = math.copysign(1.0, b.v if abs(b.v) > _EPS_V else b.a)
+        self._settle(b, lim, sign, 0.0, abs(b.v))
+        if abs(b.v) <= max(_EPS_V, vss) and abs(b.a) <= 1e-12:
+            b.jump(0.0)
+            return
         amax, amin = self._signed_limits(sign, lim)
         self._solve(b, target_p=None, target_v=sign * vss if abs(b.v) > vss else 0.0, vmax=abs(b.v),
                     amax=amax, amin=amin, jerk=lim.jerk)
@@ -282,6 +367,9 @@ class Planner:
         vss = lim.start_stop
         if vss and abs(v) <= vss * (1 + 1e-9):
             b.jump(0.0)                     # a stepper at its start/stop velocity stops at once
+        if lim.jerk < INF and abs(b.a) > 1e-12:
+            way = b.v if abs(b.v) > _EPS_V else target - b.p
+            self._settle_before(b, lim, 1.0 if way >= 0 else -1.0, target)
         moving = abs(b.v) > _EPS_V or (lim.jerk < INF and abs(b.a) > 1e-12)
         if moving:
             sign = math.copysign(1.0, b.v if abs(b.v) > _EPS_V else b.a)
@@ -390,6 +478,8 @@ class Planner:
                 b.jump(math.copysign(lim.start_stop, target_v))
         sign = 1.0 if target_v > 0 else -1.0
         amax, amin = self._signed_limits(sign, lim)
+        u, ut = sign * b.v, abs(target_v)
+        self._settle(b, lim, sign, min(u, ut), max(u, ut))
         if abs(b.v - target_v) > 1e-12 or (lim.jerk < INF and abs(b.a) > 1e-12):
             self._solve(b, target_p=None, target_v=target_v, vmax=abs(target_v), amax=amax, amin=amin,
                         jerk=lim.jerk)

@@ -569,7 +569,10 @@ class Controller:
                 dirty = sorted(self._dirty_axes, key=lambda ax: ax.index)
                 self._dirty_axes.clear()
                 for axis in dirty:
-                    axis._apply_dirty("servo")
+                    try:
+                        axis._apply_dirty("servo")
+                    except Exception as exc:      # a re-plan with the new values failed: 16#8FFF, stopped
+                        axis._internal_error(exc)
             due = b.next_event <= t + _EPS_T
             if due.any():
                 for i in np.flatnonzero(due):

@@ -159,7 +159,7 @@ class TableMixin:
         p, v, a = self._state_at(t)
         if job.extra["took_over"] and abs(v) > 1e-12:
             job.extra["phase"] = "final_stop"
-            self._start_profile(self.motion.planner.stop(t, p, v, a, limits(self)))
+            self._start_profile(self.motion.stop_with(t, p, v, a, limits(self)))
             self._interpolating = True
             return
         self._finish_job(job, JobState.DONE, t)

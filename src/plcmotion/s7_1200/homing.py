@@ -6,14 +6,16 @@ from typing import Any
 from ..kernel.jobs import Job, JobKind
 from .. import fb
 from . import errors as E
+from ..fb import as_number
 from .base import ExecuteInstruction, InstructionError, as_int, as_real
 
 POSITION_LIMIT = 1.0e12
 
 
 def check_position(value: Any, error_id: int = E.POSITION) -> float:
-    """A position/distance input: number format and the +-1E12 range (§12.8 16#8400/16#8401)."""
-    x = as_real(value)
+    """A position/distance input: number format and the +-1E12 range (§12.8 16#8400/16#8401); an
+    integer beyond the REAL range is out of that range."""
+    x = as_number(value)
     if x is None:
         raise InstructionError(error_id, E.INVALID_FORMAT)
     if x > POSITION_LIMIT:

@@ -6,6 +6,7 @@ aborts the running motion command of the axis, and is aborted by the next one.
 """
 from __future__ import annotations
 
+import math
 from typing import Any
 
 from ..kernel.axis import PositioningAxis
@@ -18,7 +19,7 @@ from .homing import check_position
 
 def check_velocity(axis: PositioningAxis, value: Any, *, negative_ok: bool = False, zero_ok: bool = False) -> float:
     """Velocity input: start/stop velocity <= |Velocity| <= maximum velocity (§12.8 16#8402)."""
-    v = as_real(value)
+    v = fb.as_number(value)
     if v is None:
         raise InstructionError(E.VELOCITY, E.INVALID_FORMAT)
     if v < 0 and not negative_ok:
@@ -97,12 +98,14 @@ class MC_MoveVelocity(ExecuteInstruction):  # noqa: N801
         controlled = as_bool(self, "PositionControlled", self.PositionControlled)
         signed = 0.0
         if not current:
-            v = as_real(self.Velocity)
+            v = fb.as_number(self.Velocity)
             if v is None:
                 raise InstructionError(E.VELOCITY, E.INVALID_FORMAT)
             direction = as_int(self.Direction)
             if direction not in (0, 1, 2):
                 raise InstructionError(E.DIRECTION, E.INVALID_SELECTION)
+            if math.isinf(v):                        # an integer beyond the REAL range
+                raise InstructionError(E.VELOCITY, E.ABOVE_MAX_VELOCITY)
             check_velocity(axis, abs(v), zero_ok=True)
             signed = v if direction == 0 else abs(v) if direction == 1 else -abs(v)
         job = Job(JobKind.VELOCITY, velocity=signed, current=current, position_controlled=controlled or axis.pto,

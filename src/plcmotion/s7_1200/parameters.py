@@ -75,6 +75,7 @@ from ..kernel.jobs import Job, JobKind, JobState
 from ..kernel.parameters import E12
 from ..kernel.tags import TagRef
 from . import errors as E
+from ..fb import ProgramError, as_number
 from .base import ExecuteInstruction, Instruction, InstructionError, as_bool
 from .variables import Variable, plain, type_of
 
@@ -116,8 +117,8 @@ def _check_time(value: Any, error_id: int) -> float:
     """A time input of MC_ChangeDynamic: a number, > 0, <= 1.0E12 (§12.8, V7 16#0005)."""
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
         raise InstructionError(error_id, E.INVALID_FORMAT)   # not a REAL (base.as_real would parse "5")
-    x = float(value)
-    if not math.isfinite(x):
+    x = as_number(value)                     # an integer beyond the REAL range counts as > 1.0E12
+    if x is None:
         raise InstructionError(error_id, E.INVALID_FORMAT)
     if x <= 0.0:
         raise InstructionError(error_id, E.NOT_POSITIVE)
@@ -190,13 +191,15 @@ def _tag_ref(fb: Instruction) -> TagRef:
     return ref
 
 
-def _check_real_value(value: float) -> None:
-    if not math.isfinite(value):
+def _check_real_value(value: Any) -> float:
+    value = as_number(value)                 # a number beyond the REAL range is above 1.0E12
+    if value is None:
         raise InstructionError(VALUE, E.INVALID_FORMAT)
     if value > E12:
         raise InstructionError(VALUE, E.ABOVE_1E12)
     if value < -E12:
         raise InstructionError(VALUE, E.BELOW_MINUS_1E12)
+    return value
 
 
 class MC_WriteParam(ExecuteInstruction):  # noqa: N801
@@ -219,9 +222,11 @@ class MC_WriteParam(ExecuteInstruction):  # noqa: N801
         value_type = type_of(self.Value)
         if value_type is None or value_type != ref.data_type:
             raise InstructionError(PARAMETER, DATA_TYPE_MISMATCH)
-        value = plain(self.Value)
         if value_type == "Real":
-            _check_real_value(value)
+            raw = self.Value.value if isinstance(self.Value, Variable) else self.Value
+            value = _check_real_value(raw)
+        else:
+            value = plain(self.Value)
         if ref.access == "WP" and axis.state != "disabled":
             raise InstructionError(PARAMETER, NOT_DISABLED)
         try:
@@ -260,7 +265,7 @@ class MC_ReadParam(Instruction):  # noqa: N801
             return                                   # error shown until Enable goes FALSE
         target = self.Value
         if not isinstance(target, Variable):
-            raise TypeError(f"MC_ReadParam.Value is an InOut VARIANT: give a typed variable "
+            raise ProgramError(f"MC_ReadParam.Value is an InOut VARIANT: give a typed variable "
                             f"(plcmotion.s7_1200.variables Bool/Int/DInt/UDInt/Real), not {target!r}")
         try:
             ref = _tag_ref(self)

@@ -21,6 +21,7 @@ an integer outside the range of the data type raises ``ValueError``.  ``Real`` h
 """
 from __future__ import annotations
 
+import math
 import numbers
 from typing import Any, ClassVar
 
@@ -140,7 +141,10 @@ class Real(Variable):
     def _check(self, new: Any) -> float:
         if isinstance(new, (bool, np.bool_)) or not isinstance(new, numbers.Real):
             raise TypeError(f"a Real variable takes a number, not {new!r}")
-        return float(new)
+        try:
+            return float(new)
+        except OverflowError:
+            raise ValueError(f"{new} is outside the range of Real") from None
 
     def __float__(self) -> float:
         return self._value
@@ -176,4 +180,7 @@ def plain(value: Any) -> Any:
         return bool(value)
     if isinstance(value, numbers.Integral):
         return int(value)
-    return float(value)
+    try:
+        return float(value)
+    except OverflowError:              # beyond the REAL range: the value checks report it as too large
+        return math.inf if value > 0 else -math.inf

@@ -25,7 +25,7 @@ from .jobs import Job, JobKind, JobState
 from .leading import setpoint_at
 from .motion import limits
 from .profiles import INF, Planner, PlanningError, Profile
-from .sync import APPENDING, CAM, GEAR, ONCE, Coupling, CouplingCycle, quintic
+from .sync import APPENDING, CAM, GEAR, LV_LIMIT, ONCE, Coupling, CouplingCycle, quintic
 from .sync_modifiers import SyncModifiersMixin
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -34,6 +34,10 @@ if TYPE_CHECKING:  # pragma: no cover
 _EPS = 1e-12
 COUPLING_TYPES = ("setpoint", "actual", "delayed")
 SETPOINTS = ("setpoint", "cascade")      # coupling to the setpoint (cascade: ahead at a proxy, §8.1.3)
+
+
+class LeadingValueInvalid(ValueError):
+    """The leading value of a coupling is not a number (or absurdly large): its job cannot go on."""
 
 
 class SynchronousMixin(SyncModifiersMixin):
@@ -133,6 +137,8 @@ class SynchronousMixin(SyncModifiersMixin):
         add = self.lv_additive
         if add is not None:
             p, v, a = p + add[0], v + add[1], a + add[2]
+        if not abs(p) + abs(v) + abs(a) <= LV_LIMIT:
+            raise LeadingValueInvalid(f"leading value of {getattr(source, 'name', source)} is ({p!r}, {v!r}, {a!r})")
         return p, v, a
 
     # --- the current state of the following axis -------------------------------------------------------
@@ -150,7 +156,41 @@ class SynchronousMixin(SyncModifiersMixin):
 
     # --- job entry ---------------------------------------------------------------------------------------
     def sync_submit(self: "Axis", job: Job) -> None:
-        """Start MC_GearIn, MC_GearInPos, MC_CamIn or a phasing job."""
+        """Start MC_GearIn, MC_GearInPos, MC_CamIn or a phasing job.  Whatever goes wrong inside ends
+        the job with an error (never an exception out of the instruction, never Busy forever)."""
+        try:
+            self._sync_submit(job)
+        except Exception as exc:
+            c = next((c for c in (self.waiting, self.coupling) if c is not None and c.job is job), None)
+            self._sync_failure(c if c is not None else Coupling(self, None, job), exc)
+
+    def _sync_failure(self: "Axis", c: Coupling, exc: Exception) -> None:
+        """A synchronous job failed in the kernel: it ends with Error - 16#8FFF for an internal error,
+        the alarm of an invalid leading value otherwise - and the axis gets the technology alarm."""
+        t = self.now
+        job = c.job
+        if isinstance(exc, LeadingValueInvalid):
+            alarm = F.alarm(F.LV_INVALID, str(getattr(c.source, "name", "")), Reaction.STOP, str(exc))
+            own = alarm
+        else:
+            import traceback
+
+            self.last_internal_error = "".join(traceback.format_exception(exc))
+            alarm = F.alarm(F.INTERNAL, "", Reaction.REMOVE_ENABLE, f"{type(exc).__name__}: {exc}")
+            own = F.reject(F.INTERNAL, "", f"{type(exc).__name__}: {exc}")
+        try:
+            if c is self.coupling:
+                self._end_coupling(c, JobState.ERROR, t, replan=True, fault=own)
+            else:
+                if c is self.waiting:
+                    self.waiting = None
+                self.ctl.sync.remove(c)
+                self._finish_coupling_job(c, JobState.ERROR, t, own)
+        finally:
+            job.finish(JobState.ERROR, own)          # whatever happened above, the job has ended
+            self.raise_alarm(alarm)
+
+    def _sync_submit(self: "Axis", job: Job) -> None:
         t = self.now
         if job.kind in (JobKind.GEAR_IN_POS, JobKind.CAM_IN, JobKind.PHASING) and not self.ctl.family_t:
             job.finish(JobState.ERROR, F.reject(F.NOT_AVAILABLE, job.kind.value))
@@ -486,8 +526,11 @@ class SynchronousMixin(SyncModifiersMixin):
         y, dy, ddy = law(c, x, 1.0, 0.0)                       # law and its derivatives in x
         law_delta = law(c, x_end, 0.0, 0.0)[0] - y
         length = x_end - x
-        if abs(length) <= _EPS:
-            length = math.copysign(_EPS, c.direction)
+        if length * c.direction <= 1e-12 * max(1.0, abs(x_end)):
+            # no leading value distance left (MasterStartDistance 0, or the synchronous position passed
+            # in the servo cycle that started the synchronization): synchronous at once (decision 19)
+            self._synchronous_at_once(c, t, x, p - y, x_end)
+            return
         if abs(xv) > 1e-9:
             sx = v / xv
             sxx = (a - sx * xa) / (xv * xv)
@@ -513,6 +556,18 @@ class SynchronousMixin(SyncModifiersMixin):
             c.extra["inside"] = self._cam_inside(c, x)
         self._couple(c, t, Planner.hold(t, 0.0))
 
+    def _synchronous_at_once(self: "Axis", c: Coupling, t: float, x: float, e0: float, x_end: float) -> None:
+        """Synchronous in this servo cycle at the leading value ``x``: the following axis takes the
+        synchronous operation function (of the nearest revolution in SyncDirection) at once."""
+        k = self._revolutions(c, e0, 0.0)[0]
+        self._shift_law(c, k)
+        c.blend = None
+        c.job.in_sync = True
+        c.extra["sync_x"] = x_end
+        if c.law == CAM:
+            c.extra["inside"] = self._cam_inside(c, x)
+        self._couple(c, t, Planner.hold(t, 0.0))
+
     def _stroke_in_revolutions(self: "Axis", c: Coupling) -> bool:
         """Does one cam cycle move the following axis by a whole, non-zero number of modulo lengths?
         The positions at the cam's end and start are then the same (cross cutter, rotary knife)."""
@@ -529,21 +584,27 @@ class SynchronousMixin(SyncModifiersMixin):
 
     def _revolutions(self: "Axis", c: Coupling, e0: float, law_delta: float) -> list[int]:
         """Candidate revolutions k (the following axis's synchronous position shifted by k modulo
-        lengths), best first: the smallest correction that keeps the net travel in ``SyncDirection``."""
+        lengths), best first: the smallest corrections ``e0 - k * length`` whose net travel of the
+        following axis, ``law_delta - (e0 - k * length)``, keeps to ``SyncDirection`` (1 not negative,
+        2 not positive, 3 any; decision 17).  Never empty: the allowed k form a half-open range whatever
+        the leading value travels during the synchronization (many revolutions of a short modulo axis)."""
         length = self._modulo_length()
         if not length:
             return [0]
         direction = c.job.extra.get("sync_direction", 3)
-        base = round(e0 / length)
-        ks = [base + d for d in (0, -1, 1)]
-        # shortest correction; of two equally short ones the one travelling with the leading value
-        ks.sort(key=lambda k: (abs(e0 - k * length), -(law_delta - (e0 - k * length)) * (1 if law_delta >= 0 else -1)))
-        if direction == 1:
-            ks = sorted((k for k in range(base - 3, base + 4) if law_delta - (e0 - k * length) >= -1e-9),
-                        key=lambda k: law_delta - (e0 - k * length))
-        elif direction == 2:
-            ks = sorted((k for k in range(base - 3, base + 4) if law_delta - (e0 - k * length) <= 1e-9),
-                        key=lambda k: -(law_delta - (e0 - k * length)))
+        best = round(e0 / length)
+        tol = 1e-9 * max(1.0, abs(law_delta), abs(e0))
+        if direction == 1:          # travel >= 0  <=>  k >= (e0 - law_delta) / length
+            lo = math.ceil((e0 - law_delta - tol) / length)
+            ks = list(range(max(best - 1, lo), max(best - 1, lo) + 4))
+        elif direction == 2:        # travel <= 0  <=>  k <= (e0 - law_delta) / length
+            hi = math.floor((e0 - law_delta + tol) / length)
+            ks = list(range(min(best + 1, hi) - 3, min(best + 1, hi) + 1))
+        else:
+            ks = [best - 1, best, best + 1]
+        # the smallest correction; of two equally small ones the one travelling with the leading value
+        ks.sort(key=lambda k: (abs(e0 - k * length),
+                               -(law_delta - (e0 - k * length)) * (1 if law_delta >= 0 else -1)))
         return ks[:3]
 
     def _monotonic(self: "Axis", c: Coupling, coef, x0: float, length: float, law_delta: float) -> bool:
@@ -595,11 +656,12 @@ class SynchronousMixin(SyncModifiersMixin):
         old = self.coupling
         if old is not None and old is not c:
             self._end_coupling(old, JobState.ABORTED, t, replan=False)
+        lv = self._lv_now(c.source, c.mode, t)
+        c.lv = lv                    # what an invalid leading value is replaced with (carried forward)
         if c.law == CAM and c.cam is not None:
             c.cam.acquire(c.job)
             if c.app_mode != ONCE:
-                x = self._lv_now(c.source, c.mode, t)[0]
-                u = (x - c.master_offset) / c.master_scaling
+                u = (lv[0] - c.master_offset) / c.master_scaling
                 c.cam_cycle = math.floor((u - c.curve.start) / c.curve.length)
         self.coupling = c
         self._watch_sw_limits()
@@ -636,7 +698,11 @@ class SynchronousMixin(SyncModifiersMixin):
 
     def _sync_event(self: "Axis", kind: str, c: Coupling, arg: Any, t: float) -> None:
         """Events of the sync stage (called inside the servo cycle)."""
-        if kind == "trigger":
+        if kind == "lv_invalid":
+            if c is self.coupling or c is self.waiting:
+                self._sync_failure(c, LeadingValueInvalid(
+                    f"leading value of {getattr(c.source, 'name', c.source)} is not a valid number"))
+        elif kind == "trigger":
             self._trigger(c, t)
         elif kind == "poll":
             if c is self.waiting:

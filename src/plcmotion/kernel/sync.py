@@ -437,8 +437,10 @@ class SyncStage:
             xv = xv + (ph[2] + tau * (ph[3] + 0.5 * tau * ph[4]))
             xa = xa + (ph[3] + tau * ph[4])
         dt = self.ctl.servo_cycle
-        bad = ~(np.abs(x) + np.abs(xv) + np.abs(xa) <= LV_LIMIT)       # NaN, inf or absurd
-        if bad.any():
+        ok = np.abs(x) + np.abs(xv) + np.abs(xa) <= LV_LIMIT           # not NaN, inf or absurd
+        bad = None
+        if not ok.all():
+            bad = ~ok
             x, xv, xa = _carried(lv.xe, bad, x, xv, xa, dt)
         lv.xe[0], lv.xe[1], lv.xe[2] = x, xv, xa
         y = lv.ratio * x + lv.offset
@@ -454,6 +456,8 @@ class SyncStage:
             r = (u - start) * lv.inv_clength
             countable = np.abs(r) < _CYCLE_LIMIT
             if not countable.all():
+                if bad is None:
+                    bad = np.zeros(len(x), dtype=bool)
                 bad[ci[~countable]] = True
                 r = np.where(countable, r, 0.0)
             cyc = np.floor(r).astype(np.int64)
@@ -506,8 +510,10 @@ class SyncStage:
             if done.any():
                 for k in np.flatnonzero(done):
                     events.append(("blend_end", lv.couplings[bi[k]], None))
-        bad |= ~np.isfinite(y + yv + ya)
-        any_bad = bool(bad.any())
+        finite = np.isfinite(y + yv + ya)
+        if not finite.all():
+            bad = ~finite if bad is None else bad | ~finite
+        any_bad = bad is not None
         if any_bad:
             y, yv, ya = _carried(np.array(lv.y_last), bad, y, yv, ya, dt)
             if not np.isfinite(y + yv + ya).all():        # nothing finite to carry forward: stand

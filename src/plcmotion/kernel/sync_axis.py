@@ -27,6 +27,7 @@ from .motion import limits
 from .profiles import INF, Planner, PlanningError, Profile
 from .sync import APPENDING, CAM, GEAR, LV_LIMIT, ONCE, Coupling, CouplingCycle, quintic
 from .sync_modifiers import SyncModifiersMixin
+from .sync_revolutions import RevolutionsMixin
 
 if TYPE_CHECKING:  # pragma: no cover
     from .axis1500 import PositioningAxis1500 as Axis
@@ -40,7 +41,7 @@ class LeadingValueInvalid(ValueError):
     """The leading value of a coupling is not a number (or absurdly large): its job cannot go on."""
 
 
-class SynchronousMixin(SyncModifiersMixin):
+class SynchronousMixin(RevolutionsMixin, SyncModifiersMixin):
     """Following axis behaviour, mixed into the S7-1500 synchronous axis."""
 
     def _sync_init(self: "Axis", leading_values) -> None:
@@ -492,15 +493,6 @@ class SynchronousMixin(SyncModifiersMixin):
         c.extra["sync_x"] = c.job.extra["sync_u"]
         self._couple(c, t, rel)
 
-    def _slave_correction(self: "Axis", c: Coupling, e0: float, law_delta: float, shift_law: bool = False) -> float:
-        """Position error to remove during a synchronization over time; on a modulo following axis the
-        revolution of the synchronous position follows ``SyncDirection`` (1 positive, 2 negative,
-        3 shortest)."""
-        k = self._revolutions(c, e0, law_delta)[0]
-        if shift_law:
-            self._shift_law(c, k)
-        return e0 - k * self._modulo_length()
-
     def _activate_direct(self: "Axis", c: Coupling, t: float) -> None:
         """CamIn SyncProfileReference 2: InSync at once at the present positions (§5.4.4)."""
         x, xv, xa = self._lv_now(c.source, c.mode, t)
@@ -567,63 +559,6 @@ class SynchronousMixin(SyncModifiersMixin):
         if c.law == CAM:
             c.extra["inside"] = self._cam_inside(c, x)
         self._couple(c, t, Planner.hold(t, 0.0))
-
-    def _stroke_in_revolutions(self: "Axis", c: Coupling) -> bool:
-        """Does one cam cycle move the following axis by a whole, non-zero number of modulo lengths?
-        The positions at the cam's end and start are then the same (cross cutter, rotary knife)."""
-        length = self._modulo_length()
-        curve = c.curve
-        if not length or curve is None:
-            return False
-        stroke = (float(curve.value(curve.end)) - float(curve.value(curve.start))) * c.slave_scaling
-        turns = round(stroke / length)
-        return turns != 0 and abs(stroke - turns * length) <= 1e-9 * max(1.0, abs(stroke))
-
-    def _modulo_length(self: "Axis") -> float:
-        return self.eff["Modulo.Length"] if self.eff["Modulo.Enable"] else 0.0
-
-    def _revolutions(self: "Axis", c: Coupling, e0: float, law_delta: float) -> list[int]:
-        """Candidate revolutions k (the following axis's synchronous position shifted by k modulo
-        lengths), best first: the smallest corrections ``e0 - k * length`` whose net travel of the
-        following axis, ``law_delta - (e0 - k * length)``, keeps to ``SyncDirection`` (1 not negative,
-        2 not positive, 3 any; decision 17).  Never empty: the allowed k form a half-open range whatever
-        the leading value travels during the synchronization (many revolutions of a short modulo axis)."""
-        length = self._modulo_length()
-        if not length:
-            return [0]
-        direction = c.job.extra.get("sync_direction", 3)
-        best = round(e0 / length)
-        tol = 1e-9 * max(1.0, abs(law_delta), abs(e0))
-        if direction == 1:          # travel >= 0  <=>  k >= (e0 - law_delta) / length
-            lo = math.ceil((e0 - law_delta - tol) / length)
-            ks = list(range(max(best - 1, lo), max(best - 1, lo) + 4))
-        elif direction == 2:        # travel <= 0  <=>  k <= (e0 - law_delta) / length
-            hi = math.floor((e0 - law_delta + tol) / length)
-            ks = list(range(min(best + 1, hi) - 3, min(best + 1, hi) + 1))
-        else:
-            ks = [best - 1, best, best + 1]
-        # the smallest correction; of two equally small ones the one travelling with the leading value
-        ks.sort(key=lambda k: (abs(e0 - k * length),
-                               -(law_delta - (e0 - k * length)) * (1 if law_delta >= 0 else -1)))
-        return ks[:3]
-
-    def _monotonic(self: "Axis", c: Coupling, coef, x0: float, length: float, law_delta: float) -> bool:
-        """Does the following axis move in one direction only during the blend (sampled)?"""
-        sign = 1.0 if c.job.extra.get("sync_direction", 3) == 1 else -1.0
-        s = np.linspace(0.0, 1.0, 33)
-        e = coef[0] + s * (coef[1] + s * (coef[2] + s * (coef[3] + s * (coef[4] + s * coef[5]))))
-        law = self.ctl.sync.law_at
-        ys = np.array([law(c, x0 + si * length, 0.0, 0.0)[0] for si in s]) + e
-        step = np.diff(ys) * sign
-        return bool(np.all(step >= -1e-9 * max(1.0, float(np.max(np.abs(ys))))))
-
-    def _shift_law(self: "Axis", c: Coupling, k: int) -> None:
-        if k:
-            shift = k * self._modulo_length()
-            if c.law == GEAR:
-                c.offset += shift
-            else:
-                c.slave_offset += shift
 
     def _cam_inside(self: "Axis", c: Coupling, x: float) -> bool:
         u = (x - c.master_offset) / c.master_scaling

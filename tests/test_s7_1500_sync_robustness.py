@@ -155,3 +155,78 @@ def test_cam_in_with_its_defaults_is_synchronous_at_once_s9_1_5_1(moving):
         if r["in_sync"]:
             u = r["m"]
             assert r["s"] == pytest.approx(float(cam.curve.value(min(max(u, 0.0), 200.0))), abs=1e-6)
+
+
+from hypothesis import HealthCheck, given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=list(HealthCheck))
+@given(length=st.sampled_from([0.25, 1.0, 7.5, 360.0]), ratio=st.sampled_from([1, -1, 3, -2]),
+       v=st.sampled_from([50.0, -50.0]), spr=st.sampled_from([0, 1, 3]), direction=st.sampled_from([1, 2, 3]),
+       slave_sync=st.floats(-100.0, 100.0), distance=st.floats(1.0, 30.0), velocity=st.sampled_from([-1.0, 400.0]))
+def test_gear_in_pos_on_a_modulo_following_axis_always_ends_its_synchronization_defect4(
+        length, ratio, v, spr, direction, slave_sync, distance, velocity):
+    """Invariant (hypothesis): whatever the modulo length, gear ratio, direction of the leading axis,
+    SyncProfileReference and SyncDirection, MC_GearInPos synchronizes - or, with SyncProfileReference 0
+    whose dynamics cannot make it before the leading axis passes the synchronous position, waits for
+    the start position to be crossed again (§5.4.1) - never an exception or an internal error; the
+    setpoints stay finite; the net travel of the following axis up to the synchronous position keeps
+    to SyncDirection 1/2 (decision 17)."""
+    rig = Rig(slave_params=merge(VIRTUAL, modulo(length)))
+    mv, job = MC_MoveVelocity(), MC_GearInPos()
+    start = {"go": False, "msp": 0.0}
+    rig.steps.append(lambda: mv(Axis=rig.master, Execute=rig.enabled(), Velocity=v, Acceleration=1e4,
+                                Deceleration=1e4, Jerk=0.0))
+    rig.steps.append(lambda: job(Master=rig.master, Slave=rig.slave, Execute=start["go"], RatioNumerator=ratio,
+                                 MasterSyncPosition=start["msp"], SlaveSyncPosition=slave_sync,
+                                 SyncProfileReference=spr, MasterStartDistance=distance, SyncDirection=direction,
+                                 Velocity=velocity))
+    rig.record = lambda: dict(s=float(rig.ctl.bank.sp_p[rig.slave.index]), start=job.StartSync,
+                              m=float(rig.ctl.bank.sp_p[rig.master.index]), in_sync=job.InSync)
+    rig.run_until(lambda: mv.InVelocity, timeout=1.0)
+    start["msp"] = rig.master.Position + math.copysign(distance + 20.0, v)
+    start["go"] = True
+    passed = lambda: (rig.master.Position - start["msp"]) * v > 0.0          # noqa: E731
+    rig.run_until(lambda: job.InSync or job.Error or (spr == 0 and passed()), timeout=5.0)
+    rig.run(0.1)
+    assert rig.ctl.mode == "RUN" and all(math.isfinite(r["s"]) for r in rig.log)
+    if spr == 0 and not job.InSync:
+        # too close for the job's dynamics: it waits until the leading axis crosses the start position
+        # (§5.4.1) - on a linear leading axis when it comes back
+        assert job.Busy and not job.Error and not job.StartSync
+        assert rig.slave.StatusSynchronizedMotion.WaitingFunctionState == 2
+        return
+    assert job.InSync and not job.Error, hex(job.ErrorID)
+    i0 = next(i for i, r in enumerate(rig.log) if r["start"])
+    first = next(r for r in rig.log if r["in_sync"])
+    sync_m = start["msp"] + (math.copysign(distance, v) if spr == 3 else 0.0)
+    at_sync = first["s"] - ratio * (first["m"] - sync_m)        # the follower at the synchronous position
+    travel = at_sync - rig.log[max(i0 - 1, 0)]["s"]
+    if direction == 1:
+        assert travel >= -1e-6 * max(1.0, length)
+    elif direction == 2:
+        assert travel <= 1e-6 * max(1.0, length)
+
+
+def test_spr0_too_close_on_a_modulo_leading_axis_synchronizes_one_revolution_later_s4_3_1():
+    """§4.3/§5.4.1 (SyncProfileReference 0): a modulo leading axis too close to the synchronous position
+    for the job's dynamics passes it; the synchronization is then planned for its next occurrence, one
+    revolution later (it used to wait for ever for the position already passed)."""
+    rig = Rig(master_params=merge(VIRTUAL, modulo(360.0)))
+    mv, job = MC_MoveVelocity(), MC_GearInPos()
+    st = {"go": False, "msp": 0.0}
+    rig.steps.append(lambda: mv(Axis=rig.master, Execute=rig.enabled(), Velocity=360.0))
+    rig.steps.append(lambda: job(Master=rig.master, Slave=rig.slave, Execute=st["go"], SyncProfileReference=0,
+                                 MasterSyncPosition=st["msp"], SlaveSyncPosition=50.0, Velocity=500.0,
+                                 Acceleration=1000.0, Deceleration=1000.0, Jerk=0.0))
+    rig.record = lambda: dict(m=float(rig.ctl.bank.sp_p[rig.master.index]), in_sync=job.InSync)
+    rig.run_until(lambda: mv.InVelocity, timeout=2.0)
+    m0 = float(rig.ctl.bank.sp_p[rig.master.index])
+    st["msp"] = (rig.master.Position + 5.0) % 360.0          # 5 degrees ahead: too close at 360 deg/s
+    st["go"] = True
+    rig.run_until(lambda: job.InSync or job.Error, timeout=3.0)
+    assert job.InSync and not job.Error
+    first = next(r for r in rig.log if r["in_sync"])
+    assert first["m"] - m0 > 360.0                            # the next revolution
+    assert rig.slave.Position == pytest.approx(50.0 + (rig.master.Position - st["msp"]) % 360.0, abs=1e-6)

@@ -441,6 +441,9 @@ class SynchronousMixin(RevolutionsMixin, SyncModifiersMixin):
             return
         d = c.direction
         remaining = (c.job.extra["sync_u"] - x) * d
+        if remaining < 0.0:
+            self._sync_position_passed(c, t, x)
+            return
         speed = xv * d
         if speed <= _EPS:
             c.extra["armed"] = remaining > 0.0
@@ -458,6 +461,24 @@ class SynchronousMixin(RevolutionsMixin, SyncModifiersMixin):
             return                              # §5.4.1: the start position must be crossed first
         self._activate_dynamic(c, t, arrival)
 
+    def _sync_position_passed(self: "Axis", c: Coupling, t: float, x: float) -> None:
+        """SPR 0: the leading value passed the synchronous position before the synchronization could
+        start (too close for the job's dynamics).  The job goes on waiting (§5.4.1: the start position
+        must be crossed first): a modulo leading value meets the synchronous position again one
+        revolution later, a linear one when it comes back."""
+        c.extra["armed"] = False
+        if c.source.lv_modulo() is not None:
+            self._place(c, x, c.direction)
+            self.ctl.sync.changed()
+
+    @staticmethod
+    def _sync_velocity(job: Job, law_velocity: float) -> float:
+        """Velocity bound of a synchronization over time (decision 13): the job's Velocity, but never
+        below the synchronous velocity the following axis must reach (§4.3: the limits may be exceeded
+        by the leading axis's dynamics; a bound below it would make the synchronization impossible)."""
+        v = abs(law_velocity)
+        return job.velocity if v < job.velocity else 1.01 * v
+
     def _plan_dynamic_sync(self: "Axis", c: Coupling, t: float, x: float, xv: float, xa: float,
                            duration: float | None) -> Profile | None:
         """Offset to the synchronous operation function, planned with the job's dynamics (SPR 0)."""
@@ -465,7 +486,7 @@ class SynchronousMixin(RevolutionsMixin, SyncModifiersMixin):
         p, v, a = self.total_state_at(t)
         y, yv, ya = self.ctl.sync.law_at(c, x, xv, xa)
         e0 = self._slave_correction(c, p - y, self.ctl.sync.law_at(c, job.extra["sync_u"], 0.0, 0.0)[0] - y)
-        vmax = job.velocity
+        vmax = self._sync_velocity(job, yv)
         try:
             return self.motion.planner.free(t, e0, v - yv, a - ya, target_p=0.0, vmin=-vmax - yv, vmax=vmax - yv,
                                             amin=-job.deceleration, amax=job.acceleration,
@@ -481,7 +502,7 @@ class SynchronousMixin(RevolutionsMixin, SyncModifiersMixin):
         delta = self.ctl.sync.law_at(c, c.job.extra["sync_u"], 0.0, 0.0)[0] - y
         e0 = self._slave_correction(c, p - y, delta, shift_law=True)
         job = c.job
-        vmax = job.velocity
+        vmax = self._sync_velocity(job, yv)
         try:
             rel = self.motion.planner.free(t, e0, v - yv, a - ya, target_p=0.0, vmin=-vmax - yv, vmax=vmax - yv,
                                            amin=-job.deceleration, amax=job.acceleration,

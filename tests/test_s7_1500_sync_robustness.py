@@ -230,3 +230,22 @@ def test_spr0_too_close_on_a_modulo_leading_axis_synchronizes_one_revolution_lat
     first = next(r for r in rig.log if r["in_sync"])
     assert first["m"] - m0 > 360.0                            # the next revolution
     assert rig.slave.Position == pytest.approx(50.0 + (rig.master.Position - st["msp"]) % 360.0, abs=1e-6)
+
+
+@pytest.mark.parametrize("spr,msp", [(1, 200.0), (0, 200.0), (3, 200.0), (3, 180.0)])
+def test_cam_run_once_synchronized_at_or_past_its_end_ends_with_end_of_profile_s9_1_5_1(spr, msp):
+    """§9.1.5.1: with non-cyclic application InSync and Busy go FALSE when EndOfProfile is set.  A
+    synchronization that ends at the cam end (MasterSyncPosition = cam length) or beyond it (subsequent
+    synchronization over the end) used to leave MC_CamIn InSync and Busy for ever, the cam end already
+    behind: the end event came while the following axis was still synchronizing."""
+    rig = Rig()
+    cam = rig.ctl.add_cam("Cam", points=[(0, 0), (100, 50), (200, 0)], interpolation_mode=1)
+    ic, mv, ci = MC_InterpolateCam(), MC_MoveVelocity(), MC_CamIn()
+    rig.steps.append(lambda: ic(Cam=cam, Execute=True))
+    rig.steps.append(lambda: mv(Axis=rig.master, Execute=ic.Done, Velocity=100.0))
+    rig.steps.append(lambda: ci(Master=rig.master, Slave=rig.slave, Cam=cam, Execute=ic.Done, SyncProfileReference=spr,
+                                MasterSyncPosition=msp, MasterStartDistance=50.0, MasterOffset=60.0))
+    rig.run_until(lambda: ci.EndOfProfile or ci.Error or rig.master.Position > 500.0, timeout=6.0)
+    assert ci.EndOfProfile and not ci.Busy and not ci.InSync and not ci.Error
+    assert rig.master.Position < 60.0 + 200.0 + (50.0 if spr == 3 else 0.0) + 100.0 * 0.012
+    assert rig.slave.Position == pytest.approx(0.0, abs=1e-3)          # the cam's end value

@@ -580,6 +580,20 @@ class SynchronousMixin(RevolutionsMixin, SyncModifiersMixin):
         if c.law == CAM:
             c.extra["inside"] = self._cam_inside(c, x)
         self._couple(c, t, Planner.hold(t, 0.0))
+        self._end_if_cam_over(c, t)
+
+    def _end_if_cam_over(self: "Axis", c: Coupling, t: float) -> None:
+        """A cam run once whose end the leading value has reached or passed by the time the following
+        axis is synchronous (the synchronization ended at or beyond the cam end): the camming is over at
+        once - EndOfProfile, Busy and InSync FALSE (§9.1.5.1) - not Busy for ever on a cam end already
+        left behind."""
+        if c.law != CAM or c.app_mode != ONCE or c is not self.coupling or not c.job.in_sync:
+            return
+        x, xv, _ = self._lv_now(c.source, c.mode, t)
+        u, uv = (x - c.master_offset) / c.master_scaling, xv / c.master_scaling
+        curve = c.curve
+        if (uv > 0.0 and u >= curve.end) or (uv < 0.0 and u <= curve.start):
+            self._cam_end(c, t)
 
     def _cam_inside(self: "Axis", c: Coupling, x: float) -> bool:
         u = (x - c.master_offset) / c.master_scaling
@@ -651,6 +665,7 @@ class SynchronousMixin(RevolutionsMixin, SyncModifiersMixin):
         c.job.in_sync = True
         self.ctl.sync.changed()
         self._start_profile(Planner.hold(t, 0.0))
+        self._end_if_cam_over(c, t)
 
     def _sync_event(self: "Axis", kind: str, c: Coupling, arg: Any, t: float) -> None:
         """Events of the sync stage (called inside the servo cycle)."""
@@ -668,6 +683,7 @@ class SynchronousMixin(RevolutionsMixin, SyncModifiersMixin):
                 c.blend = None
                 c.job.in_sync = True
                 self.ctl.sync.changed()
+                self._end_if_cam_over(c, t)
         elif kind == "cam_wrap":
             if c is self.coupling:
                 # EndOfProfile reports a cam end passed in synchronous operation: the cycle boundary

@@ -328,7 +328,9 @@ def _spline(g: _Gap, bc_left, bc_right, periodic_trend: bool = False):
         if len(x) == 2:
             spline = None
         else:
-            spline = CubicSpline(x, y - m * (x - x[0]), bc_type="periodic")
+            yd = y - m * (x - x[0])
+            yd[-1] = yd[0]            # equal by construction; rounding must not fail scipy's periodic check
+            spline = CubicSpline(x, yd, bc_type="periodic")
         return spline, m
     return CubicSpline(x, y, bc_type=(bc_left, bc_right)), 0.0
 
@@ -344,6 +346,7 @@ def _pieces_spline(g: _Gap, periodic_trend: bool = False) -> tuple[list[float], 
     for k in range(len(x) - 1):
         c = np.zeros(_DEG)
         c[:4] = spline.c[::-1, k]                   # scipy: highest power first
+        c[0] += m * (x[k] - x[0])                   # the trend taken out for the periodic spline, back in
         c[1] += m
         bp.append(x[k])
         cs.append(c)
@@ -430,8 +433,25 @@ def interpolate(points: Sequence[tuple[float, float]], segments: Sequence[Segmen
     """Close the gaps between points and segments (MC_InterpolateCam, §5.1, §9.2.1).
 
     ``points`` and ``segments`` are the valid ones in the order they were entered (index order).
-    Raises CamDefinitionError for definitions that cannot be interpolated.
+    Raises CamDefinitionError for definitions that cannot be interpolated - never anything else: a
+    numerical failure (an ill-conditioned spline, values beyond the float range) is one too.
     """
+    try:
+        with np.errstate(all="ignore"):
+            curve = _interpolate(points, segments, mode, boundary)
+    except CamDefinitionError:
+        raise
+    except (ValueError, ArithmeticError, np.linalg.LinAlgError) as exc:
+        raise CamDefinitionError("numeric", f"the cam cannot be interpolated: {exc}") from exc
+    if not (np.isfinite(curve.c).all() and np.isfinite(curve.bp).all()
+            and np.isfinite(curve._d2).all() and np.isfinite(curve.sin_phase).all()):
+        raise CamDefinitionError("numeric", "the interpolated cam exceeds the number range (points too close "
+                                            "together for their values)")
+    return curve
+
+
+def _interpolate(points: Sequence[tuple[float, float]], segments: Sequence[SegmentDef],
+                 mode: int, boundary: int) -> CamCurve:
     if mode not in (LINEAR, CUBIC_SPLINE, BEZIER):
         raise CamDefinitionError("mode", f"InterpolationMode {mode!r}: 0 linear, 1 cubic spline, 2 Bézier spline")
     if boundary not in (0, 1):

@@ -356,9 +356,20 @@ class CamTO:
         elif self.curve is None:
             job.finish(JobState.ERROR, F.reject(F.CAM_NOT_INTERPOLATED))
             return
-        self.ctl._defer(lambda t: self._process(job))
+        self.ctl._defer(lambda t: self._run(job))
+
+    def _run(self, job: Job) -> None:
+        """Process a queued job; a defect ends the job (16#8FFF), never the controller."""
+        try:
+            self._process(job)
+        except Exception as exc:
+            if job.kind == JobKind.CAM_INTERPOLATE:
+                self.in_interpolation = False
+            job.finish(JobState.ERROR, F.reject(F.INTERNAL, "", f"{type(exc).__name__}: {exc}"))
 
     def _process(self, job: Job) -> None:
+        """A job given in an earlier application cycle; what happened to the cam since (a restart, an
+        interpolation) counts: the state at processing time decides."""
         if not job.busy:
             return
         if job.kind == JobKind.CAM_INTERPOLATE:
@@ -378,7 +389,9 @@ class CamTO:
             job.finish(JobState.DONE)
             return
         curve = self.curve
-        assert curve is not None
+        if curve is None:                        # restarted (MC_Reset Restart) since the job was given
+            job.finish(JobState.ERROR, F.reject(F.CAM_NOT_INTERPOLATED))
+            return
         if job.kind == JobKind.CAM_FOLLOWING:
             x = job.position
             if not curve.start - 1e-12 * max(1.0, abs(curve.start)) <= x <= curve.end + 1e-12 * max(1.0, abs(curve.end)):
@@ -410,9 +423,12 @@ class CamTO:
         return None
 
     def restart(self) -> F.Fault | None:
-        """Restart (MC_Reset Restart = TRUE): start values again, not interpolated; not while in use."""
+        """Restart (MC_Reset Restart = TRUE): start values again, not interpolated; not while in use and
+        not during an interpolation (StatusWord.X6 InInterpolation)."""
         if self.users:
             return F.reject(F.CAM_IN_USE)
+        if self.in_interpolation:
+            return F.reject(F.RESTART_IMPOSSIBLE, "in_interpolation")
         self.reinitialize("restart")
         return None
 

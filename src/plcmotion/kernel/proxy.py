@@ -20,6 +20,7 @@ extrapolated and the followers keep moving (§8.2.3).
 from __future__ import annotations
 
 import math
+import numbers
 from collections import deque
 from typing import TYPE_CHECKING, Any, Callable, Mapping
 
@@ -101,8 +102,8 @@ class LeadingAxisProxy(AxisTagsMixin):
         self._reset()
 
     def _reset(self) -> None:
-        self.samples: deque[LeadingValueSample] = deque()
-        self.newest: LeadingValueSample | None = None
+        self.samples: deque[LeadingValueSample] = deque()      # usable telegrams only, oldest first
+        self.newest: LeadingValueSample | None = None          # the newest usable telegram
         self.value = (0.0, 0.0, 0.0)
         self.value_time = 0.0
         self.ahead = (0.0, 0.0, 0.0)       # the value for a virtual axis that provides it on (cascade)
@@ -111,6 +112,8 @@ class LeadingAxisProxy(AxisTagsMixin):
         self.sender_delay = 0.0            # the sender's local delay, from its newest telegram
         self.extrapolating_late = False
         self._last_valid_time: float | None = None
+        # sender time of the newest invalid telegram after the newest usable one (None: there is none)
+        self._bad_time: float | None = None
 
     def __repr__(self) -> str:
         return f"<LeadingAxisProxy {self.name} {'valid' if self.valid else 'invalid'}>"
@@ -120,13 +123,35 @@ class LeadingAxisProxy(AxisTagsMixin):
         self.source = source
 
     # --- each servo cycle ---------------------------------------------------------------------------------
-    def update(self, t: float) -> tuple[float, float, float]:
-        if self.source is not None:
-            for s in self.source.fetch(t - self.sender_delay):
-                if self.newest is None or s.time > self.newest.time:
+    def _receive(self, t: float) -> None:
+        """Take over the telegrams that arrived.  One that is flagged invalid or carries a value that is
+        not a finite number within the LREAL ranges of the proxy's tags (§A.3.2, §A.3.5) is an invalid
+        leading value: it starts the tolerance time and never reaches the followers (§8.1.2)."""
+        try:
+            arrived = self.source.fetch(t - self.sender_delay) if self.source is not None else ()
+            arrived = list(arrived)
+        except Exception:           # a broken transport is a communication error, not a controller STOP
+            arrived = []
+        newest = self.newest
+        for s in arrived:
+            when = _time_of(s)
+            if usable(s):
+                if newest is None or when > newest.time:
                     self.samples.append(s)
-                    self.newest = s
+                    newest = self.newest = s
                     self.sender_delay = s.delay
+                    self._last_valid_time = when
+                    if self._bad_time is not None and when > self._bad_time:
+                        self._bad_time = None
+                continue
+            # an invalid telegram: newer than the last usable one, or of unknown time (taken as now)
+            if when is None:
+                when = newest.time if newest is not None else -math.inf
+            if newest is None or when >= newest.time:
+                self._bad_time = when if self._bad_time is None else max(self._bad_time, when)
+
+    def update(self, t: float) -> tuple[float, float, float]:
+        self._receive(t)
         # the value the sender's delayed followers use now (§8.1.3)
         delay = self.sender_delay
         wanted = t - delay
@@ -138,22 +163,33 @@ class LeadingAxisProxy(AxisTagsMixin):
         if newest is None:
             self.valid = False
             self.value_time = t
+            if self._bad_time is not None and not self.alarms:
+                self._invalid(t)            # only invalid telegrams so far
             return self.value
         self.adjustment_time = wanted - newest.time
-        if newest.valid:
-            self._last_valid_time = newest.time
-        late = self._last_valid_time is None or wanted - self._last_valid_time > tolerance + 1e-12
-        self.extrapolating_late = self.adjustment_time > 0.0 and not late
+        last_valid = self._last_valid_time
+        assert last_valid is not None
+        late = wanted - last_valid > tolerance + 1e-12
+        # §A.3.6 StatusWord.X4: the value in use lies beyond the last valid telegram and an invalid one
+        # came after it - the tolerance time runs from here (the followers go on, extrapolated, §8.1.2)
+        invalid_now = self._bad_time is not None and wanted > last_valid
+        self.extrapolating_late = self.adjustment_time > 0.0 and not late and not invalid_now
         if late:
             if self.valid or not self.alarms:
                 self._invalid(t)
             self.valid = False
         else:
-            self.valid = newest.valid and not self.alarms
-        self.value = self._at(wanted)
+            self.valid = not invalid_now and not self.alarms
+        value = self._at(wanted)
+        if not _in_range(value):
+            # extrapolated beyond any sensible value (a long tolerance time): hold the last value
+            value = (self.value[0], 0.0, 0.0)
+            self.valid = False
+        self.value = value
         self.value_time = t
         if self._cascade_slot is not None:
-            self.ahead = self._at(wanted + self.cascade_delay)
+            ahead = self._at(wanted + self.cascade_delay)
+            self.ahead = ahead if _in_range(ahead) else (self.ahead[0], 0.0, 0.0)
         return self.value
 
     @property
@@ -173,8 +209,11 @@ class LeadingAxisProxy(AxisTagsMixin):
         assert newest is not None
         if wanted >= newest.time:
             dt = wanted - newest.time
-            return (newest.position + dt * (newest.velocity + 0.5 * dt * newest.acceleration),
-                    newest.velocity + dt * newest.acceleration, newest.acceleration)
+            p, v, a = newest.position, newest.velocity, newest.acceleration
+            if v * a < 0.0 and dt > -v / a:
+                # a braking leading value is extrapolated to its standstill, not into a reversal
+                return p - 0.5 * v * v / a, 0.0, 0.0
+            return p + dt * (v + 0.5 * dt * a), v + dt * a, a
         prev = None
         for sample in reversed(s):
             if sample.time <= wanted:
@@ -196,11 +235,15 @@ class LeadingAxisProxy(AxisTagsMixin):
         fault = F.alarm(F.LV_INVALID, "", Reaction.NONE, f"no valid leading value at {self.name}")
         if fault not in self.alarms:
             self.alarms.append(fault)
-        # the followers coupled to an invalid leading value are stopped
+        # the followers coupled to an invalid leading value are stopped - once this servo cycle's
+        # setpoints are complete, so that they brake from where they are
         stop = F.alarm(F.LV_INVALID, self.name, Reaction.STOP, f"leading value of {self.name} invalid")
-        for c in list(self.ctl.sync.couplings):
-            if c.source is self and not c.simulated:
-                c.follower.raise_alarm(stop)
+
+        def stop_followers(t: float) -> None:
+            for c in list(self.ctl.sync.couplings):
+                if c.source is self and not c.simulated:
+                    c.follower.raise_alarm(stop)
+        self.ctl.sync.after_couplings(stop_followers)
 
     # --- leading value source ------------------------------------------------------------------------------
     def lv_value(self, mode: str, t: float) -> tuple[float, float, float]:
@@ -248,7 +291,7 @@ class LeadingAxisProxy(AxisTagsMixin):
     # --- MC_Reset -----------------------------------------------------------------------------------------
     def acknowledge(self) -> Fault | None:
         """Acknowledge alarm 900 once valid leading values arrive again."""
-        if self.newest is not None and self.newest.valid and self._last_valid_time is not None and \
+        if self.newest is not None and self._bad_time is None and self._last_valid_time is not None and \
                 self.ctl.time - self.sender_delay - self._last_valid_time <= \
                 self.eff["Parameter.ToleranceTimeExternalLeadingValueInvalid"] + 1e-12:
             self.alarms.clear()
@@ -276,4 +319,39 @@ class LeadingAxisProxy(AxisTagsMixin):
         self.cfg[path] = norm
 
 
-__all__ = ["LeadingAxisProxy", "PROXY_SCHEMA"]
+#: value range of the proxy's LREAL tags (§A.3.5: -1.0E12 .. 1.0E12)
+LIMIT = 1.0e12
+
+
+def _finite(x: Any, limit: float = LIMIT) -> bool:
+    """A real number (not bool) within +/- ``limit``."""
+    if isinstance(x, bool) or not isinstance(x, numbers.Real):
+        return False
+    try:
+        return abs(float(x)) <= limit
+    except (TypeError, ValueError, OverflowError):
+        return False
+
+
+def _time_of(s: Any) -> float | None:
+    t = getattr(s, "time", None)
+    return float(t) if _finite(t) else None
+
+
+def usable(s: Any) -> bool:
+    """Can this telegram's value be used?  Flagged valid, a finite time and values within range."""
+    try:
+        return getattr(s, "valid", False) in (True, 1) and _time_of(s) is not None \
+            and all(_finite(getattr(s, f, None)) for f in ("position", "velocity", "acceleration",
+                                                          "modulo_start")) \
+            and _finite(s.modulo_length) and s.modulo_length >= 0.0 \
+            and _finite(s.delay) and s.delay >= 0.0
+    except Exception:
+        return False
+
+
+def _in_range(value: tuple[float, float, float]) -> bool:
+    return all(_finite(v) for v in value)
+
+
+__all__ = ["LeadingAxisProxy", "PROXY_SCHEMA", "usable"]

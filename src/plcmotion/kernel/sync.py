@@ -34,6 +34,10 @@ if TYPE_CHECKING:  # pragma: no cover
     from .runtime import Controller
 
 GEAR, CAM = 0, 1
+#: an effective leading value whose |position| + |velocity| + |acceleration| exceeds this (or is not a
+#: number) is invalid: positions are LREALs of -1.0E12 .. 1.0E12, plus additive value and phase shift
+LV_LIMIT = 1.0e14
+_CYCLE_LIMIT = 2.0 ** 52            # cam cycles beyond this cannot be counted exactly
 ONCE, CYCLIC, APPENDING = 0, 1, 2          # MC_CamIn.ApplicationMode
 
 
@@ -150,6 +154,13 @@ class _CamTable:
         return f, f1, f2
 
 
+def _carried(prev: np.ndarray, bad: np.ndarray, p: np.ndarray, v: np.ndarray, a: np.ndarray, dt: float):
+    """``p, v, a`` with the rows ``bad`` replaced by last cycle's values ``prev`` carried forward by dt."""
+    pp, pv, pa = prev[0], prev[1], prev[2]
+    return (np.where(bad, pp + dt * (pv + 0.5 * dt * pa), p), np.where(bad, pv + dt * pa, v),
+            np.where(bad, pa, a))
+
+
 def _horner(coef: np.ndarray, dx: np.ndarray) -> np.ndarray:
     y = coef[:, -1].copy()
     for i in range(coef.shape[1] - 2, -1, -1):
@@ -213,7 +224,11 @@ class _Level:
         self.wdir = np.array([c.direction for c in wl])
         self.wprev = np.array([c.extra.get("wprev", np.nan) for c in wl])
         self.poll = [c for c in couplings if c.waiting and c.poll]
-        self.xe = np.zeros((3, n))            # effective leading value of the last cycle
+        # effective leading value and synchronous operation function of the last cycle: what an invalid
+        # leading value is replaced with (carried forward) until its follower has been stopped
+        self.xe = np.array([c.lv for c in couplings], dtype=float).reshape(n, 3).T.copy()
+        y0 = np.array([c.extra.get("y", (0.0, 0.0, 0.0)) for c in couplings], dtype=float).reshape(n, 3).T
+        self.y_last = (y0[0].copy(), y0[1].copy(), y0[2].copy())
         for i, c in enumerate(couplings):
             c.slot = i
             self.set_additive(c)
@@ -245,12 +260,13 @@ class SyncStage:
         self._ext: list[Callable[[float], tuple[float, float, float]]] = []
         self.ext = np.zeros((3, 0))
         self._post: list[Callable[[float], None]] = []     # after the couplings (delayed values, outputs)
+        self._once: list[Callable[[float], None]] = []     # one-shot work after this cycle's couplings
         self.sw_limits = SwLimitWatch()                     # SW limit switches of coupled axes
         self.active = False
 
     def _update_active(self) -> None:
         #: anything to do in the servo cycle (read every cycle: kept as a plain attribute)
-        self.active = bool(self.couplings) or bool(self._ext) or bool(self._post)
+        self.active = bool(self.couplings) or bool(self._ext) or bool(self._post) or bool(self._once)
 
     # --- external leading values (actual values, delayed values, proxies) -------------------------------
     def register_ext(self, provider: Callable[[float], tuple[float, float, float]]) -> int:
@@ -259,6 +275,12 @@ class SyncStage:
         self.ext = np.zeros((3, len(self._ext)))
         self._update_active()
         return len(self._ext) - 1
+
+    def after_couplings(self, fn: Callable[[float], None]) -> None:
+        """Run ``fn(t)`` once, after the couplings of the present (or next) servo cycle, when the
+        setpoints of all coupled axes are complete: e.g. stopping followers from where they are."""
+        self._once.append(fn)
+        self.active = True
 
     def register_post(self, fn: Callable[[float], None]) -> None:
         if fn not in self._post:
@@ -329,8 +351,10 @@ class SyncStage:
                 c = lv.couplings[i]
                 c.cam_cycle = int(lv.prev_cycle[k])
                 c.extra["inside"] = bool(lv.prev_inside[k])
+            y, yv, ya = lv.y_last
             for c in lv.couplings:
                 c.lv = (float(lv.xe[0, c.slot]), float(lv.xe[1, c.slot]), float(lv.xe[2, c.slot]))
+                c.extra["y"] = (float(y[c.slot]), float(yv[c.slot]), float(ya[c.slot]))
 
     def effective_lv(self, c: Coupling) -> tuple[float, float, float]:
         """Effective leading value of the last servo cycle (StatusSynchronizedMotion.EffectiveLeadingValue)."""
@@ -378,6 +402,13 @@ class SyncStage:
             self._run_level(lv, b, t)
             if self._dirty:                   # an event changed the couplings: rebuild, go on
                 self._compile()
+        if self._once:
+            work, self._once = self._once, []
+            for fn in work:
+                fn(t)
+            self._update_active()
+            if self._dirty:
+                self._compile()
         for axis, side in self.sw_limits.check(b, self.ctl.servo_cycle):
             try:
                 axis._sw_limit_in_reach(side, t)
@@ -405,6 +436,12 @@ class SyncStage:
             x = x + (ph[1] + tau * (ph[2] + tau * (0.5 * ph[3] + tau * ph[4] / 6.0)))
             xv = xv + (ph[2] + tau * (ph[3] + 0.5 * tau * ph[4]))
             xa = xa + (ph[3] + tau * ph[4])
+        dt = self.ctl.servo_cycle
+        ok = np.abs(x) + np.abs(xv) + np.abs(xa) <= LV_LIMIT           # not NaN, inf or absurd
+        bad = None
+        if not ok.all():
+            bad = ~ok
+            x, xv, xa = _carried(lv.xe, bad, x, xv, xa, dt)
         lv.xe[0], lv.xe[1], lv.xe[2] = x, xv, xa
         y = lv.ratio * x + lv.offset
         yv = lv.ratio * xv
@@ -417,6 +454,12 @@ class SyncStage:
             ua = xa[ci] * lv.inv_mscale
             start, length = lv.cstart, lv.clength
             r = (u - start) * lv.inv_clength
+            countable = np.abs(r) < _CYCLE_LIMIT
+            if not countable.all():
+                if bad is None:
+                    bad = np.zeros(len(x), dtype=bool)
+                bad[ci[~countable]] = True
+                r = np.where(countable, r, 0.0)
             cyc = np.floor(r).astype(np.int64)
             # a leading value standing on a cam end is still inside; moving away past it, it has left
             inside = (((u > start) | ((u == start) & (uv >= 0.0)))
@@ -467,6 +510,15 @@ class SyncStage:
             if done.any():
                 for k in np.flatnonzero(done):
                     events.append(("blend_end", lv.couplings[bi[k]], None))
+        finite = np.isfinite(y + yv + ya)
+        if not finite.all():
+            bad = ~finite if bad is None else bad | ~finite
+        any_bad = bad is not None
+        if any_bad:
+            y, yv, ya = _carried(np.array(lv.y_last), bad, y, yv, ya, dt)
+            if not np.isfinite(y + yv + ya).all():        # nothing finite to carry forward: stand
+                y, yv, ya = (np.nan_to_num(v, nan=0.0, posinf=0.0, neginf=0.0) for v in (y, yv, ya))
+        lv.y_last = (y, yv, ya)
         ap = lv.apply
         f_idx = lv.fidx[ap]
         b.sp_p[f_idx] += y[ap]
@@ -482,11 +534,19 @@ class SyncStage:
                     events.append(("trigger", lv.couplings[wi[k]], None))
         for c in lv.poll:
             events.append(("poll", c, None))
+        if any_bad:
+            # the follower is stopped instead of following a leading value that is not a number
+            failed = {id(lv.couplings[k]) for k in np.flatnonzero(bad)}
+            events = [e for e in events if id(e[1]) not in failed]
+            events.extend(("lv_invalid", lv.couplings[k], None) for k in np.flatnonzero(bad))
         for kind, c, arg in events:
             try:
                 c.follower._sync_event(kind, c, arg, t)
-            except Exception as exc:   # isolate a defect to its axis
-                c.follower._internal_error(exc)
+            except Exception as exc:   # isolate a defect to its job and axis
+                try:
+                    c.follower._sync_failure(c, exc)
+                except Exception as exc2:
+                    c.follower._internal_error(exc2)
 
     # --- values for Python code -------------------------------------------------------------------------
     def law_at(self, c: Coupling, x: float, xv: float, xa: float) -> tuple[float, float, float]:

@@ -25,8 +25,9 @@ from .jobs import Job, JobKind, JobState
 from .leading import setpoint_at
 from .motion import limits
 from .profiles import INF, Planner, PlanningError, Profile
-from .sync import APPENDING, CAM, GEAR, ONCE, Coupling, CouplingCycle, quintic
+from .sync import APPENDING, CAM, GEAR, LV_LIMIT, ONCE, Coupling, CouplingCycle, quintic
 from .sync_modifiers import SyncModifiersMixin
+from .sync_revolutions import RevolutionsMixin
 
 if TYPE_CHECKING:  # pragma: no cover
     from .axis1500 import PositioningAxis1500 as Axis
@@ -36,7 +37,11 @@ COUPLING_TYPES = ("setpoint", "actual", "delayed")
 SETPOINTS = ("setpoint", "cascade")      # coupling to the setpoint (cascade: ahead at a proxy, §8.1.3)
 
 
-class SynchronousMixin(SyncModifiersMixin):
+class LeadingValueInvalid(ValueError):
+    """The leading value of a coupling is not a number (or absurdly large): its job cannot go on."""
+
+
+class SynchronousMixin(RevolutionsMixin, SyncModifiersMixin):
     """Following axis behaviour, mixed into the S7-1500 synchronous axis."""
 
     def _sync_init(self: "Axis", leading_values) -> None:
@@ -133,6 +138,8 @@ class SynchronousMixin(SyncModifiersMixin):
         add = self.lv_additive
         if add is not None:
             p, v, a = p + add[0], v + add[1], a + add[2]
+        if not abs(p) + abs(v) + abs(a) <= LV_LIMIT:
+            raise LeadingValueInvalid(f"leading value of {getattr(source, 'name', source)} is ({p!r}, {v!r}, {a!r})")
         return p, v, a
 
     # --- the current state of the following axis -------------------------------------------------------
@@ -150,7 +157,41 @@ class SynchronousMixin(SyncModifiersMixin):
 
     # --- job entry ---------------------------------------------------------------------------------------
     def sync_submit(self: "Axis", job: Job) -> None:
-        """Start MC_GearIn, MC_GearInPos, MC_CamIn or a phasing job."""
+        """Start MC_GearIn, MC_GearInPos, MC_CamIn or a phasing job.  Whatever goes wrong inside ends
+        the job with an error (never an exception out of the instruction, never Busy forever)."""
+        try:
+            self._sync_submit(job)
+        except Exception as exc:
+            c = next((c for c in (self.waiting, self.coupling) if c is not None and c.job is job), None)
+            self._sync_failure(c if c is not None else Coupling(self, None, job), exc)
+
+    def _sync_failure(self: "Axis", c: Coupling, exc: Exception) -> None:
+        """A synchronous job failed in the kernel: it ends with Error - 16#8FFF for an internal error,
+        the alarm of an invalid leading value otherwise - and the axis gets the technology alarm."""
+        t = self.now
+        job = c.job
+        if isinstance(exc, LeadingValueInvalid):
+            alarm = F.alarm(F.LV_INVALID, str(getattr(c.source, "name", "")), Reaction.STOP, str(exc))
+            own = alarm
+        else:
+            import traceback
+
+            self.last_internal_error = "".join(traceback.format_exception(exc))
+            alarm = F.alarm(F.INTERNAL, "", Reaction.REMOVE_ENABLE, f"{type(exc).__name__}: {exc}")
+            own = F.reject(F.INTERNAL, "", f"{type(exc).__name__}: {exc}")
+        try:
+            if c is self.coupling:
+                self._end_coupling(c, JobState.ERROR, t, replan=True, fault=own)
+            else:
+                if c is self.waiting:
+                    self.waiting = None
+                self.ctl.sync.remove(c)
+                self._finish_coupling_job(c, JobState.ERROR, t, own)
+        finally:
+            job.finish(JobState.ERROR, own)          # whatever happened above, the job has ended
+            self.raise_alarm(alarm)
+
+    def _sync_submit(self: "Axis", job: Job) -> None:
         t = self.now
         if job.kind in (JobKind.GEAR_IN_POS, JobKind.CAM_IN, JobKind.PHASING) and not self.ctl.family_t:
             job.finish(JobState.ERROR, F.reject(F.NOT_AVAILABLE, job.kind.value))
@@ -400,6 +441,9 @@ class SynchronousMixin(SyncModifiersMixin):
             return
         d = c.direction
         remaining = (c.job.extra["sync_u"] - x) * d
+        if remaining < 0.0:
+            self._sync_position_passed(c, t, x)
+            return
         speed = xv * d
         if speed <= _EPS:
             c.extra["armed"] = remaining > 0.0
@@ -417,6 +461,24 @@ class SynchronousMixin(SyncModifiersMixin):
             return                              # §5.4.1: the start position must be crossed first
         self._activate_dynamic(c, t, arrival)
 
+    def _sync_position_passed(self: "Axis", c: Coupling, t: float, x: float) -> None:
+        """SPR 0: the leading value passed the synchronous position before the synchronization could
+        start (too close for the job's dynamics).  The job goes on waiting (§5.4.1: the start position
+        must be crossed first): a modulo leading value meets the synchronous position again one
+        revolution later, a linear one when it comes back."""
+        c.extra["armed"] = False
+        if c.source.lv_modulo() is not None:
+            self._place(c, x, c.direction)
+            self.ctl.sync.changed()
+
+    @staticmethod
+    def _sync_velocity(job: Job, law_velocity: float) -> float:
+        """Velocity bound of a synchronization over time (decision 13): the job's Velocity, but never
+        below the synchronous velocity the following axis must reach (§4.3: the limits may be exceeded
+        by the leading axis's dynamics; a bound below it would make the synchronization impossible)."""
+        v = abs(law_velocity)
+        return job.velocity if v < job.velocity else 1.01 * v
+
     def _plan_dynamic_sync(self: "Axis", c: Coupling, t: float, x: float, xv: float, xa: float,
                            duration: float | None) -> Profile | None:
         """Offset to the synchronous operation function, planned with the job's dynamics (SPR 0)."""
@@ -424,7 +486,7 @@ class SynchronousMixin(SyncModifiersMixin):
         p, v, a = self.total_state_at(t)
         y, yv, ya = self.ctl.sync.law_at(c, x, xv, xa)
         e0 = self._slave_correction(c, p - y, self.ctl.sync.law_at(c, job.extra["sync_u"], 0.0, 0.0)[0] - y)
-        vmax = job.velocity
+        vmax = self._sync_velocity(job, yv)
         try:
             return self.motion.planner.free(t, e0, v - yv, a - ya, target_p=0.0, vmin=-vmax - yv, vmax=vmax - yv,
                                             amin=-job.deceleration, amax=job.acceleration,
@@ -440,7 +502,7 @@ class SynchronousMixin(SyncModifiersMixin):
         delta = self.ctl.sync.law_at(c, c.job.extra["sync_u"], 0.0, 0.0)[0] - y
         e0 = self._slave_correction(c, p - y, delta, shift_law=True)
         job = c.job
-        vmax = job.velocity
+        vmax = self._sync_velocity(job, yv)
         try:
             rel = self.motion.planner.free(t, e0, v - yv, a - ya, target_p=0.0, vmin=-vmax - yv, vmax=vmax - yv,
                                            amin=-job.deceleration, amax=job.acceleration,
@@ -451,15 +513,6 @@ class SynchronousMixin(SyncModifiersMixin):
         self._leave_waiting(c)
         c.extra["sync_x"] = c.job.extra["sync_u"]
         self._couple(c, t, rel)
-
-    def _slave_correction(self: "Axis", c: Coupling, e0: float, law_delta: float, shift_law: bool = False) -> float:
-        """Position error to remove during a synchronization over time; on a modulo following axis the
-        revolution of the synchronous position follows ``SyncDirection`` (1 positive, 2 negative,
-        3 shortest)."""
-        k = self._revolutions(c, e0, law_delta)[0]
-        if shift_law:
-            self._shift_law(c, k)
-        return e0 - k * self._modulo_length()
 
     def _activate_direct(self: "Axis", c: Coupling, t: float) -> None:
         """CamIn SyncProfileReference 2: InSync at once at the present positions (§5.4.4)."""
@@ -486,8 +539,11 @@ class SynchronousMixin(SyncModifiersMixin):
         y, dy, ddy = law(c, x, 1.0, 0.0)                       # law and its derivatives in x
         law_delta = law(c, x_end, 0.0, 0.0)[0] - y
         length = x_end - x
-        if abs(length) <= _EPS:
-            length = math.copysign(_EPS, c.direction)
+        if length * c.direction <= 1e-12 * max(1.0, abs(x_end)):
+            # no leading value distance left (MasterStartDistance 0, or the synchronous position passed
+            # in the servo cycle that started the synchronization): synchronous at once (decision 19)
+            self._synchronous_at_once(c, t, x, p - y, x_end)
+            return
         if abs(xv) > 1e-9:
             sx = v / xv
             sxx = (a - sx * xa) / (xv * xv)
@@ -513,56 +569,31 @@ class SynchronousMixin(SyncModifiersMixin):
             c.extra["inside"] = self._cam_inside(c, x)
         self._couple(c, t, Planner.hold(t, 0.0))
 
-    def _stroke_in_revolutions(self: "Axis", c: Coupling) -> bool:
-        """Does one cam cycle move the following axis by a whole, non-zero number of modulo lengths?
-        The positions at the cam's end and start are then the same (cross cutter, rotary knife)."""
-        length = self._modulo_length()
+    def _synchronous_at_once(self: "Axis", c: Coupling, t: float, x: float, e0: float, x_end: float) -> None:
+        """Synchronous in this servo cycle at the leading value ``x``: the following axis takes the
+        synchronous operation function (of the nearest revolution in SyncDirection) at once."""
+        k = self._revolutions(c, e0, 0.0)[0]
+        self._shift_law(c, k)
+        c.blend = None
+        c.job.in_sync = True
+        c.extra["sync_x"] = x_end
+        if c.law == CAM:
+            c.extra["inside"] = self._cam_inside(c, x)
+        self._couple(c, t, Planner.hold(t, 0.0))
+        self._end_if_cam_over(c, t)
+
+    def _end_if_cam_over(self: "Axis", c: Coupling, t: float) -> None:
+        """A cam run once whose end the leading value has reached or passed by the time the following
+        axis is synchronous (the synchronization ended at or beyond the cam end): the camming is over at
+        once - EndOfProfile, Busy and InSync FALSE (§9.1.5.1) - not Busy for ever on a cam end already
+        left behind."""
+        if c.law != CAM or c.app_mode != ONCE or c is not self.coupling or not c.job.in_sync:
+            return
+        x, xv, _ = self._lv_now(c.source, c.mode, t)
+        u, uv = (x - c.master_offset) / c.master_scaling, xv / c.master_scaling
         curve = c.curve
-        if not length or curve is None:
-            return False
-        stroke = (float(curve.value(curve.end)) - float(curve.value(curve.start))) * c.slave_scaling
-        turns = round(stroke / length)
-        return turns != 0 and abs(stroke - turns * length) <= 1e-9 * max(1.0, abs(stroke))
-
-    def _modulo_length(self: "Axis") -> float:
-        return self.eff["Modulo.Length"] if self.eff["Modulo.Enable"] else 0.0
-
-    def _revolutions(self: "Axis", c: Coupling, e0: float, law_delta: float) -> list[int]:
-        """Candidate revolutions k (the following axis's synchronous position shifted by k modulo
-        lengths), best first: the smallest correction that keeps the net travel in ``SyncDirection``."""
-        length = self._modulo_length()
-        if not length:
-            return [0]
-        direction = c.job.extra.get("sync_direction", 3)
-        base = round(e0 / length)
-        ks = [base + d for d in (0, -1, 1)]
-        # shortest correction; of two equally short ones the one travelling with the leading value
-        ks.sort(key=lambda k: (abs(e0 - k * length), -(law_delta - (e0 - k * length)) * (1 if law_delta >= 0 else -1)))
-        if direction == 1:
-            ks = sorted((k for k in range(base - 3, base + 4) if law_delta - (e0 - k * length) >= -1e-9),
-                        key=lambda k: law_delta - (e0 - k * length))
-        elif direction == 2:
-            ks = sorted((k for k in range(base - 3, base + 4) if law_delta - (e0 - k * length) <= 1e-9),
-                        key=lambda k: -(law_delta - (e0 - k * length)))
-        return ks[:3]
-
-    def _monotonic(self: "Axis", c: Coupling, coef, x0: float, length: float, law_delta: float) -> bool:
-        """Does the following axis move in one direction only during the blend (sampled)?"""
-        sign = 1.0 if c.job.extra.get("sync_direction", 3) == 1 else -1.0
-        s = np.linspace(0.0, 1.0, 33)
-        e = coef[0] + s * (coef[1] + s * (coef[2] + s * (coef[3] + s * (coef[4] + s * coef[5]))))
-        law = self.ctl.sync.law_at
-        ys = np.array([law(c, x0 + si * length, 0.0, 0.0)[0] for si in s]) + e
-        step = np.diff(ys) * sign
-        return bool(np.all(step >= -1e-9 * max(1.0, float(np.max(np.abs(ys))))))
-
-    def _shift_law(self: "Axis", c: Coupling, k: int) -> None:
-        if k:
-            shift = k * self._modulo_length()
-            if c.law == GEAR:
-                c.offset += shift
-            else:
-                c.slave_offset += shift
+        if (uv > 0.0 and u >= curve.end) or (uv < 0.0 and u <= curve.start):
+            self._cam_end(c, t)
 
     def _cam_inside(self: "Axis", c: Coupling, x: float) -> bool:
         u = (x - c.master_offset) / c.master_scaling
@@ -595,11 +626,12 @@ class SynchronousMixin(SyncModifiersMixin):
         old = self.coupling
         if old is not None and old is not c:
             self._end_coupling(old, JobState.ABORTED, t, replan=False)
+        lv = self._lv_now(c.source, c.mode, t)
+        c.lv = lv                    # what an invalid leading value is replaced with (carried forward)
         if c.law == CAM and c.cam is not None:
             c.cam.acquire(c.job)
             if c.app_mode != ONCE:
-                x = self._lv_now(c.source, c.mode, t)[0]
-                u = (x - c.master_offset) / c.master_scaling
+                u = (lv[0] - c.master_offset) / c.master_scaling
                 c.cam_cycle = math.floor((u - c.curve.start) / c.curve.length)
         self.coupling = c
         self._watch_sw_limits()
@@ -633,10 +665,15 @@ class SynchronousMixin(SyncModifiersMixin):
         c.job.in_sync = True
         self.ctl.sync.changed()
         self._start_profile(Planner.hold(t, 0.0))
+        self._end_if_cam_over(c, t)
 
     def _sync_event(self: "Axis", kind: str, c: Coupling, arg: Any, t: float) -> None:
         """Events of the sync stage (called inside the servo cycle)."""
-        if kind == "trigger":
+        if kind == "lv_invalid":
+            if c is self.coupling or c is self.waiting:
+                self._sync_failure(c, LeadingValueInvalid(
+                    f"leading value of {getattr(c.source, 'name', c.source)} is not a valid number"))
+        elif kind == "trigger":
             self._trigger(c, t)
         elif kind == "poll":
             if c is self.waiting:
@@ -646,6 +683,7 @@ class SynchronousMixin(SyncModifiersMixin):
                 c.blend = None
                 c.job.in_sync = True
                 self.ctl.sync.changed()
+                self._end_if_cam_over(c, t)
         elif kind == "cam_wrap":
             if c is self.coupling:
                 # EndOfProfile reports a cam end passed in synchronous operation: the cycle boundary

@@ -30,7 +30,17 @@ class _SyncInstruction(ExecuteInstruction):
     AXIS_TYPES: ClassVar[tuple[type, ...]] = (SynchronousAxis,)
 
     def _axis(self, name: str = "Slave") -> Any:
-        return super()._axis("Slave")
+        slave = super()._axis("Slave")
+        object.__setattr__(self, "_job_slave", slave)     # the job belongs to this axis until it ends
+        return slave
+
+    def _fault_codes(self, fault):
+        # a rejected job is noted at the axis it was given to, whatever the Slave input shows now
+        if not fault.ack:
+            note = getattr(getattr(self, "_job_slave", None), "note_rejected", None)
+            if note is not None:
+                note(fault)
+        return E.code(fault), 0
 
     def _master(self) -> Any:
         master = getattr(self, "Master", None)
@@ -195,13 +205,13 @@ class _Phasing(_SyncInstruction):
         dyn = dynamics(slave, self)
         job = Job(JobKind.PHASING, velocity=dyn["velocity"], acceleration=dyn["acceleration"],
                   deceleration=dyn["deceleration"], jerk=dyn["jerk"], owner=self,
-                  extra={"master": master, "shift": shift, "absolute": self.ABSOLUTE})
+                  extra={"master": master, "slave": slave, "shift": shift, "absolute": self.ABSOLUTE})
         self._out(**{self.PROGRESS: 0.0})
         slave.sync_submit(job)
         return job
 
     def _progress(self, job: Job) -> float:
-        slave = self.Slave
+        slave = job.extra["slave"]           # the axis the job started on (rewiring acts at the next edge)
         if self.ABSOLUTE:
             return slave.phase_shift()
         return slave.covered_phase_shift(job)
@@ -263,32 +273,34 @@ class MC_SynchronizedMotionSimulation(Instruction):  # noqa: N801
         super()._reinit()
         object.__setattr__(self, "_prev", False)
         object.__setattr__(self, "_sim", None)
+        object.__setattr__(self, "_sim_axis", None)
 
     def _evaluate(self) -> None:
         enable = as_bool(self, "Enable", self.Enable)
         rise = enable and not self._prev
         object.__setattr__(self, "_prev", enable)
-        try:
-            slave = self._axis("Slave")
-        except InstructionError as err:
-            self._out(InSimulation=False, Busy=False, Error=enable, ErrorID=err.error_id if enable else 0)
-            return
         job: Job | None = self._sim
-        if rise:
-            job = Job(JobKind.SYNC_SIMULATION, owner=self)
-            fault = slave.start_simulation(job)
-            if fault is not None:
-                object.__setattr__(self, "_sim", None)
-                self._out(InSimulation=False, Busy=False, Error=True, ErrorID=E.code(fault))
-                return
-            object.__setattr__(self, "_sim", job)
-        elif not enable and job is not None:
-            slave.end_simulation(job)
+        if job is not None and (rise or not enable):
+            # the simulation belongs to the axis it started on; a new Slave acts at the next rising edge
+            self._sim_axis.end_simulation(job)
             object.__setattr__(self, "_sim", None)
             job = None
         if not enable:
             self._out(InSimulation=False, Busy=False, Error=False, ErrorID=0)
             return
+        if rise:
+            try:
+                slave = self._axis("Slave")
+            except InstructionError as err:
+                self._out(InSimulation=False, Busy=False, Error=True, ErrorID=err.error_id)
+                return
+            job = Job(JobKind.SYNC_SIMULATION, owner=self)
+            fault = slave.start_simulation(job)
+            if fault is not None:
+                self._out(InSimulation=False, Busy=False, Error=True, ErrorID=E.code(fault))
+                return
+            object.__setattr__(self, "_sim", job)
+            object.__setattr__(self, "_sim_axis", slave)
         if job is None:
             return                                  # an earlier error stays shown while Enable is TRUE
         active = job.busy
@@ -307,44 +319,59 @@ class MC_LeadingValueAdditive(Instruction):  # noqa: N801
         super()._reinit()
         object.__setattr__(self, "_prev", False)
         object.__setattr__(self, "_add", None)
+        object.__setattr__(self, "_add_axis", None)
+
+    def _stop(self) -> None:
+        """End the additive value at the axis it was started on (not at whatever Axis shows now)."""
+        job: Job | None = self._add
+        if job is not None:
+            self._add_axis.end_lv_additive(job)
+        object.__setattr__(self, "_add", None)
+        object.__setattr__(self, "_add_axis", None)
+
+    def _values(self) -> list[float]:
+        values = []
+        for name in ("Position", "Velocity", "Acceleration"):
+            v = as_real(getattr(self, name))
+            if v is None or abs(v) > 1.0e12:
+                raise InstructionError(E.parameter(name))
+            values.append(v)
+        return values
 
     def _evaluate(self) -> None:
         enable = as_bool(self, "Enable", self.Enable)
         rise = enable and not self._prev
         object.__setattr__(self, "_prev", enable)
-        job: Job | None = self._add
+        if not enable or rise:
+            self._stop()
         if not enable:
-            if job is not None:
-                self.Axis.end_lv_additive(job)
-                object.__setattr__(self, "_add", None)
             self._out(Busy=False, Error=False, ErrorID=0)
             return
         try:
-            axis = self._axis()
-            values = []
-            for name in ("Position", "Velocity", "Acceleration"):
-                v = as_real(getattr(self, name))
-                if v is None or abs(v) > 1.0e12:
-                    raise InstructionError(E.parameter(name))
-                values.append(v)
+            if rise:
+                # the job belongs to the axis at Axis now; rewiring acts at the next rising edge
+                axis = self._axis()
+                values = self._values()
+                if not axis.ctl.family_t:
+                    raise InstructionError(E.T_ONLY)
+                object.__setattr__(self, "_add", Job(JobKind.LV_ADDITIVE, owner=self))
+                object.__setattr__(self, "_add_axis", axis)
+            elif self._add is None:
+                return                              # an earlier error stays shown while Enable is TRUE
+            else:
+                values = self._values()
         except InstructionError as err:
-            if job is not None and job.busy:
-                self.Axis.end_lv_additive(job)
-            object.__setattr__(self, "_add", None)
+            self._stop()
             self._out(Busy=False, Error=True, ErrorID=err.error_id)
             return
-        if rise:
-            if not axis.ctl.family_t:
-                self._out(Busy=False, Error=True, ErrorID=E.T_ONLY)
-                return
-            job = Job(JobKind.LV_ADDITIVE, owner=self)
-            object.__setattr__(self, "_add", job)
-        if job is None or not job.busy:
+        job: Job = self._add
+        if not job.busy:
             self._out(Busy=False)                   # ended by another job; a new Enable edge restarts
             return
-        fault = axis.set_lv_additive(job, *values)
+        fault = self._add_axis.set_lv_additive(job, *values)
         if fault is not None:
             object.__setattr__(self, "_add", None)
+            object.__setattr__(self, "_add_axis", None)
             self._out(Busy=False, Error=True, ErrorID=E.code(fault))
             return
         self._out(Busy=True, Error=False, ErrorID=0)

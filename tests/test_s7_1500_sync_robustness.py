@@ -249,3 +249,24 @@ def test_cam_run_once_synchronized_at_or_past_its_end_ends_with_end_of_profile_s
     assert ci.EndOfProfile and not ci.Busy and not ci.InSync and not ci.Error
     assert rig.master.Position < 60.0 + 200.0 + (50.0 if spr == 3 else 0.0) + 100.0 * 0.012
     assert rig.slave.Position == pytest.approx(0.0, abs=1e-3)          # the cam's end value
+
+
+def test_cam_in_with_a_denormal_master_scaling_ends_its_job_not_the_controller_issue8():
+    """MC_CamIn, cyclic (ApplicationMode 2), MasterScaling 1e-300: the scaled leading value lies ~1e300 cam
+    cycles away, which cannot be counted.  The job ends with an error, the controller stays in RUN and the
+    follower's setpoint stays finite (fuzz finding F9, issue 8)."""
+    ctl = Controller(servo_cycle=0.001, app_cycle=0.002, family="S7-1500T")
+    lead = ctl.add_positioning_axis("Lead", {"VirtualAxis.Mode": 1})
+    fol = ctl.add_synchronous_axis("Follower", {"Simulation.Mode": 1}, leading_values=["Lead"])
+    cam = ctl.add_cam("Cam_1", [(162.8, 60.0), (163.078, 80.4), (163.673, 56.1)])
+    p, ipo = MC_Power(Axis=fol, Enable=True), MC_InterpolateCam(Cam=cam)
+    c = MC_CamIn(Master=lead, Slave=fol, Cam=cam, MasterOffset=-1.4774834616323842, MasterScaling=1e-300,
+                 SyncProfileReference=4, ApplicationMode=2)
+    for k in range(20):
+        p()
+        ipo(Execute=k >= 1)
+        c(Execute=k >= 5)
+        ctl.step()
+        assert ctl.mode == "RUN", ctl.stop_reason
+        assert math.isfinite(fol.Position) and math.isfinite(fol.Velocity)
+    assert c.Error and not c.Busy and c.ErrorID != 0

@@ -25,7 +25,7 @@ from .jobs import Job, JobKind, JobState
 from .leading import setpoint_at
 from .motion import limits
 from .profiles import INF, Planner, PlanningError, Profile
-from .sync import APPENDING, CAM, GEAR, LV_LIMIT, ONCE, Coupling, CouplingCycle, quintic
+from .sync import _CYCLE_LIMIT, APPENDING, CAM, GEAR, LV_LIMIT, ONCE, Coupling, CouplingCycle, quintic
 from .sync_modifiers import SyncModifiersMixin
 from .sync_revolutions import RevolutionsMixin
 
@@ -632,7 +632,10 @@ class SynchronousMixin(RevolutionsMixin, SyncModifiersMixin):
             c.cam.acquire(c.job)
             if c.app_mode != ONCE:
                 u = (lv[0] - c.master_offset) / c.master_scaling
-                c.cam_cycle = math.floor((u - c.curve.start) / c.curve.length)
+                r = (u - c.curve.start) / c.curve.length
+                # a cycle count beyond exact integers (e.g. MasterScaling 1e-300) is not countable: the
+                # sync stage reports it as an invalid leading value and ends the job
+                c.cam_cycle = math.floor(r) if abs(r) < _CYCLE_LIMIT else 0
         self.coupling = c
         self._watch_sw_limits()
         c.waiting = c.poll = False

@@ -24,6 +24,9 @@ fail while the controller runs.  Shapes (docs/fault_injection.md)::
     # other actions, one per entry: load = { jump = 2.0, force = 20.0, blocked = true } (axis),
     # clear = "communication_loss" | "load" | "all" (axis), switch = "stuck_actuated" | "stuck_released" |
     # "chatter" | "repair" with input = "I0.2" (and period = 0.02 for chatter)
+
+Each entry has exactly one action and only the keys that action uses (``ACTION_KEYS``); any other key, a time
+outside [0, 1e12] s or a number beyond float range is a message with its key path.
 """
 from __future__ import annotations
 

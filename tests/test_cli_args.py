@@ -216,3 +216,14 @@ def test_defect7_check_of_an_endless_file_ends_with_the_size_limit(capsys):
     worker.join(10.0)
     assert result == [1], "check did not end within 10 s"
     assert "allowed: at most" in capsys.readouterr().err
+
+
+@pytest.mark.skipif(not Path("/proc/self").is_dir(), reason="needs Linux /proc")
+@pytest.mark.parametrize("option, name", [("--plot", "p.png"), ("--trace", "t.csv")])
+def test_defect10_output_into_a_folder_nobody_can_write_rejected_before_the_run(project, capsys, option, name):
+    """Defect 10 (review): as root os.access says any folder is writable, so --plot /proc/p.png ran the whole
+    project and then failed; both options are refused before the run with one line and exit code 2."""
+    code = main(["run", *project, "--duration", "0.05", option, f"/proc/{name}", "--quiet"])
+    assert code == 2
+    err = _one_line_error(capsys, f"{option} /proc/{name}")
+    assert err.startswith("plcmotion run: ")

@@ -49,8 +49,14 @@ def _output_file(option: str, path: str) -> str | None:
             return f"{where}: {parent} is not a folder"
         if not os.access(parent, os.W_OK | os.X_OK) or (p.exists() and not os.access(p, os.W_OK)):
             return f"{where}: no permission to write it"
+        # os.access says yes to root everywhere (/proc, read-only mounts): open it as the run will
+        existed = p.exists()
+        with open(p, "a"):
+            pass
+        if not existed:
+            p.unlink()
     except OSError as exc:
-        return f"{where}: {exc.strerror or exc}"
+        return f"{where}: cannot write it ({exc.strerror or exc})"
     return None
 
 

@@ -132,3 +132,26 @@ def test_plot_cam_writes_a_png_with_four_axes_s6_2_2(tmp_path):
     assert len(marks) == 1 and list(marks[0].get_xdata()) == [p[0] for p in cam.valid_points()]
     bounds = {s.xmin for s in cam.valid_segments()} | {s.xmax for s in cam.valid_segments()}
     assert len(fig.axes[0].lines) == 2 + len(bounds)                       # curve, points, boundaries
+
+
+def test_a_point_list_that_never_ends_is_refused_issue8_defect7():
+    """Review of issue 8: the size limit looked at st_size only (0 for a device): a cam csv naming /dev/zero
+    (allowed with --allow-outside-paths) was read until memory ran out."""
+    import os
+    import threading
+
+    from plcmotion.cams.io import PointListError, import_points
+
+    if not os.path.exists("/dev/zero"):
+        pytest.skip("needs /dev/zero")
+    outcome: list = []
+
+    def read():
+        try:
+            import_points("/dev/zero")
+        except PointListError as exc:
+            outcome.append(str(exc))
+    worker = threading.Thread(target=read, daemon=True)
+    worker.start()
+    worker.join(10.0)
+    assert outcome and "/dev/zero" in outcome[0] and "at most" in outcome[0], outcome

@@ -179,3 +179,51 @@ def test_defect6_run_reports_cycle_overruns(project, capsys, tmp_path):
     captured = capsys.readouterr()
     assert "4 cycle time overruns" in captured.out
     assert "Warning" not in captured.err
+
+
+# --- review of issue 8 (found by trying the CLI as a user) -----------------------------------------------
+@pytest.mark.skipif(not Path("/proc/self").is_dir(), reason="needs Linux /proc")
+def test_defect10_demo_out_into_a_folder_nobody_can_write(capsys):
+    """Defect 10 (review): `demo --out /proc` passed the permission check as root (os.access says yes) and
+    ended in a FileNotFoundError traceback after the whole demo; it is rejected before the demo runs."""
+    assert main(["demo", "--out", "/proc"]) == 2
+    captured = capsys.readouterr()
+    assert captured.out == ""
+    assert len(captured.err.strip().splitlines()) == 1 and "--out /proc" in captured.err
+
+
+@pytest.mark.skipif(not Path("/dev/full").exists(), reason="needs /dev/full (a disk that is always full)")
+def test_defect10_trace_write_error_during_the_run_is_reported_in_one_line(project, capsys):
+    """Defect 10 (review): a trace file that cannot be written during the run (disk full) gave an OSError
+    traceback at the end; now the run completes, the controller stays in RUN and one line says why, exit 1."""
+    code = main(["run", *project, "--duration", "0.05", "--trace", "/dev/full", "--quiet"])
+    captured = capsys.readouterr()
+    assert code == 1
+    assert "Traceback" not in captured.err and "mode RUN" in captured.out
+    lines = [line for line in captured.err.splitlines() if line.strip()]
+    assert len(lines) == 1 and "--trace /dev/full" in lines[0] and "No space left" in lines[0], captured.err
+
+
+@pytest.mark.skipif(not Path("/dev/zero").exists(), reason="needs /dev/zero (an endless file)")
+def test_defect7_check_of_an_endless_file_ends_with_the_size_limit(capsys):
+    """Defect 7 (review): `plcmotion check /dev/zero` read forever (the size limit looked at st_size only, which
+    is 0 for a device); the file is read up to the limit and rejected."""
+    import threading
+
+    result: list[int] = []
+    worker = threading.Thread(target=lambda: result.append(main(["check", "/dev/zero"])), daemon=True)
+    worker.start()
+    worker.join(10.0)
+    assert result == [1], "check did not end within 10 s"
+    assert "allowed: at most" in capsys.readouterr().err
+
+
+@pytest.mark.skipif(not Path("/proc/self").is_dir(), reason="needs Linux /proc")
+@pytest.mark.parametrize("option, name", [("--plot", "p.png"), ("--trace", "t.csv")])
+def test_defect10_output_into_a_folder_nobody_can_write_rejected_before_the_run(project, capsys, option, name):
+    """Defect 10 (review): as root os.access says any folder is writable, so --plot /proc/p.png ran the whole
+    project and then failed; both options are refused before the run with one line and exit code 2."""
+    code = main(["run", *project, "--duration", "0.05", option, f"/proc/{name}", "--quiet"])
+    assert code == 2
+    err = _one_line_error(capsys, f"{option} /proc/{name}")
+    assert err.startswith("plcmotion run: ")

@@ -436,3 +436,27 @@ def test_uadp_ipv6_loopback_binds_its_address(uadp) -> None:
             thief.bind(("::1", port))
         pub.send(sample(1))
         assert collect(sub, 1, sample(1).time, limit=3.0) == [sample(1)]
+
+
+@pytest.mark.parametrize("kw, error", [
+    ({"wait_timeout": math.nan}, ValueError), ({"wait_timeout": math.inf}, ValueError),
+    ({"wait_timeout": -1.0}, ValueError), ({"wait_timeout": "1"}, TypeError), ({"wait_timeout": True}, TypeError),
+    ({"source": "not an address"}, ValueError), ({"source": 5}, TypeError),
+], ids=["timeout-nan", "timeout-inf", "timeout-negative", "timeout-text", "timeout-bool", "source-unresolvable",
+        "source-not-text"])
+def test_uadp_subscriber_settings_are_checked_at_construction_defect_9(uadp, url, kw, error) -> None:
+    """Review of issue 8: wait_timeout=nan made fetch() (called in the servo cycle) wait forever, a negative
+    one counted the sender lost at once, a text one raised TypeError inside fetch(); a source that is no
+    address gave socket.gaierror.  Each is a ValueError/TypeError naming the setting when constructed."""
+    name = next(iter(kw))
+    with pytest.raises(error, match=name):
+        uadp.UadpLeadingValueSubscriber(url, **kw)
+
+
+@pytest.mark.parametrize("bad", [5, None, b"opc.udp://127.0.0.1:4840"])
+def test_uadp_url_that_is_no_text_is_a_type_error_defect_9(uadp, bad) -> None:
+    """Review of issue 8: a URL given as an int raised AttributeError from urllib."""
+    with pytest.raises((TypeError, ValueError), match="URL"):
+        uadp.UadpLeadingValueSubscriber(bad)
+    with pytest.raises((TypeError, ValueError), match="URL"):
+        uadp.UadpLeadingValuePublisher(bad)

@@ -192,3 +192,32 @@ low = 1.0
     problems = check_project(path)
     assert any("faults[0].axis = \"Enc\": allowed" in p and "ExternalEncoder" in p for p in problems), problems
     assert any("switches[0].axis = \"Proxy\": allowed" in p and "LeadingAxisProxy" in p for p in problems), problems
+
+
+HUGE = "1" + "0" * 400          # a TOML integer beyond float range
+
+
+@pytest.mark.parametrize("text,expected", [
+    ('[[faults]]\nat = 1e13\naxis = "Axis_1"\ninject = "drive"', "faults[0].at = 10000000000000.0: allowed"),
+    (f'[[faults]]\nat = {HUGE}\naxis = "Axis_1"\ninject = "drive"', "faults[0].at = 1000"),
+    (f'[[switches]]\ninput = "I0.5"\naxis = "Axis_1"\nlow = {HUGE}', "switches[0].low = 1000"),
+    (f'[[faults]]\nat = 1\ninput = "I0.2"\nswitch = "chatter"\nperiod = {HUGE}', "faults[0].period = 1000"),
+    (f'[controller]\ncycle_watchdog = {HUGE}', "controller.cycle_watchdog = 1000"),
+    ('[[faults]]\nat = 1\ninput = "I0.2"\naxis = "Axis_1"\nswitch = "repair"', "faults[0].axis: not used"),
+    ('[[faults]]\nat = 1\naxis = "Axis_1"\nclear = "all"\npersistent = true', "faults[0].persistent: not used"),
+    ('[[faults]]\nat = 1\naxis = "Axis_1"\ninject = "drive"\nperiod = 5', "faults[0].period: not used"),
+    ('[[faults]]\nat = 1\ninput = "I0.2"\nswitch = "repair"\nperiod = 5', "faults[0].period: not used"),
+], ids=["at-beyond-the-scenario-range", "at-huge-int", "switch-low-huge-int", "chatter-period-huge-int",
+        "watchdog-huge-int", "axis-with-a-switch-action", "persistent-with-clear", "period-with-inject",
+        "period-without-chatter"])
+def test_defect11_project_fault_values_found_in_review(tmp_path, text, expected):
+    """Review of issue 8 (found by the config fuzz once it covered [[faults]]/[[switches]]/cycle_watchdog):
+    ``at`` beyond 1e12 s gave a ValueError traceback, an integer beyond float range an OverflowError; a key the
+    entry's action does not use (``axis`` of a switch action, ``persistent`` of a clear, ``period`` of an
+    inject) was ignored silently.  Each is one message with the key path."""
+    path = write(tmp_path, text + "\n" + AXIS)
+    problems = check_project(path)
+    assert any(expected in p for p in problems), problems
+    assert all(p.startswith(str(path)) and len(p) < 400 for p in problems), problems
+    with pytest.raises(ProjectError):
+        load_project(path)

@@ -172,3 +172,23 @@ def test_kill_during_writes_leaves_old_or_new_content_and_no_orphans_defect_8(tm
     assert orphans_seen > 0, "no kill hit a write: the test did not exercise the defect"
     retain.save(sf, {"A": ADJUSTED})
     assert [p.name for p in tmp_path.iterdir()] == [sf.name]
+
+
+def test_a_state_file_that_never_ends_is_a_clear_error_defect_8(tmp_path):
+    """Review of issue 8: the size limit looked at st_size only (0 for a device), so a state_file that is an
+    endless device (/dev/zero, allowed with --allow-outside-paths) was read until memory ran out."""
+    import threading
+
+    if not os.path.exists("/dev/zero"):
+        pytest.skip("needs /dev/zero")
+    outcome: list = []
+
+    def load():
+        try:
+            Controller(state_file="/dev/zero")
+        except ValueError as exc:
+            outcome.append(str(exc))
+    worker = threading.Thread(target=load, daemon=True)
+    worker.start()
+    worker.join(10.0)
+    assert outcome and "/dev/zero" in outcome[0] and "larger than" in outcome[0], outcome

@@ -10,6 +10,7 @@ import math
 import os
 import runpy
 import sys
+import tempfile
 import time
 import warnings
 from pathlib import Path
@@ -48,8 +49,14 @@ def _output_file(option: str, path: str) -> str | None:
             return f"{where}: {parent} is not a folder"
         if not os.access(parent, os.W_OK | os.X_OK) or (p.exists() and not os.access(p, os.W_OK)):
             return f"{where}: no permission to write it"
+        # os.access says yes to root everywhere (/proc, read-only mounts): open it as the run will
+        existed = p.exists()
+        with open(p, "a"):
+            pass
+        if not existed:
+            p.unlink()
     except OSError as exc:
-        return f"{where}: {exc.strerror or exc}"
+        return f"{where}: cannot write it ({exc.strerror or exc})"
     return None
 
 
@@ -84,6 +91,11 @@ def _out_folder(out: Path) -> str | None:
         return f"--out {out}: cannot create the folder ({exc.strerror or exc})"
     if not os.access(out, os.W_OK | os.X_OK):
         return f"--out {out}: no permission to write into the folder"
+    try:                                # os.access says yes to root even where nobody can write (/proc)
+        with tempfile.TemporaryFile(dir=out):
+            pass
+    except OSError as exc:
+        return f"--out {out}: cannot write into the folder ({exc.strerror or exc})"
     for name in ("trace.csv", "trace.png"):
         problem = _output_file("--out", os.fspath(out / name))
         if problem:
@@ -125,8 +137,12 @@ def cmd_demo(args: argparse.Namespace) -> int:
     wall = time.perf_counter() - wall0
     trace.stop()
     csv_path, png_path = out / "trace.csv", out / "trace.png"
-    trace.to_csv(csv_path)
-    trace.plot(png_path, title="plcmotion demo: servo axis Axis_1 (S7-1200 instructions)")
+    try:                                # e.g. the disk filled up during the demo
+        trace.to_csv(csv_path)
+        trace.plot(png_path, title="plcmotion demo: servo axis Axis_1 (S7-1200 instructions)")
+    except OSError as exc:
+        print(f"plcmotion demo: --out {out}: cannot write the results ({exc.strerror or exc})", file=sys.stderr)
+        return 1
     print(demo.summary(d))
     print()
     print(f"virtual time {d.ctl.time:.3f} s in {wall:.2f} s wall clock (x{d.ctl.time / wall:.0f} real time)")
@@ -278,10 +294,13 @@ def cmd_run(args: argparse.Namespace) -> int:
         return 130
     if plot_failed:
         print(plot_failed, file=sys.stderr)
+    trace_failed = trace.write_error if trace is not None else None
+    if trace_failed:
+        print(f"plcmotion run: --trace {args.trace}: cannot write the trace: {trace_failed}", file=sys.stderr)
     if ctl.mode != "RUN":
         print(f"controller in {ctl.mode}: {ctl.stop_reason}", file=sys.stderr)
         return 1
-    return 1 if plot_failed else 0
+    return 1 if plot_failed or trace_failed else 0
 
 
 OUTSIDE_HELP = ("let state_file and cam csv paths of the project leave the project's folder "

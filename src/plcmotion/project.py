@@ -258,7 +258,12 @@ class _Loader:
             if size > R.MAX_FILE_BYTES and self.path.is_file():
                 self.note(f"the file has {size} bytes; allowed: at most {R.MAX_FILE_BYTES} bytes for a project file")
                 return None
-            data = self.path.read_bytes()
+            with self.path.open("rb") as f:     # bounded: a device or pipe has no st_size and may never end
+                data = f.read(R.MAX_FILE_BYTES + 1)
+            if len(data) > R.MAX_FILE_BYTES:
+                self.note(f"the file has more than {R.MAX_FILE_BYTES} bytes; allowed: at most {R.MAX_FILE_BYTES} "
+                          "bytes for a project file")
+                return None
         except FileNotFoundError:
             self.note("file not found")
             return None

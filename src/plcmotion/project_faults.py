@@ -24,6 +24,9 @@ fail while the controller runs.  Shapes (docs/fault_injection.md)::
     # other actions, one per entry: load = { jump = 2.0, force = 20.0, blocked = true } (axis),
     # clear = "communication_loss" | "load" | "all" (axis), switch = "stuck_actuated" | "stuck_released" |
     # "chatter" | "repair" with input = "I0.2" (and period = 0.02 for chatter)
+
+Each entry has exactly one action and only the keys that action uses (``ACTION_KEYS``); any other key, a time
+outside [0, 1e12] s or a number beyond float range is a message with its key path.
 """
 from __future__ import annotations
 
@@ -40,12 +43,21 @@ SWITCH_KEYS = ("input", "axis", "low", "high", "active_high", "period", "name")
 FAULT_KEYS = ("at", "axis", "input", "inject", "detail", "persistent", "load", "clear", "switch", "period")
 ACTIONS = ("inject", "load", "clear", "switch")
 LOAD_KEYS = ("jump", "force", "blocked")
+ACTION_KEYS = {"inject": ("at", "axis", "inject", "detail", "persistent"), "load": ("at", "axis", "load"),
+               "clear": ("at", "axis", "clear"), "switch": ("at", "input", "switch")}    # + period for chatter
 SWITCH_ACTIONS = ("stuck_actuated", "stuck_released", "chatter", "repair")
 MAX_ENTRIES = 10_000
+MAX_TIME = 1e12            # FaultScenario.at's range [s]
 
 
 def _number(value: Any) -> bool:
-    return isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
+    """A finite TOML number (an int beyond float range is none: math.isfinite would overflow)."""
+    if not isinstance(value, (int, float)) or isinstance(value, bool):
+        return False
+    try:
+        return math.isfinite(value)
+    except OverflowError:
+        return False
 
 
 def _entries(loader: "_Loader", name: str, section: Any) -> list[tuple[str, dict]]:
@@ -110,12 +122,18 @@ def load_faults(loader: "_Loader", ctl: "Controller", section: Any, declared: li
             if k not in FAULT_KEYS:
                 loader.unknown(f"{key}.{k}", v, "key", FAULT_KEYS)
         at = entry.get("at")
-        if not _number(at) or at < 0:
-            loader.bad(f"{key}.at", at, "the controller time [s] of the fault, a finite number >= 0")
+        if not _number(at) or not 0 <= at <= MAX_TIME:
+            loader.bad(f"{key}.at", at, f"the controller time [s] of the fault, in [0, {MAX_TIME:g}]")
             continue
         actions = [a for a in ACTIONS if a in entry]
         if len(actions) != 1:
             loader.note(f"{key}: give exactly one action of {', '.join(ACTIONS)} (found {len(actions)})")
+            continue
+        used = ACTION_KEYS[actions[0]] + (("period",) if entry.get("switch") == "chatter" else ())
+        unused = [k for k in entry if k in FAULT_KEYS and k not in used]
+        for k in unused:                # a key the action ignores is a mistake in the file, not a no-op
+            loader.note(f"{key}.{k}: not used by this {actions[0]} entry; its keys: {', '.join(used)}")
+        if unused:
             continue
         action = _action(loader, ctl, key, entry, actions[0], declared)
         if action is not None:

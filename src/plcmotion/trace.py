@@ -14,6 +14,8 @@ gives a byte-identical file on every run.
 """
 from __future__ import annotations
 
+import contextlib
+
 import difflib
 import math
 import os
@@ -275,6 +277,7 @@ class Trace:
         self.stream_to = stream_to
         self.columns: list[str] = ["time"] + [name for name, _ in table]
         self.errors: dict[str, str] = {}            # column -> first exception its signal raised while sampled
+        self.write_error: str | None = None         # why the stream file could not be written, if it could not
         self._getters = [getter for _, getter in table]
         self._store = _Decimator(len(self.columns), keep)
         self._stream: IO[str] | None = None
@@ -304,7 +307,11 @@ class Trace:
             self._recording = False
         if self._stream is not None:
             self._flush()
-            self._stream.close()
+        if self._stream is not None:
+            try:
+                self._stream.close()
+            except OSError as exc:
+                self.write_error = self.write_error or f"{exc.strerror or exc}"
             self._stream = None
         return self
 
@@ -347,8 +354,16 @@ class Trace:
 
     def _flush(self) -> None:
         if self._pending and self._stream is not None:
-            self._stream.write(_csv_text(self._pending))
-            self._stream.flush()
+            try:
+                self._stream.write(_csv_text(self._pending))
+                self._stream.flush()
+            except OSError as exc:
+                # a full disk must not stop the servo cycle (this runs in its hook): stop streaming, keep the
+                # rows in memory and say why in ``write_error``
+                self.write_error = f"{exc.strerror or exc} (at t = {self.ctl.time:.6g} s)"
+                stream, self._stream = self._stream, None
+                with contextlib.suppress(OSError):
+                    stream.close()
             self._pending = []
 
     # --- results ---------------------------------------------------------------------------------------

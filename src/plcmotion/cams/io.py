@@ -119,8 +119,13 @@ def import_points(path: str | os.PathLike, *, require_increasing: bool = True, s
         size = 0                                 # let the read below report it
     if size > MAX_IMPORT_BYTES:
         raise PointListError(name, None, f"{size} bytes; a point list has at most {MAX_IMPORT_BYTES} bytes")
+    with open(path, "rb") as fh:               # bounded: a device or pipe has no size and may never end
+        data = fh.read(MAX_IMPORT_BYTES + 1)
+    if len(data) > MAX_IMPORT_BYTES:
+        raise PointListError(name, None, f"more than {MAX_IMPORT_BYTES} bytes; a point list has at most "
+                                         f"{MAX_IMPORT_BYTES} bytes")
     try:
-        text = Path(path).read_text(encoding="utf-8-sig")
+        text = data.decode("utf-8-sig")
     except UnicodeDecodeError as exc:
         raise PointListError(name, None, f"not a text file ({exc.reason})") from None
 

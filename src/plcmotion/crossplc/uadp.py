@@ -70,6 +70,30 @@ def _security(ep: Endpoint, url: str, security: str | None, key: bytes | None, t
     return Security(security, key, token_id)
 
 
+MAX_WAIT = 60.0     # s: fetch runs in the servo cycle; a longer wait is a hung controller, not lockstep
+
+
+def _wait_timeout(value: object) -> float:
+    """``wait_timeout`` in [0, MAX_WAIT] s (NaN made fetch wait forever, a negative one gave up at once)."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise TypeError(f"wait_timeout must be a number of seconds, got {value!r}")
+    if not 0.0 <= value <= MAX_WAIT:
+        raise ValueError(f"wait_timeout must be in [0, {MAX_WAIT:g}] s, got {value!r}")
+    return float(value)
+
+
+def _source_address(source: object) -> str | None:
+    """The sender address ``source`` resolved once (None: any sender)."""
+    if source is None or source == "":
+        return None
+    if not isinstance(source, str):
+        raise TypeError(f"source must be the sender's IP address as a string, got {source!r}")
+    try:
+        return socket.getaddrinfo(source, None)[0][4][0]
+    except (socket.gaierror, UnicodeError) as exc:
+        raise ValueError(f"source {source!r} is no address of a host: {exc}") from None
+
+
 class _Worker:
     """One daemon thread running ``body(stop_event)``; start once, close idempotent."""
 
@@ -245,11 +269,11 @@ class UadpLeadingValueSubscriber:
                  security_token_id: int = 1, source: str | None = None, interface: str | None = None,
                  sequence_window: int = 256, resync_count: int = 3) -> None:
         self.url = url
-        self.wait_timeout = wait_timeout
+        self.wait_timeout = _wait_timeout(wait_timeout)
         self._endpoint = parse_url(url)
         self.security = _security(self._endpoint, url, security, key, security_token_id)
         self._codec = Codec(publisher_id, writer_group_id, dataset_writer_id, self.security)
-        self._source = socket.getaddrinfo(source, None)[0][4][0] if source else None
+        self._source = _source_address(source)
         self._interface = interface
         self._receive_buffer = receive_buffer
         self._window = SequenceWindow(sequence_window, resync_count)

@@ -34,6 +34,8 @@ class Endpoint:
 
 def parse_url(url: str) -> Endpoint:
     """Resolve ``opc.udp://host[:port]``; ValueError naming the URL if it is not one."""
+    if not isinstance(url, str):
+        raise TypeError(f"URL must be a string like opc.udp://host:port, got {type(url).__name__}")
     try:
         parts = urlparse(url)
         port = parts.port if parts.port is not None else DEFAULT_PORT

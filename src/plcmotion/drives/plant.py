@@ -25,8 +25,8 @@ def _position(name: str, value: Any) -> float:
         raise TypeError(f"{name} must be a number, got {value!r}")
     try:
         x = float(value)
-    except OverflowError:
-        x = math.copysign(math.inf, value)
+    except OverflowError:               # an int beyond float range (copysign would overflow again)
+        x = math.inf if value > 0 else -math.inf
     if math.isnan(x):
         raise ValueError(f"{name} must not be NaN")
     return x
@@ -89,9 +89,12 @@ class Switch:
         shows the opposite of its true state."""
         p = _position("chatter period", period)
         if not 0.0 < p <= 3600.0:
-            raise ValueError(f"chatter period must be in (0, 3600] s, got {period!r}")
+            raise ValueError(f"chatter period must be in (0, 3600] s, got {p!r}")
+        t0 = _position("chatter start", start)
+        if math.isinf(t0):
+            raise ValueError("chatter start must be a finite controller time [s]")
         self.chatter_period = p
-        self._chatter_t0 = _position("chatter start", start)
+        self._chatter_t0 = t0
 
     def repair(self) -> None:
         """The contact works again."""
@@ -202,6 +205,8 @@ class Plant:
                 raise ValueError(f"switch at {address}: a repeating switch needs both low and high")
         if not isinstance(active_high, bool):
             raise TypeError(f"active_high must be True or False, got {active_high!r}")
+        if not isinstance(name, str):
+            raise TypeError(f"name must be a string, got {type(name).__name__}")
         if any(item.address == address for item in self.items):
             raise ValueError(f"input {address} is already wired in the plant")
         channel = getattr(axis, "drive", None)

@@ -39,7 +39,8 @@ def _real(name: str, value: Any) -> float:
     except OverflowError:
         x = math.inf
     if not math.isfinite(x) or abs(x) > _LIMIT:
-        raise ValueError(f"{name} must be a finite number in [-1e12, 1e12], got {value!r}")
+        shown = repr(value) if len(repr(value)) <= 40 else f"an int of {len(str(abs(value)))} digits"
+        raise ValueError(f"{name} must be a finite number in [-1e12, 1e12], got {shown}")
     return x
 
 
@@ -71,6 +72,8 @@ class FaultInjectionMixin:
             raise ValueError(f"fault kind {kind!r}: one of {', '.join(KINDS)}")
         if not isinstance(detail, str):
             raise TypeError(f"fault detail must be a string, got {detail!r}")
+        if not isinstance(persistent, bool):
+            raise TypeError(f"persistent must be True or False, got {persistent!r}")
         for device, device_detail in self._expand(kind, detail):
             self.faults[device] = (device_detail, bool(persistent))
             if device in ("drive", "drive_not_ready"):
@@ -188,6 +191,8 @@ class FaultScenario:
 
     def at(self, t: float, action: Callable[[], Any], what: str = "") -> None:
         t = _real("time", t)
+        if not callable(action):        # found now, not as a STOP at time t
+            raise TypeError(f"action must be callable (a function without arguments), got {action!r}")
         if t < 0.0:
             raise ValueError(f"fault time must be >= 0 s, got {t!r}")
         self.pending.append((t, len(self.pending) + len(self.done), action, what))

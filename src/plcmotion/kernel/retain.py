@@ -124,7 +124,11 @@ def load(path: str | os.PathLike) -> dict[str, Any]:
     try:
         if p.stat().st_size > MAX_BYTES:
             raise ValueError(f"larger than {MAX_BYTES} bytes")
-        data = json.loads(p.read_text(encoding="utf-8"))
+        with p.open("rb") as fh:                # bounded: a device or pipe has no size and may never end
+            raw = fh.read(MAX_BYTES + 1)
+        if len(raw) > MAX_BYTES:
+            raise ValueError(f"larger than {MAX_BYTES} bytes")
+        data = json.loads(raw.decode("utf-8"))
     except (OSError, ValueError, RecursionError) as exc:
         raise ValueError(f"{p}: retentive data file cannot be read ({exc}); delete it to start afresh") from exc
     if not isinstance(data, dict) or data.get("format", FORMAT) != FORMAT:

@@ -38,10 +38,11 @@ def check_multiple(value: object) -> float | None:
     """``cycle_watchdog``: None or 0 (off), or a number of application cycles in [1, 1e6]."""
     if value is None or (isinstance(value, numbers.Real) and not isinstance(value, bool) and value == 0):
         return None
-    if (not isinstance(value, numbers.Real) or isinstance(value, bool) or not math.isfinite(value)
-            or not 1.0 <= value <= MAX_MULTIPLE):
+    # the comparison is exact for ints of any size (math.isfinite(10**400) overflows) and false for NaN
+    if not isinstance(value, numbers.Real) or isinstance(value, bool) or not 1.0 <= value <= MAX_MULTIPLE:
+        shown = repr(value) if len(repr(value)) <= 40 else repr(value)[:37] + "..."
         raise ValueError(f"cycle_watchdog must be a number of application cycles in [1, {MAX_MULTIPLE:g}] "
-                         f"or 0/None (off), got {value!r}")
+                         f"or 0/None (off), got {shown}")
     return float(value)
 
 
@@ -75,10 +76,11 @@ class CycleWatchdog:
             raise ValueError(f"cycles must be a whole number of application cycles >= 1, got {cycles!r}")
         if duration is None:
             duration = 2.0 * self.limit
-        if (isinstance(duration, bool) or not isinstance(duration, numbers.Real) or not math.isfinite(duration)
-                or not self.limit < duration <= 1e9):
+        if (isinstance(duration, bool) or not isinstance(duration, numbers.Real)
+                or not self.limit < duration <= 1e9):       # exact for huge ints, false for NaN
+            shown = repr(duration) if len(repr(duration)) <= 40 else repr(duration)[:37] + "..."
             raise ValueError(f"duration must be a wall-clock time [s] longer than the watchdog time "
-                             f"{self.limit:g} s, got {duration!r}")
+                             f"{self.limit:g} s, got {shown}")
         self._injected = int(cycles)
         self._injected_duration = float(duration)
 

@@ -4,7 +4,8 @@ Rule (Controller.step, plcmotion.kernel.watchdog): whatever a user program or se
 ``__str__`` raises - puts the controller in STOP with the reason; nothing but KeyboardInterrupt leaves
 ``step()``, and KeyboardInterrupt only after the controller went to STOP.  A program that runs longer than
 ``cycle_watchdog`` x application cycle (wall clock) is an overrun: reported, and with ``cycle_watchdog_stop``
-the controller goes to STOP as the S7-1200 CPU does on an overflow (S7-1200 V6 §2.2.7.3).
+the controller goes to STOP as a CPU does when its maximum cycle time is exceeded (S7-1200 V6 §2.2.7.3
+gives an overflow of the motion OBs the same reaction).
 """
 from __future__ import annotations
 
@@ -130,7 +131,8 @@ def test_defect6_watchdog_reports_a_slow_program_and_keeps_virtual_time():
 
 
 def test_defect6_watchdog_stop_like_s7_overflow():
-    """S7-1200 V6 §2.2.7.3 (Overflows): an overflow puts the CPU in STOP.  With cycle_watchdog_stop=True an
+    """A CPU goes to STOP when its cycle time is exceeded (S7-1200 V6 §2.2.7.3, Overflows, for the motion
+    OBs).  With cycle_watchdog_stop=True an
     overrun does the same: STOP with the reason, axes disabled."""
     ctl = Controller(cycle_watchdog=5.0, cycle_watchdog_stop=True)          # limit 20 ms
     axis = ctl.add_positioning_axis("Axis_1")
@@ -165,7 +167,7 @@ def test_defect6_watchdog_multiple_validated(value):
 def test_defect11_injected_cycle_overrun_is_deterministic():
     """Defect 11 (application-cycle overrun for virtual commissioning): inject_cycle_overrun(n) makes the next
     n application cycles count as overruns, whatever the wall clock says; with cycle_watchdog_stop the
-    controller goes to STOP at the first one (S7-1200 V6 §2.2.7.3)."""
+    controller goes to STOP at the first one."""
     ctl = Controller(cycle_watchdog=10.0)
     ticks = []
     ctl.program(lambda: ticks.append(ctl.time))

@@ -48,7 +48,7 @@ lines, 1000 technology objects, lists of 4096 items, 12 levels of nesting, 1000 
 32 steps per command table.
 ``cycle_watchdog`` (default 100; 0 = off) is the wall-clock time the user programs of one application
 cycle may take, in application cycles, and ``cycle_watchdog_stop = true`` puts the controller in STOP on
-an overrun (S7-1200 V6 §2.2.7.3).
+an overrun, as a CPU does when its maximum cycle time is exceeded.
 
 ``family = "S7-1500T"`` (or ``"S7-1500"``; default ``"S7-1200"``) makes it an S7-1500 controller.  Its
 axis tables then use the S7-1500 tag names (``plcmotion.kernel.parameters1500``) and may have

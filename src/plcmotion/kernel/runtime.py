@@ -158,7 +158,7 @@ class Controller:
     ``cycle_watchdog``: the user programs of one application cycle may take this many application cycles of
     wall-clock time; a longer run is an overrun (``CycleOverrunWarning``, ``cycle_overruns``,
     ``last_overrun``).  0 or None: no monitoring.  ``cycle_watchdog_stop``: an overrun puts the controller in
-    STOP, as an overflow does on the CPU (S7-1200 V6 §2.2.7.3); by default it is only reported, because the
+    STOP, as a CPU does when its maximum cycle time is exceeded; by default it is only reported, because the
     wall clock of a simulation says nothing about the virtual controller.
     """
 
@@ -489,7 +489,7 @@ class Controller:
     def _on_overrun(self, overrun: Overrun) -> None:
         text = self.watchdog.describe(overrun)
         if self.watchdog.stop:
-            self.stop(text + " (S7-1200 V6 §2.2.7.3: an overflow puts the CPU in STOP)")
+            self.stop(text + " (cycle time exceeded: the CPU goes to STOP)")
         if self.watchdog.stop or self.watchdog.reportable():
             warnings.warn(text + (": controller in STOP" if self.watchdog.stop else ""), CycleOverrunWarning,
                           stacklevel=4)

@@ -1,7 +1,8 @@
 """Cycle-time monitoring of the user programs, the watchdog a PLC has on its program cycle.
 
-S7-1200 V6 §2.2.7.3 (Overflows): when the application cycle is not kept, the overflow goes to the CPU's
-diagnostic buffer and the CPU goes to STOP; a time error OB (OB80) can evaluate it.  Here the programs of
+A CPU watches its program cycle against a maximum cycle time and goes to STOP (or calls the time error
+OB80) when it is exceeded; S7-1200 V6 §2.2.7.3 (Overflows) gives the motion OBs the same reaction.  Here the
+programs of
 one application cycle (the OB1 of plcmotion) are timed on the wall clock; a run longer than
 ``multiple`` x application cycle is an overrun.  The wall clock of a Python simulation says nothing about
 the virtual controller, so by default an overrun is only reported (a warning, a counter, the last overrun);
@@ -55,7 +56,7 @@ class CycleWatchdog:
         self.multiple = check_multiple(multiple)
         #: watchdog time [s] (None: no monitoring)
         self.limit = None if self.multiple is None else self.multiple * app_cycle
-        #: go to STOP on an overrun (S7-1200 V6 §2.2.7.3) instead of only reporting it
+        #: go to STOP on an overrun (as a CPU on its maximum cycle time) instead of only reporting it
         self.stop = stop
         #: number of overruns since the controller was created
         self.count = 0

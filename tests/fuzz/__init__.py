@@ -59,7 +59,8 @@ Invariants and their scope
    Error may come with Busy.
 8. stuck (bounded): MC_MoveAbsolute/-Relative, MC_Halt, MC_Reset, MC_MoveSuperimposed, MC_Phasing*,
    the cam instructions, MC_ChangeDynamic and MC_WriteParam are not Busy for more than 2.5 s of virtual time
-   while all axes their job started on stand still (setpoint and actual velocity 0) and the override is
+   while all axes their job started on stand still (setpoint velocity and acceleration exactly 0, actual
+   velocity below 1e-6) and the override is
    not 0 %.  After the last cycle an episode runs on (without new operations) while such an instruction
    is Busy at standstill, up to that bound.  Not checked: instructions that may wait legitimately (MC_Home
    passive modes, MC_GearInPos/MC_CamIn waiting for the leading axis, MC_CommandTable wait steps,

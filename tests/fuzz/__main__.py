@@ -33,6 +33,9 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--dialect", choices=DIALECTS, default=None, help="only this dialect (default: all, by seed)")
     ap.add_argument("--replay", type=int, metavar="SEED", help="rerun one episode, printing the FB call log")
     ap.add_argument("--script", action="store_true", help="with --replay: print the reproducer script")
+    ap.add_argument("--ignore", action="append", default=[], metavar="SIGNATURE",
+                    help="look past failures whose signature starts with this (repeatable), e.g. "
+                         "'exception|OverflowError' while that defect is open")
     ap.add_argument("--shrink", type=float, default=20.0, metavar="SECONDS",
                     help="time to shrink each distinct failure (0: no shrinking)")
     args = ap.parse_args(argv)
@@ -43,7 +46,7 @@ def main(argv: list[str] | None = None) -> int:
         ep = generate(args.replay, args.dialect)
         print(f"episode {ep.seed}: {ep.dialect}, {len(ep.axes)} axes, {len(ep.fbs)} instances, "
               f"{len(ep.ops)} operations, {ep.cycles} cycles")
-        f = replay_log(ep)
+        f = replay_log(ep, ignore=tuple(args.ignore))
         if f is None:
             print("no failure")
             return 0
@@ -52,7 +55,7 @@ def main(argv: list[str] | None = None) -> int:
             print(f.detail)
         if args.script:
             if args.shrink > 0:
-                ep, f = shrink(ep, f, args.shrink)
+                ep, f = shrink(ep, f, args.shrink, tuple(args.ignore))
             print(script(ep, f))
         return 1
 
@@ -61,11 +64,11 @@ def main(argv: list[str] | None = None) -> int:
             print(f"  {res.episodes} episodes, {res.failed_episodes()} failed ({len(res.failures)} distinct), "
                   f"{res.episodes / dt:.1f} episodes/s", file=sys.stderr, flush=True)
 
-    res = campaign(args.episodes, args.seed, args.jobs, args.dialect, progress)
+    res = campaign(args.episodes, args.seed, args.jobs, args.dialect, progress, ignore=tuple(args.ignore))
     print(f"{res.episodes} episodes ({res.calls} instruction calls, {res.cycles} application cycles) in "
           f"{res.seconds:.1f} s: {res.episodes / res.seconds:.1f} episodes/s with {args.jobs} job(s); "
           f"{res.failed_episodes()} failed, {len(res.failures)} distinct failure(s)")
-    report(res, shrink_budget=args.shrink, dialect=args.dialect)
+    report(res, shrink_budget=args.shrink, dialect=args.dialect, ignore=tuple(args.ignore))
     return 1 if res.failures else 0
 
 

@@ -53,7 +53,7 @@ def _logu(rnd: random.Random, lo: float, hi: float) -> float:
 
 # --- technology objects ------------------------------------------------------------------------------------
 def _common_params(rnd: random.Random, p: dict[str, Any], vmax: float) -> None:
-    if rnd.random() < 0.2:
+    if rnd.random() < 0.2 and p.get("Actor.Type") != 2:        # S7-1200 §5.4.4.2: no modulo on PTO
         p["Modulo.Enable"] = True
         p["Modulo.Length"] = rnd.choice((1.0, 360.0, round(_logu(rnd, 0.5, 2000.0), 3)))
         p["Modulo.StartValue"] = rnd.choice((0.0, 0.0, -0.5 * p["Modulo.Length"]))
@@ -74,7 +74,7 @@ def axis_1200(rnd: random.Random, i: int) -> dict[str, Any]:
     p: dict[str, Any] = {
         "Actor.Type": actor,
         "DynamicLimits.MaxVelocity": vmax,
-        "DynamicLimits.MinVelocity": round(rnd.uniform(0.0, 0.1) * vmax, 2) if actor == 2 else 0.0,
+        "DynamicLimits.MinVelocity": max(0.01, round(rnd.uniform(0.0, 0.1) * vmax, 2)) if actor == 2 else 0.0,
         "DynamicDefaults.Acceleration": acc,
         "DynamicDefaults.Deceleration": dec,
         "DynamicDefaults.EmergencyDeceleration": round(max(acc, dec) * rnd.uniform(1.0, 5.0), 2),
@@ -179,7 +179,8 @@ _MOVE_1200 = {
 _DYN = {"Acceleration": "acc", "Deceleration": "acc", "Jerk": "jerk"}
 _MOVE_1500 = {
     "MC_Power": _MOVE_1200["MC_Power"],
-    "MC_Reset": _MOVE_1200["MC_Reset"],
+    # S7-1500: MC_Reset also acknowledges alarms of (and restarts) other technology objects, e.g. cams
+    "MC_Reset": {"Axis": "any_to", "Execute": "bool", "Restart": "bool"},
     "MC_Home": {"Axis": "axis", "Execute": "bool", "Position": "pos", "Mode": ("int", (0, 1, 2, 3, 5, 6, 7, 8, 9, 10))},
     "MC_Halt": {"Axis": "axis", "Execute": "bool", "Deceleration": "acc", "Jerk": "jerk"},
     "MC_Stop": {"Axis": "axis", "Execute": "bool", "Mode": ("int", (0, 1, 2))},
@@ -220,6 +221,9 @@ _SYNC_1500T = {
                               "ApproachLeadingValue": "pos"},
     "MC_GetCamFollowingValue": {"Cam": "cam", "Execute": "bool", "LeadingValue": "pos"},
 }
+
+
+_TO_KINDS = ("axis", "any_to", "slave", "master", "cam", "table")
 
 
 def catalog(dialect: str) -> dict[str, dict[str, Any]]:
@@ -286,6 +290,8 @@ class Gen:
             return V.integer(rnd, kind[1])
         if kind == "axis":
             return self.ref(self.pos_axes)
+        if kind == "any_to":
+            return self.ref(self.masters + [c["name"] for c in self.ep.cams])
         if kind == "slave":
             return self.ref(self.slaves)
         if kind == "master":
@@ -354,7 +360,7 @@ class Gen:
 
 
 # --- the episode -------------------------------------------------------------------------------------------
-def generate(seed: int, dialect: str | None = None, *, max_cycles: int = 250) -> Episode:
+def generate(seed: int, dialect: str | None = None, *, max_cycles: int = 200) -> Episode:
     rnd = random.Random(seed)
     dialect = dialect or DIALECTS[rnd.randrange(len(DIALECTS))]
     if dialect.startswith("S7-1200"):
@@ -362,7 +368,7 @@ def generate(seed: int, dialect: str | None = None, *, max_cycles: int = 250) ->
                "technology_version": 7 if dialect.endswith("V7") else 6}
     else:
         ctl = {"servo_cycle": 0.001, "app_cycle": rnd.choice((0.002, 0.004, 0.004)), "family": dialect}
-    ep = Episode(seed, dialect, ctl, cycles=rnd.randint(40, max_cycles))
+    ep = Episode(seed, dialect, ctl, cycles=rnd.randint(30, max_cycles))
     if dialect.startswith("S7-1200"):
         for i in range(rnd.randint(1, 2)):
             ep.axes.append({"name": f"Axis_{i + 1}", "kind": "pos", "params": axis_1200(rnd, i)})
@@ -399,10 +405,10 @@ def generate(seed: int, dialect: str | None = None, *, max_cycles: int = 250) ->
         kinds = cat[cls]
         fb = {"name": f"fb{k}_{cls[3:]}", "cls": cls, "init": {}}
         for inp, kind in kinds.items():
-            if kind in ("axis", "slave", "master", "cam", "table"):
+            if kind in _TO_KINDS:
                 fb["init"][inp] = gen.value(fb, inp, kind)
         for inp, kind in kinds.items():
-            if kind not in ("axis", "slave", "master", "cam", "table", "bool") and rnd.random() < 0.7:
+            if kind not in _TO_KINDS and kind != "bool" and rnd.random() < 0.7:
                 fb["init"][inp] = gen.value(fb, inp, kind)
         if cls == "MC_ReadParam":
             fb["init"]["Value"] = gen.value(fb, "Value", "pvar")    # an InOut: always a typed variable
@@ -412,12 +418,31 @@ def generate(seed: int, dialect: str | None = None, *, max_cycles: int = 250) ->
             ep.fbs.insert(len(ep.axes), {"name": f"ipo{k}", "cls": "MC_InterpolateCam",
                                          "init": {"Cam": fb["init"].get("Cam", Ref(ep.cams[0]["name"]))}})
             ep.ops.append(Op(1, "in", f"ipo{k}", "Execute", True))
+    if rnd.random() < 0.7:
+        # a leading axis / first axis in motion early: gives synchronous operation and dynamics changes
+        # something to act on
+        ep.fbs.insert(len(ep.axes), {"name": "run", "cls": "MC_MoveVelocity",
+                                     "init": {"Axis": Ref(gen.pos_axes[0]),
+                                              "Velocity": round(gen.vmax[gen.pos_axes[0]] * rnd.uniform(0.1, 0.9), 2)
+                                              * rnd.choice((1, 1, -1))}})
+        ep.ops.append(Op(rnd.randint(1, 8), "in", "run", "Execute", True))
+    # initial values of the BOOL inputs other than the edges/levels the operations toggle
+    initial = []
+    for fb in ep.fbs:
+        start = {}
+        for k, kd in cat[fb["cls"]].items():
+            if kd == "bool" and k not in ("Execute", "Enable", "JogForward", "JogBackward"):
+                start[k] = bool(rnd.getrandbits(1))
+            elif k == "Enable" and "Enable" in fb["init"]:
+                start[k] = fb["init"]["Enable"]
+        fb["init"].update(start)
+        initial.append(start)
     # timed operations: sparse, sometimes several in one cycle (same-cycle races)
     fbs = [f for f in ep.fbs]
     for c in range(1, ep.cycles):
-        if rnd.random() > 0.12:
+        if rnd.random() > 0.18:
             continue
-        for _ in range(1 if rnd.random() < 0.75 else rnd.randint(2, 4)):
+        for _ in range(1 if rnd.random() < 0.65 else rnd.randint(2, 4)):
             if rnd.random() < 0.15:
                 ep.ops.append(gen.tag_op(c))
                 continue
@@ -433,10 +458,12 @@ def generate(seed: int, dialect: str | None = None, *, max_cycles: int = 250) ->
             ep.ops.append(Op(c, "in", fb["name"], inp, value))
             if kinds[inp] == "bool":
                 fb["init"][inp] = value              # so that the next toggle toggles
-    for fb in ep.fbs:                               # the toggle bookkeeping above is not an initial value
+    for fb, start in zip(ep.fbs, initial):          # the toggle bookkeeping above is not an initial value
         for k, kd in catalog(dialect)[fb["cls"]].items():
-            if kd == "bool" and not (fb["cls"] == "MC_Power" and k == "Enable"):
+            if kd == "bool":
                 fb["init"].pop(k, None)
+                if k in start:
+                    fb["init"][k] = start[k]
         fb["init"] = {k: v for k, v in fb["init"].items() if v is not None or k in ("Axis", "Master", "Slave", "Cam")}
     ep.ops.sort(key=lambda o: o.cycle)
     return ep

@@ -23,8 +23,8 @@ def _strategy(kind, objs: dict[str, list[str]]):
         return st.booleans()
     if isinstance(kind, tuple):
         return st.one_of(st.sampled_from(kind[1]), _BAD_INT)
-    if kind in ("axis", "slave", "master", "cam", "table"):
-        names = objs[kind] or objs["axis"]
+    if kind in ("axis", "any_to", "slave", "master", "cam", "table"):
+        names = (objs["all"] if kind == "any_to" else objs[kind]) or objs["axis"]
         return st.one_of(st.sampled_from([Ref(n) for n in names]),
                          st.sampled_from([None, "Axis_1", 5] + [Ref(n) for n in objs["all"]]))
     if kind == "ratio":

@@ -14,19 +14,20 @@ from .runner import Failure, Run
 from .values import lit
 
 
-def fails_same(ep: Episode, sig: str) -> Failure | None:
-    f = Run(ep).run()
+def fails_same(ep: Episode, sig: str, ignore: tuple[str, ...] = ()) -> Failure | None:
+    f = Run(ep, ignore=ignore).run()
     return f if f is not None and f.signature() == sig else None
 
 
-def shrink(ep: Episode, failure: Failure, budget: float = 20.0) -> tuple[Episode, Failure]:
+def shrink(ep: Episode, failure: Failure, budget: float = 20.0,
+           ignore: tuple[str, ...] = ()) -> tuple[Episode, Failure]:
     """A smaller episode that fails the same way (within ``budget`` seconds)."""
     sig = failure.signature()
     deadline = time.monotonic() + budget
     best = copy.deepcopy(ep)
     best.cycles = min(best.cycles, failure.cycle + 1)
     best.ops = [o for o in best.ops if o.cycle <= failure.cycle]
-    f = fails_same(best, sig) or failure
+    f = fails_same(best, sig, ignore) or failure
     if f is failure:
         best = copy.deepcopy(ep)
 
@@ -34,7 +35,7 @@ def shrink(ep: Episode, failure: Failure, budget: float = 20.0) -> tuple[Episode
         nonlocal best, f
         if time.monotonic() > deadline:
             return False
-        got = fails_same(cand, sig)
+        got = fails_same(cand, sig, ignore)
         if got is not None:
             best, f = cand, got
             best.cycles = min(best.cycles, got.cycle + 1)
@@ -184,7 +185,7 @@ def script(ep: Episode, failure: Failure | None = None) -> str:
     return "\n".join(lines) + "\n"
 
 
-def replay_log(ep: Episode, out: Callable[[str], None] = print) -> Failure | None:
+def replay_log(ep: Episode, out: Callable[[str], None] = print, ignore: tuple[str, ...] = ()) -> Failure | None:
     """Run ``ep`` printing the operations and every change of an instruction's outputs (the FB call log)."""
     pending: list[str] = []
 
@@ -193,7 +194,7 @@ def replay_log(ep: Episode, out: Callable[[str], None] = print) -> Failure | Non
             out(pending.pop())
         out(line)
 
-    run = Run(ep, log=log)
+    run = Run(ep, log=log, ignore=ignore)
     if run.failure is not None:
         return run.failure
     orig_step = run.step

@@ -359,6 +359,41 @@ class Gen:
         return Op(cycle, "tag", ax, path, value)
 
 
+def _scenarios(rnd: random.Random, ep: Episode, gen: Gen) -> None:
+    """Situations the issue's campaign found fragile, made likely instead of rare: a synchronous job on a
+    moving leading axis (S7-1500T), a change of dynamics around a motion start (S7-1200)."""
+    cat = catalog(ep.dialect)
+    if ep.dialect == "S7-1500T" and gen.slaves and rnd.random() < 0.6:
+        cls = rnd.choice(("MC_GearInPos", "MC_CamIn", "MC_GearIn"))
+        fb = {"name": "sync", "cls": cls, "init": {"Master": Ref(gen.pos_axes[0]), "Slave": Ref(gen.slaves[0])}}
+        if cls == "MC_CamIn" and ep.cams:
+            fb["init"]["Cam"] = Ref(ep.cams[0]["name"])
+            ep.fbs.insert(len(ep.axes), {"name": "ipo", "cls": "MC_InterpolateCam",
+                                         "init": {"Cam": Ref(ep.cams[0]["name"])}})
+            ep.ops.append(Op(1, "in", "ipo", "Execute", True))
+        for inp, kind in cat[cls].items():
+            if inp not in fb["init"] and kind not in _TO_KINDS and kind != "bool" and rnd.random() < 0.8:
+                fb["init"][inp] = gen.value(fb, inp, kind)
+        ep.fbs.append(fb)
+        ep.ops.append(Op(rnd.randint(5, 30), "in", "sync", "Execute", True))
+    if ep.dialect.startswith("S7-1200") and rnd.random() < 0.5:
+        ax = Ref(rnd.choice(gen.pos_axes))
+        move = rnd.choice(("MC_MoveRelative", "MC_MoveAbsolute", "MC_MoveVelocity", "MC_MoveJog"))
+        fb = {"name": "move", "cls": move, "init": {"Axis": ax}}
+        for inp, kind in cat[move].items():
+            if inp not in fb["init"] and kind not in _TO_KINDS and kind != "bool":
+                fb["init"][inp] = gen.value(fb, inp, kind)
+        cd = {"name": "dyn", "cls": "MC_ChangeDynamic", "init": {"Axis": ax}}
+        for inp, kind in cat["MC_ChangeDynamic"].items():
+            if kind == "time":
+                cd["init"][inp] = gen.value(cd, inp, kind)
+        ep.fbs += [fb, cd]
+        c = rnd.randint(3, 30)
+        start = "JogForward" if move == "MC_MoveJog" else "Execute"
+        ep.ops.append(Op(c, "in", "move", start, True))
+        ep.ops.append(Op(c + rnd.choice((0, 0, 1, 2, 5)), "in", "dyn", "Execute", True))
+
+
 # --- the episode -------------------------------------------------------------------------------------------
 def generate(seed: int, dialect: str | None = None, *, max_cycles: int = 200) -> Episode:
     rnd = random.Random(seed)
@@ -426,6 +461,7 @@ def generate(seed: int, dialect: str | None = None, *, max_cycles: int = 200) ->
                                               "Velocity": round(gen.vmax[gen.pos_axes[0]] * rnd.uniform(0.1, 0.9), 2)
                                               * rnd.choice((1, 1, -1))}})
         ep.ops.append(Op(rnd.randint(1, 8), "in", "run", "Execute", True))
+    _scenarios(rnd, ep, gen)
     # initial values of the BOOL inputs other than the edges/levels the operations toggle
     initial = []
     for fb in ep.fbs:

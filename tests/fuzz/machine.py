@@ -42,12 +42,14 @@ def _strategy(kind, objs: dict[str, list[str]]):
 class FuzzMachine(RuleBasedStateMachine):
     """One controller per example; the rules drive it and the runner's invariants are asserted."""
 
+    IGNORE: tuple[str, ...] = ()      # signature prefixes to look past (triage only; CI asserts everything)
+
     @initialize(dialect=st.sampled_from(DIALECTS), seed=st.integers(0, 2 ** 31 - 1))
     def setup(self, dialect: str, seed: int) -> None:
         ep = generate(seed, dialect)          # technology objects and instruction instances of a random episode
         ep.ops, ep.cycles = [], 0
         self.ep = ep
-        self.run = Run(ep)
+        self.run = Run(ep, ignore=self.IGNORE)
         self.cat = catalog(dialect)
         axes = [a["name"] for a in ep.axes]
         self.objs = {"axis": axes, "slave": [a["name"] for a in ep.axes if a["kind"] == "sync"],

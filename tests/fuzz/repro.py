@@ -90,7 +90,8 @@ _EPILOGUE = {
     "exception": "# the last call above raises (an instruction must give an ErrorID instead)",
     "stop": "print('mode:', ctl.mode)\nprint(ctl.stop_reason)",
     "internal": "for ax in AXES:\n    if ax.last_internal_error:\n        print(ax.name, ax.last_internal_error)",
-    "nonfinite": "for ax in AXES:\n    print(ax.name, ax.Position, ax.Velocity, ax.ActualPosition, ax.ActualVelocity)",
+    "nonfinite": "print('first non-finite setpoint/actual values (t, axis, field):', NONFINITE[:3])\n"
+                 "for ax in AXES:\n    print(ax.name, ax.Position, ax.Velocity, ax.ActualPosition, ax.ActualVelocity)",
     "velocity": "for ax in AXES:\n    print(ax.name, 'peak |Velocity| of the setpoint', PEAK[ax.name], 'MaxVelocity',"
                 " ax.tag('DynamicLimits.MaxVelocity'))",
     "acceleration": "for ax in AXES:\n    print(ax.name, 'peak |acceleration| of the setpoint', PEAK_A[ax.name])",
@@ -142,7 +143,7 @@ def script(ep: Episode, failure: Failure | None = None) -> str:
         args = ", ".join(f"{k}={lit(v)}" for k, v in f["init"].items())
         lines.append(f"FB[{f['name']!r}] = {f['cls']}({args})")
     lines += [
-        "PEAK = {ax.name: 0.0 for ax in AXES}; PEAK_A = dict(PEAK); PEAK_J = dict(PEAK)",
+        "PEAK = {ax.name: 0.0 for ax in AXES}; PEAK_A = dict(PEAK); PEAK_J = dict(PEAK); NONFINITE = []",
         "",
         "@ctl.on_post_servo",
         "def peaks(t):",
@@ -151,6 +152,9 @@ def script(ep: Episode, failure: Failure | None = None) -> str:
         "        PEAK[ax.name] = max(PEAK[ax.name], abs(b.sp_v[ax.index]))",
         "        PEAK_A[ax.name] = max(PEAK_A[ax.name], abs(b.sp_a[ax.index]))",
         "        PEAK_J[ax.name] = max(PEAK_J[ax.name], abs(b.sp_j[ax.index]))",
+        "        for f in ('sp_p', 'sp_v', 'sp_a', 'act_p', 'act_v', 'cmd_v', 'fe'):",
+        "            if not np.isfinite(getattr(b, f)[ax.index]):",
+        "                NONFINITE.append((t, ax.name, f))",
         "",
         "",
         "def cycle(n=1):",

@@ -368,7 +368,7 @@ class Run:
                     where = line.split("plcmotion/", 1)[-1].split('"')[0] + ":" + line.rsplit(" in ", 1)[-1]
                     break
             self._fail("stop", "Controller", f"controller went to STOP: {head}", ctl.stop_reason or "",
-                       (head.split(":")[0][:60], where))
+                       (head.split(" at t =")[0].split(":")[0][:60], where))
             return
         if self._nonfinite is not None:
             self._fail("nonfinite", "bank", self._nonfinite, "", (self._nonfinite.split(" of ")[0],

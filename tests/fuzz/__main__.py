@@ -66,7 +66,8 @@ def main(argv: list[str] | None = None) -> int:
 
     res = campaign(args.episodes, args.seed, args.jobs, args.dialect, progress, ignore=tuple(args.ignore))
     print(f"{res.episodes} episodes ({res.calls} instruction calls, {res.cycles} application cycles) in "
-          f"{res.seconds:.1f} s: {res.episodes / res.seconds:.1f} episodes/s with {args.jobs} job(s); "
+          f"{res.seconds:.1f} s: {res.episodes / res.seconds:.1f} episodes/s with {args.jobs} job(s) "
+          f"({res.episodes / max(res.cpu, 1e-9):.1f} episodes per CPU second); "
           f"{res.failed_episodes()} failed, {len(res.failures)} distinct failure(s)")
     report(res, shrink_budget=args.shrink, dialect=args.dialect, ignore=tuple(args.ignore))
     return 1 if res.failures else 0

@@ -19,6 +19,7 @@ class Result:
     calls: int = 0
     cycles: int = 0
     seconds: float = 0.0
+    cpu: float = 0.0           # CPU seconds of the episodes (all processes): the rate on an idle machine
     failures: dict[str, list[tuple[int, Failure]]] = field(default_factory=dict)   # signature -> (seed, failure)
 
     def failed_episodes(self) -> int:
@@ -33,9 +34,11 @@ def run_seed(seed: int, dialect: str | None = None, ignore: tuple[str, ...] = ()
     return seed, f, r.calls, r.cycle + 1
 
 
-def _chunk(args: tuple[int, int, str | None, tuple[str, ...]]) -> list[tuple[int, Failure | None, int, int]]:
+def _chunk(args: tuple[int, int, str | None, tuple[str, ...]]) -> tuple[float, list[tuple[int, Failure | None, int, int]]]:
     start, n, dialect, ignore = args
-    return [run_seed(s, dialect, ignore) for s in range(start, start + n)]
+    t0 = time.process_time()
+    out = [run_seed(s, dialect, ignore) for s in range(start, start + n)]
+    return time.process_time() - t0, out
 
 
 def campaign(episodes: int, seed: int = 0, jobs: int = 1, dialect: str | None = None,
@@ -46,7 +49,9 @@ def campaign(episodes: int, seed: int = 0, jobs: int = 1, dialect: str | None = 
     t0 = time.monotonic()
     work = [(s, min(chunk, seed + episodes - s), dialect, ignore) for s in range(seed, seed + episodes, chunk)]
 
-    def take(batch):
+    def take(timed):
+        cpu, batch = timed
+        res.cpu += cpu
         for s, f, calls, cycles in batch:
             res.episodes += 1
             res.calls += calls

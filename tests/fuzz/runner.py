@@ -153,6 +153,7 @@ class Run:
         self._busy_still: dict[str, int] = {}
         self._prev_exec: dict[str, bool] = {}
         self._job_axes: dict[str, list] = {}
+        self.stopped = False
         self._prev_out: dict[str, dict] = {}
         self.ctl: Controller | None = None
         try:
@@ -251,12 +252,13 @@ class Run:
         for c in range(ep.cycles):
             self.cycle = c
             self.step(self._ops.get(c, ()))
-            if self.failure is not None and stop_at_failure:
+            if (self.failure is not None and stop_at_failure) or self.stopped:
                 return self.failure
         # bounded drain: an instruction Busy at standstill gets STUCK_SECONDS to finish
         limit = int(STUCK_SECONDS / self.ctl.app_cycle) + 1
         extra = 0
-        while self.failure is None and any(0 < n for n in self._busy_still.values()) and extra < limit:
+        while (self.failure is None and not self.stopped and any(0 < n for n in self._busy_still.values())
+               and extra < limit):
             self.cycle += 1
             extra += 1
             self.step(())
@@ -369,6 +371,7 @@ class Run:
                     break
             self._fail("stop", "Controller", f"controller went to STOP: {head}", ctl.stop_reason or "",
                        (head.split(" at t =")[0].split(":")[0][:60], where))
+            self.stopped = True        # nothing after a STOP is meaningful (also when the STOP is ignored)
             return
         if self._nonfinite is not None:
             self._fail("nonfinite", "bank", self._nonfinite, "", (self._nonfinite.split(" of ")[0],

@@ -376,6 +376,30 @@ def _scenarios(rnd: random.Random, ep: Episode, gen: Gen) -> None:
                 fb["init"][inp] = gen.value(fb, inp, kind)
         ep.fbs.append(fb)
         ep.ops.append(Op(rnd.randint(5, 30), "in", "sync", "Execute", True))
+    if ep.dialect == "S7-1500T" and ep.cams and rnd.random() < 0.15:
+        # a cam restarted by MC_Reset in the cycle a cam value is read (defect 3b)
+        cam = Ref(rnd.choice(ep.cams)["name"])
+        ep.fbs += [{"name": "camread", "cls": rnd.choice(("MC_GetCamFollowingValue", "MC_GetCamLeadingValue")),
+                    "init": {"Cam": cam}},
+                   {"name": "camreset", "cls": "MC_Reset", "init": {"Axis": cam, "Restart": True}}]
+        c = rnd.randint(2, 40)
+        ep.ops += [Op(c, "in", "camread", "Execute", True), Op(c, "in", "camreset", "Execute", True)]
+    if ep.dialect == "S7-1500T" and gen.slaves and rnd.random() < 0.25:
+        # a job rewired to another axis while it is busy (defect 5)
+        cls = rnd.choice(("MC_LeadingValueAdditive", "MC_PhasingAbsolute", "MC_PhasingRelative"))
+        slave = "Axis" if cls == "MC_LeadingValueAdditive" else "Slave"
+        fb = {"name": "rewired", "cls": cls, "init": {slave: Ref(gen.slaves[0])}}
+        if cls != "MC_LeadingValueAdditive":
+            fb["init"]["Master"] = Ref(gen.pos_axes[0])
+        for inp, kind in cat[cls].items():
+            if inp not in fb["init"] and kind not in _TO_KINDS and kind != "bool":
+                fb["init"][inp] = gen.value(fb, inp, kind)
+        ep.fbs.append(fb)
+        c = rnd.randint(10, 60)
+        start = "Enable" if cls == "MC_LeadingValueAdditive" else "Execute"
+        other = rnd.choice(gen.slaves[1:] + gen.pos_axes + [None])
+        ep.ops += [Op(c, "in", "rewired", start, True),
+                   Op(c + rnd.randint(1, 20), "in", "rewired", slave, Ref(other) if other else None)]
     if ep.dialect.startswith("S7-1200") and rnd.random() < 0.5:
         ax = Ref(rnd.choice(gen.pos_axes))
         move = rnd.choice(("MC_MoveRelative", "MC_MoveAbsolute", "MC_MoveVelocity", "MC_MoveJog"))

@@ -38,7 +38,8 @@ Invariants and their scope
    S7-1500: DynamicLimits.MaxAcceleration/MaxDeceleration and DynamicDefaults.EmergencyDeceleration, since
    an emergency stop may brake harder than MaxDeceleration), |setpoint jerk| within the largest jerk
    (S7-1200 DynamicDefaults.Jerk, S7-1500 DynamicLimits.MaxJerk) unless a jerk of 0 (no jerk limitation)
-   was in force at some time.  Scope: only while the axis is enabled and position setpoints are generated
+   was in force at some time.  Scope: only while the axis is enabled (or stopping after a disable) and
+   position setpoints are generated
    (not while the setpoint follows the actual value); not for an axis in synchronous operation (waiting,
    synchronizing, synchronous, phasing, leading value additive, simulated synchronous motion) or with a
    superimposed motion - a following axis follows its leading value (S7-1500T decision 49: "the

@@ -392,7 +392,7 @@ class Run:
         if coupled_before or w.coupled():
             w.grace = True
             return
-        if ax.state != "enabled" or self.ctl.bank.follow_act[ax.index]:
+        if ax.state not in ("enabled", "disabling") or self.ctl.bank.follow_act[ax.index]:
             return
         v, a, j = self._peak_v[k], self._peak_a[k], self._peak_j[k]
         vlim = w.vlim * (1 + REL_TOL) + ABS_TOL

@@ -38,8 +38,9 @@ Invariants and their scope
    S7-1500: DynamicLimits.MaxAcceleration/MaxDeceleration and DynamicDefaults.EmergencyDeceleration, since
    an emergency stop may brake harder than MaxDeceleration), |setpoint jerk| within the largest jerk
    (S7-1200 DynamicDefaults.Jerk, S7-1500 DynamicLimits.MaxJerk) unless a jerk of 0 (no jerk limitation)
-   was in force at some time.  Scope: only while the axis is enabled (or stopping after a disable) and
-   position setpoints are generated
+   was in force at some time.  Scope: only while the axis is enabled (or, for the velocity only, stopping
+   after a disable: S7-1200 StopMode 1 is an immediate stop without deceleration bound) and position
+   setpoints are generated
    (not while the setpoint follows the actual value); not for an axis in synchronous operation (waiting,
    synchronizing, synchronous, phasing, leading value additive, simulated synchronous motion) or with a
    superimposed motion - a following axis follows its leading value (S7-1500T decision 49: "the
@@ -52,7 +53,8 @@ Invariants and their scope
    axis had when last inside (v^2 / 2a with the smallest of Deceleration/EmergencyDeceleration
    (S7-1200) or MaxDeceleration/EmergencyDeceleration (S7-1500), plus two application cycles, the jerk
    build-up time, the drive's off ramp (Plant.OffRampTime: a PROFIdrive/analog axis loses its enable at
-   the limit, decision 21) and the following error).  Limits changed while outside are not judged.
+   the limit, decision 21) and the following error; +10 % for the approximations of this bound).  Limits
+   changed while outside and coordinate jumps (homing) are not judged.
 7. exclusive: on every instruction with Done or CommandAborted outputs, at most one of Done,
    CommandAborted, Error is TRUE and never together with Busy (PLCopen; S7-1200 V6 §9.5.2-§9.5.4); InVelocity,
    InGear and InSync only with Busy and without Error/CommandAborted.  MC_Power and the Enable-type

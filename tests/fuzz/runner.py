@@ -405,6 +405,8 @@ class Run:
         if v > vlim:
             self._fail("velocity", ax.name, f"|setpoint velocity| {v:.6g} > MaxVelocity {w.vlim:.6g} "
                        f"({v / w.vlim:.3g} x), {kind}", "", (self.ep.family(), kind.split()[1]))
+        elif ax.state == "disabling":
+            pass                       # S7-1200 StopMode 1 (immediate stop) has no deceleration bound
         elif a > w.alim * (1 + REL_TOL) + ABS_TOL:
             self._fail("acceleration", ax.name, f"|setpoint acceleration| {a:.6g} > largest configured "
                        f"{w.alim:.6g} ({a / w.alim:.3g} x), {kind}", "", (self.ep.family(), kind.split()[1]))
@@ -438,11 +440,11 @@ class Run:
             return
         _, _, v_in, fe_in = w.inside
         app = self.ctl.app_cycle
-        v_ref = min(w.vlim, v_in + w.alim * app) if w.vlim else v_in
+        v_ref = v_in + w.alim * app    # not capped at MaxVelocity: a superimposed part may add to it
         a_stop = w.stop_acc if math.isfinite(w.stop_acc) else w.alim
         t_j = (a_stop / w.jlim) if w.jlim > 0 and not w.jerk_free else 0.0
         off_ramp = _num(ax.cfg.get("Plant.OffRampTime")) or 0.1
-        allowed = v_ref ** 2 / (2 * a_stop) + v_ref * (2 * app + t_j + off_ramp) + fe_in + 1e-3 * (1 + v_ref)
+        allowed = 1.1 * (v_ref ** 2 / (2 * a_stop) + v_ref * (2 * app + t_j + off_ramp) + fe_in) + 1e-3 * (1 + v_ref)
         excess = max(lo - p, p - hi, lo - act, act - hi)
         if excess > allowed:
             self._fail("swlimit", ax.name, f"{excess:.6g} beyond the SW limit [{lo:g}, {hi:g}] (braking distance "

@@ -12,10 +12,9 @@ import pytest
 from hypothesis import HealthCheck, Phase, settings
 
 from .campaign import campaign
-from .gen import DIALECTS
+from .gen import DIALECTS, generate
 from .machine import FuzzMachine
 from .repro import script
-from .gen import generate
 
 CI_EPISODES = 16           # per dialect: about 5-10 s each on a loaded 2-core machine
 CI_SEED = 20260            # fixed: the same episodes on every run

@@ -53,9 +53,9 @@ def test_a_stop_is_reported():
 
 def test_an_exception_out_of_an_instruction_is_reported_and_shrunk_to_a_script():
     ep = _episode()
-    ep.ops.insert(1, Op(30, "in", "move", "Execute", "yes"))    # a non-boolean at a BOOL input raises TypeError
+    ep.ops.insert(1, Op(30, "in", "move", "Execute", "yes"))    # a non-boolean at a BOOL input: ProgramError
     f = Run(ep).run()
-    assert f is not None and f.kind == "exception" and "TypeError" in f.message
+    assert f is not None and f.kind == "exception" and "ProgramError" in f.message   # a TypeError subclass
     small, f2 = shrink(ep, f, budget=10.0)
     assert f2.signature() == f.signature() and len(small.ops) <= len(ep.ops)
     text = script(small, f2)

@@ -27,12 +27,17 @@ def test_absurd_leading_value_of_an_external_encoder_never_reaches_the_follower_
     enc = ctl.add_external_encoder("Enc", {"Sensor": FINE, "Plant": {"Velocity": 100.0}})
     s = ctl.add_synchronous_axis("S", VIRTUAL, leading_values=[("Enc", mode)])
     pe, ps, gear = MC_Power(), MC_Power(), MC_GearIn()
+    go = []
 
     @ctl.program
     def main():
         pe(Axis=enc, Enable=True)
         ps(Axis=s, Enable=True)
-        gear(Master=enc, Slave=s, Execute=pe.Status and ps.Status)
+        # Execute stays TRUE once started: the encoder fault (alarm 203) removes the encoder's enable,
+        # and with a falling Execute the gearing's Error would show for one call only
+        if pe.Status and ps.Status and not go:
+            go.append(True)
+        gear(Master=enc, Slave=s, Execute=bool(go))
     ctl.run_until(lambda: gear.InGear, timeout=2.0)
     ctl.run(0.1)
     jump = ctl.time + 0.005
@@ -47,6 +52,7 @@ def test_absurd_leading_value_of_an_external_encoder_never_reaches_the_follower_
     assert ctl.mode == "RUN"
     assert gear.Error and not gear.InGear and not gear.Busy and gear.ErrorID == 0x8001
     assert s.StatusWord.Error
+    assert enc.ErrorDetail.Number == 203 and enc.ErrorWord.X5      # the value never left the encoder
     steps = [b[0] - a[0] for a, b in zip(rows, rows[1:])]
     assert all(-1e-9 <= d <= 100.0 * 0.001 * 1.01 for d in steps)          # brakes, no step, no reversal
     assert rows[-1][2] == pytest.approx(0.0, abs=1e-9)

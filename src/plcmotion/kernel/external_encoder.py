@@ -11,6 +11,7 @@ encoder counts whole increments of its resolution, like the encoder of an axis.
 from __future__ import annotations
 
 import math
+import numbers
 import zlib
 from typing import TYPE_CHECKING, Any, Callable, Mapping
 
@@ -18,6 +19,7 @@ import numpy as np
 
 from . import faults as F
 from .config import TagAccessError
+from .fault_injection import _real
 from .faults import Fault, Reaction
 from .jobs import Job, JobState
 from .leading import LeadingValueMixin
@@ -64,6 +66,7 @@ DYNAMIC: dict[str, Callable[["ExternalEncoder"], Any]] = {
     "ErrorDetail.Reaction": lambda e: REACTION_CODES[e.alarms[0].reaction] if e.alarms else 0,
     "StatusSensor[1].State": lambda e: 2 if e.state == "enabled" else 0,
     "StatusSensor[1].Control": lambda e: e.state == "enabled",
+    "StatusSensor[1].Error": lambda e: any(a.kind == F.ENCODER for a in e.alarms),
     "StatusSensor[1].Position": lambda e: e._wrap(e.position),
     "StatusSensor[1].Velocity": lambda e: e.velocity,
     "StatusExtrapolation.FilteredPosition": lambda e: e.extrapolation_status()[0],
@@ -76,6 +79,22 @@ DYNAMIC: dict[str, Callable[["ExternalEncoder"], Any]] = {
     "StatusProvidedLeadingValue.DelayedLeadingValue.Velocity": lambda e: e.delayed_leading_value()[1],
     "StatusProvidedLeadingValue.DelayedLeadingValue.Acceleration": lambda e: e.delayed_leading_value()[2],
 }
+
+
+#: the encoder fault of a measured value that is no number in range (alarm 203, remove enable, §7.1.1)
+_MEASURING_FAULT = F.alarm(F.ENCODER, "hardware", Reaction.REMOVE_ENABLE, "measured value invalid")
+
+
+def _position(x: Any) -> float | None:
+    """``x`` as a position the encoder can deliver: a real number (not bool) within the LREAL position
+    range +-1e12; None for anything else (NaN, inf, 1e300, a string, an int beyond float)."""
+    if isinstance(x, bool) or not isinstance(x, numbers.Real):
+        return None
+    try:
+        v = float(x)
+    except (OverflowError, TypeError, ValueError):
+        return None
+    return v if abs(v) <= E12 else None
 
 
 class ExternalEncoder(LeadingValueMixin, AxisTagsMixin):
@@ -124,9 +143,11 @@ class ExternalEncoder(LeadingValueMixin, AxisTagsMixin):
         self._last: float | None = None
 
     def set_plant_velocity(self, velocity: float) -> None:
-        """Let the measured machine move at ``velocity`` from now on."""
+        """Let the measured machine move at ``velocity`` from now on (a finite number within +-1e12, the
+        range of ``Plant.Velocity``; TypeError/ValueError otherwise)."""
+        v = _real("Plant.Velocity", velocity)
         self._plant_fn = None
-        self.plant_velocity = float(velocity)
+        self.plant_velocity = v
 
     def drive_plant(self, position_of_time: Callable[[float], float] | None) -> None:
         """Let the measured machine follow ``position_of_time(t)`` (None: constant velocity again)."""
@@ -144,9 +165,24 @@ class ExternalEncoder(LeadingValueMixin, AxisTagsMixin):
         # the encoder value of this cycle was sampled at the start of the previous one (T_i, §3.3.6)
         x = self.plant_position
         if self._plant_fn is not None:
-            self.plant_position = float(self._plant_fn(t))
+            try:
+                raw = self._plant_fn(t)
+            except BaseException as exc:  # noqa: BLE001 - user code: a program fault, like a servo hook
+                self._plant_fn = None                   # dropped like a hook; the machine stands where it is
+                self.plant_velocity = 0.0
+                self.ctl._user_fault(f"plant function of external encoder {self.name!r}", exc)
+                if isinstance(exc, KeyboardInterrupt):
+                    raise
+                return
         else:
-            self.plant_position += self.plant_velocity * dt
+            raw = x + self.plant_velocity * dt
+        new = _position(raw)
+        if new is None:
+            # S7-1500T V5 §7.1.1, §A.1.31: a value the encoder cannot deliver is an encoder fault; the
+            # machine model keeps its last valid position
+            self.raise_alarm(_MEASURING_FAULT)
+            return
+        self.plant_position = new
         if self.state != "enabled":
             return
         noise = self.eff["Plant.PositionNoise"]
@@ -154,7 +190,10 @@ class ExternalEncoder(LeadingValueMixin, AxisTagsMixin):
             x += float(self._rng.normal(0.0, noise))
         q = self.increment()
         sign = -1.0 if self.eff["Sensor[1].InverseDirection"] else 1.0
-        measured = math.floor(sign * x / q) * q + self.offset
+        measured = _position(math.floor(sign * x / q) * q + self.offset)
+        if measured is None:                    # counted beyond the position range (offset, fine increments)
+            self.raise_alarm(_MEASURING_FAULT)
+            return
         prev_v = self.velocity
         self.velocity = (measured - self._last) / dt if self._last is not None else 0.0
         self.acceleration = (self.velocity - prev_v) / dt if self._last is not None else 0.0
@@ -203,10 +242,26 @@ class ExternalEncoder(LeadingValueMixin, AxisTagsMixin):
         self.plant_position = pos            # the machine keeps where it is
 
     def raise_alarm(self, fault: Fault, job: Job | None = None) -> None:
-        if fault not in self.alarms:
-            self.alarms.append(fault)
+        if fault in self.alarms:
+            return
+        self.alarms.append(fault)
         if fault.reaction == Reaction.REMOVE_ENABLE:
             self.state = "disabled"
+        if fault.kind == F.ENCODER:
+            self._stop_followers()
+
+    def _stop_followers(self) -> None:
+        """Actual value coupling needs valid actual values (S7-1500T V5 §3.3.2): with an encoder fault the
+        followers coupled to this encoder lose their leading value and are stopped with the alarm of an
+        invalid leading value - once this cycle's setpoints are complete, so that they brake from where
+        they are (as a leading axis proxy does after its tolerance time)."""
+        stop = F.alarm(F.LV_INVALID, self.name, Reaction.STOP, f"actual value of {self.name} invalid")
+
+        def stop_followers(t: float) -> None:
+            for c in list(self.ctl.sync.couplings):
+                if c.source is self and not c.simulated:
+                    c.follower.raise_alarm(stop)
+        self.ctl.sync.after_couplings(stop_followers)
 
     def inject_fault(self, detail: str = "") -> None:
         """Let the encoder fail (encoder error, the actual values are invalid until MC_Reset)."""
@@ -268,6 +323,10 @@ class ExternalEncoder(LeadingValueMixin, AxisTagsMixin):
     def lv_position_controlled(self) -> bool:
         """Actual value coupling needs valid actual values (§3.3.5)."""
         return self.state == "enabled" and not self.alarms
+
+    def actual_values_valid(self) -> bool:
+        """StatusSensor[1].Error FALSE: no encoder fault pending (§A.1.31)."""
+        return not any(a.kind == F.ENCODER for a in self.alarms)
 
     def velocity_lag(self, dt: float) -> float:
         return 0.5 * dt                 # the velocity is the difference of the last two counts

@@ -73,6 +73,8 @@ class Extrapolator:
     def step(self, t: float, dt: float) -> tuple[float, float, float]:
         src = self.source
         e = src.eff
+        if not src.actual_values_valid():
+            return self._without_actual_values(dt)
         p, v = src.actual_values()
         if not self.ready:
             self.pf1 = self.pf2 = p
@@ -112,6 +114,19 @@ class Extrapolator:
         # the extrapolated acceleration; none while the hysteresis holds the leading value back
         self.acceleration = acc if y == x else 0.0
         self._prev = y
+        return self.position, self.velocity, self.acceleration
+
+    def _without_actual_values(self, dt: float) -> tuple[float, float, float]:
+        """No valid actual value (an encoder fault): in the cycle of the fault the last leading value is
+        carried forward, so that the followers, stopped with the fault, brake from where they are at the
+        speed they had; then it stands.  The filters start anew with the next valid value."""
+        if self.ready:
+            a = self.acceleration
+            self.position += dt * (self.velocity + 0.5 * dt * a)
+            self.velocity += dt * a
+            self.ready = False
+        else:
+            self.velocity = self.acceleration = 0.0
         return self.position, self.velocity, self.acceleration
 
     def _hysteresis(self, x: float, width: float) -> float:
@@ -209,6 +224,10 @@ class LeadingValueMixin:
     def actual_values(self: "PositioningAxis1500") -> tuple[float, float]:
         b, i = self.ctl.bank, self.index
         return float(b.act_p[i]), float(b.act_v[i])
+
+    def actual_values_valid(self: "PositioningAxis1500") -> bool:
+        """Are the actual values valid (no encoder fault)?  An axis's are as long as it has them."""
+        return True
 
     def velocity_lag(self: "PositioningAxis1500", dt: float) -> float:
         """Age of the actual velocity relative to the actual position: half a cycle for a velocity that

@@ -51,6 +51,9 @@ ProxyErrorWord = word_type("ErrorWord", {"SystemFault": 0, "ConfigFault": 1, "Us
 ProxyWarningWord = word_type("WarningWord", {"SystemWarning": 0, "ConfigWarning": 1, "UserWarning": 2,
                                              "CommandNotAccepted": 3, "CommunicationWarning": 7})
 ALARM_INVALID = 900
+#: default of LeadingAxisProxy.telegram_time_window [s]: generous for a sender that runs ahead (virtual time
+#: on another process, an application cycle ahead in-process), small against a forged far-future time
+TELEGRAM_TIME_WINDOW = 1.0
 
 
 def _status(p: "LeadingAxisProxy") -> int:
@@ -97,6 +100,7 @@ class LeadingAxisProxy(AxisTagsMixin):
         self.eff = self.cfg
         self.source = source
         self.alarms: list[Fault] = []
+        self._time_window = TELEGRAM_TIME_WINDOW
         self._slot: int | None = None
         self._cascade_slot: int | None = None
         self._reset()
@@ -133,9 +137,17 @@ class LeadingAxisProxy(AxisTagsMixin):
         except Exception:           # a broken transport is a communication error, not a controller STOP
             arrived = []
         newest = self.newest
+        window = self._window()
+        latest = t + window
         for s in arrived:
             when = _time_of(s)
-            if usable(s):
+            ok = usable(s)
+            if when is not None and not (t - (s.delay if ok else self.sender_delay) - window <= when <= latest):
+                # far from the time expected (a forged or broken telegram): taken as invalid, like one
+                # without a time - it must neither become the newest (blocking the genuine telegrams
+                # after it) nor keep the value invalid until its time
+                ok, when = False, None
+            if ok:
                 if newest is None or when > newest.time:
                     self.samples.append(s)
                     newest = self.newest = s
@@ -144,11 +156,29 @@ class LeadingAxisProxy(AxisTagsMixin):
                     if self._bad_time is not None and when > self._bad_time:
                         self._bad_time = None
                 continue
-            # an invalid telegram: newer than the last usable one, or of unknown time (taken as now)
+            # an invalid telegram: newer than the last usable one, or of unknown time (taken as now);
+            # one dated ahead of the local time counts from now
             if when is None:
                 when = newest.time if newest is not None else -math.inf
+            when = min(when, t)
             if newest is None or when >= newest.time:
                 self._bad_time = when if self._bad_time is None else max(self._bad_time, when)
+
+    @property
+    def telegram_time_window(self) -> float:
+        """Admissible distance [s] of a telegram's time from the expected one: a telegram dated after the
+        local time plus this window, or before the local time minus the sender's delay minus this window,
+        is invalid.  The window is at least ten tolerance times (``_window``); default 1 s."""
+        return self._time_window
+
+    @telegram_time_window.setter
+    def telegram_time_window(self, seconds: float) -> None:
+        if isinstance(seconds, bool) or not _finite(seconds) or not float(seconds) > 0.0:
+            raise ValueError(f"{self.name}.telegram_time_window must be a number in (0, 1e12] s, got {seconds!r}")
+        self._time_window = float(seconds)
+
+    def _window(self) -> float:
+        return max(self._time_window, 10.0 * self.eff["Parameter.ToleranceTimeExternalLeadingValueInvalid"])
 
     def update(self, t: float) -> tuple[float, float, float]:
         self._receive(t)

@@ -9,7 +9,10 @@ MC_MoveVelocity on every actor type.  Whatever the dynamics, the axis must
   velocity when only the dynamics of the running job changed;
 * never show NaN/inf in Position or Velocity (§12.9.1);
 * end a positioning that is Done on its target (§11.1.5, §11.1.6);
-* never report the internal error 16#8FFF.
+* never report the internal error 16#8FFF;
+* never plan a jerk above the configured DynamicDefaults.Jerk as long as the jerk was never lowered
+  (S7-1200 V6 §2.4, §5.4.4.4: the jerk is a limit of the motion; only a state that a lowered jerk cannot
+  take back within the velocity bounds may need more, issue 8 defect 1).
 
 Every plan is checked as a whole (all segments of the active profile, including those still to come),
 so a runaway is found even when it would only happen after the end of the test.
@@ -30,6 +33,11 @@ APP, SERVO = 0.004, 0.001
 
 def _log(lo: float, hi: float):
     return st.floats(math.log10(lo), math.log10(hi)).map(lambda x: 10.0 ** x)
+
+
+def profile_jerk(profile) -> float:
+    """Largest |jerk| of a profile over all its segments."""
+    return max(abs(seg.j) for seg in profile.segments)
 
 
 def profile_peak(profile) -> float:
@@ -111,6 +119,18 @@ def _run(s: dict, family: str) -> None:
     job_velocity = s["velocity"]
     restarted = False
     tol = vmax * 1e-6 + 1e-9
+    jerks = [s["jerk"]]                                  # configured jerk values in time order (0: no limit)
+
+    def note_jerk() -> None:
+        j = float(axis.DynamicDefaults.Jerk)
+        if j != jerks[-1]:
+            jerks.append(j)
+
+    def jerk_bound() -> float | None:
+        """The configured jerk the plans must keep, or None when it was lowered or disabled once."""
+        if 0.0 in jerks or any(b < a for a, b in zip(jerks, jerks[1:])):
+            return None
+        return max(jerks)
 
     def check() -> None:
         assert math.isfinite(axis.Position) and math.isfinite(axis.Velocity)
@@ -118,6 +138,9 @@ def _run(s: dict, family: str) -> None:
         assert profile_peak(axis.profile) <= vmax + tol, (axis.profile.segments, vmax)
         if not restarted and family == "S7-1200":
             assert profile_peak(axis.profile) <= job_velocity + tol, (axis.profile.segments, job_velocity)
+        bound = jerk_bound()
+        if bound is not None and not restarted:
+            assert profile_jerk(axis.profile) <= bound * (1 + 1e-9), (axis.profile.segments, jerks)
         assert move.ErrorID != 0x8FFF and power.ErrorID != 0x8FFF, (move.outputs, axis.alarms)
 
     for n in range(45):
@@ -151,6 +174,7 @@ def _run(s: dict, family: str) -> None:
                 move.Acceleration, move.Deceleration, move.Jerk = vmax / times[0], vmax / times[1], \
                     vmax / (times[2] * min(times[3], 1.0))
                 move.Execute = True
+        note_jerk()
         power()
         move()
         ctl.step()

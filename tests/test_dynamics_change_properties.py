@@ -35,9 +35,17 @@ def _log(lo: float, hi: float):
     return st.floats(math.log10(lo), math.log10(hi)).map(lambda x: 10.0 ** x)
 
 
-def profile_jerk(profile) -> float:
-    """Largest |jerk| of a profile over all its segments."""
-    return max(abs(seg.j) for seg in profile.segments)
+def profile_jerk(profile, before=None) -> float:
+    """Largest |jerk| of a profile over all its segments; a step of the acceleration between segments, or
+    from the profile ``before`` it to its start (a re-plan), is an infinite jerk."""
+    segs = profile.segments
+    steps = [(segs[k + 1].a, seg.at(segs[k + 1].t)[2]) for k, seg in enumerate(segs[:-1])]
+    if before is not None:
+        steps.append((segs[0].a, before.at(segs[0].t)[2]))
+    for a_new, a_old in steps:
+        if abs(a_new - a_old) > 1e-6 * max(1.0, abs(a_old)):
+            return math.inf
+    return max(abs(seg.j) for seg in segs)
 
 
 def profile_peak(profile) -> float:
@@ -120,6 +128,7 @@ def _run(s: dict, family: str) -> None:
     restarted = False
     tol = vmax * 1e-6 + 1e-9
     jerks = [s["jerk"]]                                  # configured jerk values in time order (0: no limit)
+    seen = [None]                                        # profiles planned so far
 
     def note_jerk() -> None:
         j = float(axis.DynamicDefaults.Jerk)
@@ -139,8 +148,9 @@ def _run(s: dict, family: str) -> None:
         if not restarted and family == "S7-1200":
             assert profile_peak(axis.profile) <= job_velocity + tol, (axis.profile.segments, job_velocity)
         bound = jerk_bound()
-        if bound is not None and not restarted:
-            assert profile_jerk(axis.profile) <= bound * (1 + 1e-9), (axis.profile.segments, jerks)
+        if bound is not None and not restarted and axis.profile is not seen[-1]:
+            assert profile_jerk(axis.profile, seen[-1]) <= bound * (1 + 1e-9), (axis.profile.segments, jerks)
+        seen.append(axis.profile)
         assert move.ErrorID != 0x8FFF and power.ErrorID != 0x8FFF, (move.outputs, axis.alarms)
 
     for n in range(45):

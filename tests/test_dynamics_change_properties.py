@@ -9,7 +9,10 @@ MC_MoveVelocity on every actor type.  Whatever the dynamics, the axis must
   velocity when only the dynamics of the running job changed;
 * never show NaN/inf in Position or Velocity (§12.9.1);
 * end a positioning that is Done on its target (§11.1.5, §11.1.6);
-* never report the internal error 16#8FFF.
+* never report the internal error 16#8FFF;
+* never plan a jerk above the configured DynamicDefaults.Jerk as long as the jerk was never lowered
+  (S7-1200 V6 §2.4, §5.4.4.4: the jerk is a limit of the motion; only a state that a lowered jerk cannot
+  take back within the velocity bounds may need more, issue 8 defect 1).
 
 Every plan is checked as a whole (all segments of the active profile, including those still to come),
 so a runaway is found even when it would only happen after the end of the test.
@@ -30,6 +33,19 @@ APP, SERVO = 0.004, 0.001
 
 def _log(lo: float, hi: float):
     return st.floats(math.log10(lo), math.log10(hi)).map(lambda x: 10.0 ** x)
+
+
+def profile_jerk(profile, before=None) -> float:
+    """Largest |jerk| of a profile over all its segments; a step of the acceleration between segments, or
+    from the profile ``before`` it to its start (a re-plan), is an infinite jerk."""
+    segs = profile.segments
+    steps = [(segs[k + 1].a, seg.at(segs[k + 1].t)[2]) for k, seg in enumerate(segs[:-1])]
+    if before is not None:
+        steps.append((segs[0].a, before.at(segs[0].t)[2]))
+    for a_new, a_old in steps:
+        if abs(a_new - a_old) > 1e-6 * max(1.0, abs(a_old)):
+            return math.inf
+    return max(abs(seg.j) for seg in segs)
 
 
 def profile_peak(profile) -> float:
@@ -111,6 +127,19 @@ def _run(s: dict, family: str) -> None:
     job_velocity = s["velocity"]
     restarted = False
     tol = vmax * 1e-6 + 1e-9
+    jerks = [s["jerk"]]                                  # configured jerk values in time order (0: no limit)
+    seen = [None]                                        # profiles planned so far
+
+    def note_jerk() -> None:
+        j = float(axis.DynamicDefaults.Jerk)
+        if j != jerks[-1]:
+            jerks.append(j)
+
+    def jerk_bound() -> float | None:
+        """The configured jerk the plans must keep, or None when it was lowered or disabled once."""
+        if 0.0 in jerks or any(b < a for a, b in zip(jerks, jerks[1:])):
+            return None
+        return max(jerks)
 
     def check() -> None:
         assert math.isfinite(axis.Position) and math.isfinite(axis.Velocity)
@@ -118,6 +147,10 @@ def _run(s: dict, family: str) -> None:
         assert profile_peak(axis.profile) <= vmax + tol, (axis.profile.segments, vmax)
         if not restarted and family == "S7-1200":
             assert profile_peak(axis.profile) <= job_velocity + tol, (axis.profile.segments, job_velocity)
+        bound = jerk_bound()
+        if bound is not None and not restarted and axis.profile is not seen[-1]:
+            assert profile_jerk(axis.profile, seen[-1]) <= bound * (1 + 1e-9), (axis.profile.segments, jerks)
+        seen.append(axis.profile)
         assert move.ErrorID != 0x8FFF and power.ErrorID != 0x8FFF, (move.outputs, axis.alarms)
 
     for n in range(45):
@@ -151,6 +184,7 @@ def _run(s: dict, family: str) -> None:
                 move.Acceleration, move.Deceleration, move.Jerk = vmax / times[0], vmax / times[1], \
                     vmax / (times[2] * min(times[3], 1.0))
                 move.Execute = True
+        note_jerk()
         power()
         move()
         ctl.step()

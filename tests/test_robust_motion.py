@@ -92,6 +92,62 @@ def test_lower_jerk_while_braking_does_not_reverse_defect1(actor):
     assert lowest >= -1e-9
 
 
+def _move_relative_takes_over_move_velocity(write_tag: bool) -> dict:
+    """Fuzz seed 100893: analog axis, MC_MoveVelocity accelerating (jerk 6723.6, Acceleration 52.8,
+    MaxVelocity 11.35) taken over 8 ms later by MC_MoveRelative(33.66, Velocity 0.31); ``write_tag``: a
+    non-dynamic tag (PositionLimits_SW.MinPosition, SW limits inactive) written in the same cycle, which
+    re-plans the new job from a state that already overshoots its velocity."""
+    ctl = Controller(servo_cycle=0.001, app_cycle=0.004, technology_version=6)
+    axis = ctl.add_positioning_axis("Axis_1", {
+        "Actor.Type": 0, "DynamicLimits.MaxVelocity": 11.35, "DynamicDefaults.Acceleration": 52.8,
+        "DynamicDefaults.Deceleration": 61.89, "DynamicDefaults.EmergencyDeceleration": 175.58,
+        "DynamicDefaults.Jerk": 6723.6})
+    power = MC_Power(Axis=axis, Enable=True)
+    run = MC_MoveVelocity(Axis=axis, Velocity=10.0)
+    rel = MC_MoveRelative(Axis=axis, Distance=33.66, Velocity=0.31)
+    peak = {"v": 0.0, "j": 0.0}
+
+    @ctl.on_post_servo
+    def _peaks(t):
+        i = axis.index
+        peak["v"] = max(peak["v"], abs(float(ctl.bank.sp_v[i])))
+        peak["j"] = max(peak["j"], abs(float(ctl.bank.sp_j[i])))
+
+    def scan(n: int = 1) -> None:
+        for _ in range(n):
+            power(), run(), rel()
+            ctl.step()
+
+    scan(3)
+    run.Execute = True
+    scan(2)                                              # 8 ms of acceleration
+    start = axis.Position
+    if write_tag:
+        axis.set_tag("PositionLimits_SW.MinPosition", 163.59)
+    rel.Execute = True
+    scan(10)
+    ctl.run(110.0)                                       # 33.66 at 0.31: about 109 s; the kernel goes on
+    for _ in range(500):
+        scan()
+        if rel.Done or rel.Error:
+            break
+    return dict(peak, done=rel.Done, error=rel.ErrorID, run_aborted=run.CommandAborted,
+                end=axis.Position - start)
+
+
+@pytest.mark.parametrize("write_tag", [False, True], ids=["plain", "tag-write"])
+def test_move_relative_taking_over_move_velocity_keeps_the_configured_jerk_defect1(write_tag):
+    """S7-1200 V6 §11.1.6.1 (MC_MoveRelative aborts a running MC_MoveVelocity), §2.4/§5.4.4.4 (the jerk is
+    a configured limit of the motion, MaxVelocity the hard bound): the new profile may overshoot the new
+    velocity 0.31 briefly with the configured jerk (as before issue 8), but neither the settling of defect
+    1's fix nor a re-plan after a tag write may raise the jerk above 6723.6 (it was 22374.9)."""
+    r = _move_relative_takes_over_move_velocity(write_tag)
+    assert r["done"] and r["error"] == 0 and r["run_aborted"], r
+    assert r["j"] <= 6723.6 * (1 + 1e-9), r
+    assert r["v"] <= 11.35 * (1 + 1e-9), r
+    assert r["end"] == pytest.approx(33.66, abs=1e-6), r
+
+
 # --- defect 5: nothing escapes an instruction -------------------------------------------------------------
 @pytest.mark.parametrize("actor", SERVO_ACTORS)
 @pytest.mark.parametrize("times", [dict(RampUpTime=5.0, RampDownTime=5.0, EmergencyRampTime=1e12, JerkTime=1e3),

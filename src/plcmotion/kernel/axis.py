@@ -14,7 +14,7 @@ from . import parameters as P
 from .faults import Fault, Reaction
 from .jobs import MOTION_KINDS, POSITIONING_KINDS, Job, JobKind, JobState
 from .motion import DirectionFault, MotionPlanner, Plan, limits, modulo_target, wrap
-from .profiles import Planner, PlanningError, Profile
+from .profiles import Planner, PlanningError, Profile, velocity_reach
 from .config import ConfigMixin
 from .fault_injection import FaultInjectionMixin
 from .homing import HomingMixin
@@ -670,7 +670,10 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
         t_plan = self._slice_start(t) if new_command else t
         p, v, a = self._state_at(t_plan)
         try:
-            plan = self.motion.plan(spec or job, t_plan, p, v, a, replan=replan)
+            # a re-plan may use the velocities the running plan reaches anyway (no jerk above the limit
+            # to avoid an overshoot the old plan had too)
+            reach = velocity_reach(self.profile, t_plan) if replan else None
+            plan = self.motion.plan(spec or job, t_plan, p, v, a, replan=replan, reach=reach)
         except DirectionFault as exc:
             self.raise_alarm(F.alarm(F.DIRECTION, exc.detail, Reaction.STOP), job=job)
             return False

@@ -91,8 +91,8 @@ def limits(axis: "PositioningAxis", velocity: float | None = None, *, emergency:
                   max_velocity=vmax)
 
 
-def _strict(lim: Limits, on: bool) -> Limits:
-    return dataclasses.replace(lim, strict=True) if on else lim
+def _strict(lim: Limits, on: bool, reach: tuple[float, float] | None = None) -> Limits:
+    return dataclasses.replace(lim, strict=True, reach=reach) if on else lim
 
 
 def max_dynamics(axis: "PositioningAxis") -> Limits:
@@ -175,14 +175,16 @@ class MotionPlanner:
             raise DirectionFault("not_permitted")
 
     # --- job plans --------------------------------------------------------------------------------------
-    def plan(self, job: Job, t: float, p: float, v: float, a: float, *, replan: bool = False) -> Plan:
+    def plan(self, job: Job, t: float, p: float, v: float, a: float, *, replan: bool = False,
+             reach: tuple[float, float] | None = None) -> Plan:
         """Plan ``job`` from the state (p, v, a) at ``t``; ``replan``: the running job anew with changed
-        dynamics (S7-1200 V6 §12.9.11 code 10), which must not leave the job's velocity bounds either."""
+        dynamics (S7-1200 V6 §12.9.11 code 10), which must not leave the job's velocity bounds either --
+        beyond the velocities ``reach`` the running plan passes through anyway (see ``Limits.reach``)."""
         ax = self.axis
         kind = job.kind
         pl = self.planner
         if kind in (JobKind.ABSOLUTE, JobKind.RELATIVE):
-            lim = _strict(limits(ax, ax.commanded_velocity(job.velocity), job=job), replan)
+            lim = _strict(limits(ax, ax.commanded_velocity(job.velocity), job=job), replan, reach)
             self.last_limits = lim
             target = job.target
             if lim.velocity <= 0.0:                  # velocity override 0 %: wait at standstill
@@ -199,7 +201,7 @@ class MotionPlanner:
             return self._guard(Plan(profile), t, p, v, a, lim, cruise=abs(job.velocity))
         if kind in (JobKind.VELOCITY, JobKind.JOG):
             target_v = 0.0 if job.jog_released else ax.commanded_velocity(job.velocity)
-            lim = _strict(limits(ax, None, job=job), replan)
+            lim = _strict(limits(ax, None, job=job), replan, reach)
             self.last_limits = lim
             if abs(target_v) > lim.velocity:
                 target_v = math.copysign(lim.velocity, target_v)
@@ -209,7 +211,7 @@ class MotionPlanner:
             plan = self._guard(Plan(profile, reach_time=profile.t_end), t, p, v, a, lim, cruise=abs(target_v))
             return plan
         if kind in (JobKind.HALT, JobKind.STOP):
-            lim = _strict(max_dynamics(ax) if job.extra.get("max_dynamics") else limits(ax, None, job=job), replan)
+            lim = _strict(max_dynamics(ax) if job.extra.get("max_dynamics") else limits(ax, None, job=job), replan, reach)
             self.last_limits = lim
             return self._guard(Plan(pl.stop(t, p, v, a, lim)), t, p, v, a, lim, cruise=abs(v))
         raise ValueError(f"no motion plan for {kind}")

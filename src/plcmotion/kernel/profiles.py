@@ -93,6 +93,8 @@ class Limits:
     limited: tuple[str, ...] = ()   # commanded values cut to the dynamic limits (S7-1500 alarms 501-504)
     max_velocity: float = 0.0       # velocity limit of the axis (0: ``velocity``), never to be exceeded
     strict: bool = False            # re-plan of a running job: its own velocity bounds are hard too
+    reach: tuple[float, float] | None = None   # re-plan: (lowest, highest) velocity the running plan still
+                                               # passes through; the new plan may use that range too
 
     @property
     def hard_velocity(self) -> float:
@@ -273,28 +275,38 @@ class Planner:
         """Take back an acceleration the jerk of ``lim`` cannot absorb within the velocity limits.
 
         Speeds are counted in direction ``sign``.  Reducing the builder's acceleration to zero with the
-        jerk limit ends at speed ``u0``; when ``u0`` stays between standstill (no reversal) and the axis's
-        velocity limit -- for a re-plan of the running job (``lim.strict``) between ``lo`` and ``hi`` --
-        the state is left to ruckig as it is: the overshoot of a new command's velocity that the jerk
-        limit makes unavoidable is ordinary.  Otherwise the acceleration is brought to
-        zero with the smallest jerk (at least the configured one) that ends within [``lo``, ``hi``] --
-        the bounds of the job (its velocity, the target velocity) -- or stepped to zero when the speed is
-        already at the bound.
+        jerk limit ends at speed ``u0``.  The bounds ``u0`` must stay in: standstill (no reversal) and the
+        axis's velocity limit; for a re-plan of the running job (``lim.strict``) the job's own bounds
+        [``lo``, ``hi``], widened to the speeds the running plan reaches anyway (``lim.reach``, up to the
+        velocity limit) -- a re-plan need not be stricter than the plan it replaces, so a state that the
+        old plan's overshoot explains keeps the configured jerk.  Within the bounds the state is left to
+        ruckig as it is: the overshoot of a new command's velocity that the jerk limit makes unavoidable
+        is ordinary.  Otherwise the acceleration is brought to zero with the smallest jerk (at least the
+        configured one) that just ends on the violated bound (``hi`` for a positioning's search, see
+        ``_settle_before``), or stepped to zero when the speed is already there.
         """
         jerk = lim.jerk
         alpha = sign * b.a
         if jerk == INF or abs(alpha) <= 1e-12:
             return
         u = sign * b.v
-        hard = max(hi if lim.strict else lim.hard_velocity, u)
-        floor = min(lo, u) if lim.strict else 0.0
+        hard_v = lim.hard_velocity
+        if lim.strict:
+            r_lo, r_hi = lim.reach if lim.reach is not None else (b.v, b.v)
+            s_lo, s_hi = (r_lo, r_hi) if sign > 0 else (-r_hi, -r_lo)
+            top = max(hi, u, min(s_hi, hard_v))
+            floor = min(lo, u, max(s_lo, 0.0))
+            end_top = top
+        else:
+            top, floor = max(hard_v, u), 0.0
+            end_top = max(min(hi, hard_v), u)
         u0 = u + alpha * abs(alpha) / (2.0 * jerk)
-        tol = 1e-9 * max(1.0, hard)
-        if floor - tol <= u0 <= hard + tol:
+        tol = 1e-9 * max(1.0, top)
+        if floor - tol <= u0 <= top + tol:
             return
-        bound = max(hi, u) if alpha > 0 else min(lo, u)
+        bound = end_top if alpha > 0 else floor
         room = abs(bound - u)
-        if room > 1e-12 * max(1.0, hard):
+        if room > 1e-12 * max(1.0, top):
             j2 = max(jerk, alpha * alpha / (2.0 * room))
             b.add(abs(alpha) / j2, b.p, b.v, b.a, -math.copysign(j2, b.a))
             b.v = sign * bound
@@ -312,12 +324,13 @@ class Planner:
         def short(c: _Builder) -> bool:
             return (target - self.stop_position(c.p, c.v, c.a, lim)) * sign >= -1e-12 * max(1.0, abs(target))
 
-        c = settled(lim.velocity)
+        top = lim.velocity if lim.strict else lim.hard_velocity
+        c = settled(top)
         if c.a == b.a:
             return                                   # the new jerk absorbs the acceleration
         u = sign * b.v
-        if lim.velocity > u and not short(c):
-            lo, hi = u, lim.velocity
+        if top > u and not short(c):
+            lo, hi = u, top
             for _ in range(60):
                 mid = 0.5 * (lo + hi)
                 if short(settled(mid)):
@@ -338,7 +351,7 @@ class Planner:
             b.jump(0.0)
             return
         sign = math.copysign(1.0, b.v if abs(b.v) > _EPS_V else b.a)
-        self._settle(b, lim, sign, 0.0, abs(b.v))
+        self._settle(b, lim, sign, 0.0, abs(b.v))          # a stop never speeds up to settle
         if abs(b.v) <= max(_EPS_V, vss) and abs(b.a) <= 1e-12:
             b.jump(0.0)
             return
@@ -479,7 +492,7 @@ class Planner:
         sign = 1.0 if target_v > 0 else -1.0
         amax, amin = self._signed_limits(sign, lim)
         u, ut = sign * b.v, abs(target_v)
-        self._settle(b, lim, sign, min(u, ut), max(u, ut))
+        self._settle(b, lim, sign, min(u, ut), max(u, ut) if lim.strict else lim.hard_velocity)
         if abs(b.v - target_v) > 1e-12 or (lim.jerk < INF and abs(b.a) > 1e-12):
             self._solve(b, target_p=None, target_v=target_v, vmax=abs(target_v), amax=amax, amin=amin,
                         jerk=lim.jerk)
@@ -566,6 +579,28 @@ class Planner:
 
 class ReversalRequired(Exception):
     """The requested motion needs a change of direction."""
+
+
+def velocity_reach(profile: Profile, t: float) -> tuple[float, float]:
+    """(lowest, highest) velocity ``profile`` passes through from ``t`` on (extremes inside segments too)."""
+    lo = hi = profile.at(t)[1]
+    segs = profile.segments
+    for k, seg in enumerate(segs):
+        end = profile.end_of(k)
+        if end <= t:
+            continue
+        taus = [max(seg.t, t) - seg.t]
+        if end < INF:
+            taus.append(end - seg.t)
+        elif seg.a != 0.0 or seg.j != 0.0:
+            # a final segment that keeps changing the velocity: unbounded on that side
+            return (-INF if seg.a < 0 or seg.j < 0 else lo), (INF if seg.a > 0 or seg.j > 0 else hi)
+        if seg.j != 0.0 and taus[0] < -seg.a / seg.j < taus[-1]:
+            taus.append(-seg.a / seg.j)
+        for tau in taus:
+            v = seg.v + tau * (seg.a + tau * seg.j / 2)
+            lo, hi = min(lo, v), max(hi, v)
+    return lo, hi
 
 
 def first_time_at_velocity(profile: Profile, v: float, tol: float = 1e-9) -> float | None:

@@ -19,7 +19,7 @@ import numpy as np
 
 from . import faults as F
 from .config import TagAccessError
-from .fault_injection import _real
+from .fault_injection import checked_real
 from .faults import Fault, Reaction
 from .jobs import Job, JobState
 from .leading import LeadingValueMixin
@@ -145,7 +145,7 @@ class ExternalEncoder(LeadingValueMixin, AxisTagsMixin):
     def set_plant_velocity(self, velocity: float) -> None:
         """Let the measured machine move at ``velocity`` from now on (a finite number within +-1e12, the
         range of ``Plant.Velocity``; TypeError/ValueError otherwise)."""
-        v = _real("Plant.Velocity", velocity)
+        v = checked_real("Plant.Velocity", velocity)
         self._plant_fn = None
         self.plant_velocity = v
 

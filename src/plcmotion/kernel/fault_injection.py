@@ -31,7 +31,8 @@ KINDS = tuple(DEVICE_ALARMS) + LOSS_KINDS
 _LIMIT = 1e12
 
 
-def _real(name: str, value: Any) -> float:
+def checked_real(name: str, value: Any) -> float:
+    """A REAL argument of the public fault and plant API: a finite number within ±1e12, else a clear error."""
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise TypeError(f"{name} must be a number, got {value!r}")
     try:
@@ -162,8 +163,8 @@ class FaultInjectionMixin:
 def check_load(axis: "PositioningAxis", jump: Any = 0.0, force: Any = None, blocked: Any = None
                ) -> tuple[float, float | None]:
     """The checked (jump, force) of a load disturbance of ``axis``; TypeError/ValueError naming the problem."""
-    j = _real("jump", jump)
-    f = None if force is None else _real("force", force)
+    j = checked_real("jump", jump)
+    f = None if force is None else checked_real("force", force)
     if blocked is not None and not isinstance(blocked, bool):
         raise TypeError(f"blocked must be True, False or None, got {blocked!r}")
     if axis.sim:
@@ -190,7 +191,7 @@ class FaultScenario:
         self._hooked = False
 
     def at(self, t: float, action: Callable[[], Any], what: str = "") -> None:
-        t = _real("time", t)
+        t = checked_real("time", t)
         if not callable(action):        # found now, not as a STOP at time t
             raise TypeError(f"action must be callable (a function without arguments), got {action!r}")
         if t < 0.0:

@@ -718,7 +718,11 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
         elif self.sw_limits_effective() and self.state in (ENABLED, DISABLING):
             p, v, a = self._state_now()
             if abs(v) > 1e-12:
-                plan = self.motion.stop(t, p, v, a, emergency=False, jerk=True)
+                # an internal stop in force (error reaction, disabling) keeps its ramp: the emergency ramp
+                # has no jerk limit and its own deceleration (S7-1200 V6 §12.8; fuzz seed 124621)
+                running = self._plan.stop if self._plan is not None else None
+                emergency, jerk = running if running is not None else (False, True)
+                plan = self.motion.stop(t, p, v, a, emergency=emergency, jerk=jerk)
                 self._start_profile(plan.profile, plan)
 
     def release_jog(self, job: Job) -> None:

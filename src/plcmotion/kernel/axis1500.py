@@ -182,6 +182,12 @@ class PositioningAxis1500(SuperimposedMixin, LeadingValueMixin, PositioningAxis)
     def _replan(self) -> None:
         """A changed tag (velocity override, dynamic limits) acts at once on the running job, with the
         job's dynamics (§A.1.21); WarningWord.X6 follows the new plan."""
+        stop = self.stop_job
+        if stop is not None and stop.busy and stop.mode == 0 and abs(self._state_now()[1]) > 1e-12:
+            # MC_Stop Mode 0 runs down the emergency-stop ramp (§6.1.5.3): a re-plan keeps that ramp, never
+            # a stop with the dynamic defaults (fuzz seed 201112)
+            self._plan_stop(stop, self.now)
+            return
         job = self.job
         before = self.motion.last_limits
         if job is not None and job.busy and job.kind in (JobKind.VELOCITY, JobKind.JOG) and not self._interpolating \

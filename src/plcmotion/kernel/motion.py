@@ -28,6 +28,7 @@ class Plan:
     cross_time: float | None = None      # exceeded: when the setpoint passes the limit
     reach_time: float | None = None      # velocity jobs: when the commanded velocity is reached
     override_hold: bool = False          # velocity override 0 %: the positioning waits at standstill
+    stop: tuple[bool, bool] | None = None  # an internal stop: its (emergency, jerk), kept by a re-plan
 
 
 class DirectionFault(Exception):
@@ -228,9 +229,11 @@ class MotionPlanner:
             lim = limits(ax, None, emergency=emergency, jerk=jerk)
             profile = self.stop_with(t, p, v, a, lim)
         try:
-            return self._guard(Plan(profile), t, p, v, a, lim, cruise=abs(v))
+            plan = self._guard(Plan(profile), t, p, v, a, lim, cruise=abs(v))
         except (PlanningError, DirectionFault):
-            return Plan(profile)
+            plan = Plan(profile)
+        plan.stop = (emergency, jerk)
+        return plan
 
     def stop_with(self, t: float, p: float, v: float, a: float, lim: Limits) -> Profile:
         """A stop with the dynamics ``lim`` that always gives a profile: where even the closed-form

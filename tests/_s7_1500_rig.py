@@ -75,3 +75,15 @@ class Rig:
     def first(self, key: str, value: Any = True) -> dict | None:
         """The first logged row where ``key`` has ``value``."""
         return next((r for r in self.log if r.get(key) == value), None)
+
+
+class Feed:
+    """A leading value source the test fills (a stand-in for a cross-PLC transport): ``fetch`` hands over
+    what the test queued since the last call."""
+
+    def __init__(self):
+        self.queue = []
+
+    def fetch(self, needed):
+        out, self.queue = self.queue, []
+        return out

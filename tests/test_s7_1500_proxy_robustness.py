@@ -15,21 +15,11 @@ from hypothesis import strategies as st
 
 from plcmotion import Controller
 from plcmotion.kernel.leading_value import LeadingValueSample
+from _s7_1500_rig import Feed
 from plcmotion.s7_1500 import MC_GearIn, MC_Power, MC_Reset
 
 VIRTUAL = {"VirtualAxis": {"Mode": 1}}
 V = 10.0                      # velocity of the leading axis on the other controller
-
-
-class Feed:
-    """A leading value source the test fills: one telegram per application cycle."""
-
-    def __init__(self):
-        self.queue = []
-
-    def fetch(self, needed):
-        out, self.queue = self.queue, []
-        return out
 
 
 class Remote:

@@ -17,20 +17,12 @@ from hypothesis import strategies as st
 
 from plcmotion import Controller
 from plcmotion.kernel.leading_value import LeadingValueSample
+from _s7_1500_rig import Feed
 from plcmotion.s7_1500 import MC_GearIn, MC_Power
 
 VIRTUAL = {"VirtualAxis": {"Mode": 1}}
 V = 10.0
 CYCLE = 0.004
-
-
-class Feed:
-    def __init__(self):
-        self.queue = []
-
-    def fetch(self, needed):
-        out, self.queue = self.queue, []
-        return out
 
 
 class Remote:

@@ -255,13 +255,8 @@ class ExternalEncoder(LeadingValueMixin, AxisTagsMixin):
         followers coupled to this encoder lose their leading value and are stopped with the alarm of an
         invalid leading value - once this cycle's setpoints are complete, so that they brake from where
         they are (as a leading axis proxy does after its tolerance time)."""
-        stop = F.alarm(F.LV_INVALID, self.name, Reaction.STOP, f"actual value of {self.name} invalid")
-
-        def stop_followers(t: float) -> None:
-            for c in list(self.ctl.sync.couplings):
-                if c.source is self and not c.simulated:
-                    c.follower.raise_alarm(stop)
-        self.ctl.sync.after_couplings(stop_followers)
+        self.ctl.sync.stop_followers_of(
+            self, F.alarm(F.LV_INVALID, self.name, Reaction.STOP, f"actual value of {self.name} invalid"))
 
     def inject_fault(self, detail: str = "") -> None:
         """Let the encoder fail (encoder error, the actual values are invalid until MC_Reset)."""

@@ -267,13 +267,8 @@ class LeadingAxisProxy(AxisTagsMixin):
             self.alarms.append(fault)
         # the followers coupled to an invalid leading value are stopped - once this servo cycle's
         # setpoints are complete, so that they brake from where they are
-        stop = F.alarm(F.LV_INVALID, self.name, Reaction.STOP, f"leading value of {self.name} invalid")
-
-        def stop_followers(t: float) -> None:
-            for c in list(self.ctl.sync.couplings):
-                if c.source is self and not c.simulated:
-                    c.follower.raise_alarm(stop)
-        self.ctl.sync.after_couplings(stop_followers)
+        self.ctl.sync.stop_followers_of(
+            self, F.alarm(F.LV_INVALID, self.name, Reaction.STOP, f"leading value of {self.name} invalid"))
 
     # --- leading value source ------------------------------------------------------------------------------
     def lv_value(self, mode: str, t: float) -> tuple[float, float, float]:

@@ -282,6 +282,15 @@ class SyncStage:
         self._once.append(fn)
         self.active = True
 
+    def stop_followers_of(self, source: Any, alarm: Any) -> None:
+        """The leading value of ``source`` became invalid: every follower coupled to it (not simulated)
+        gets ``alarm`` once this servo cycle's setpoints are complete, so that it brakes from where it is."""
+        def stop(t: float) -> None:
+            for c in list(self.couplings):
+                if c.source is source and not c.simulated:
+                    c.follower.raise_alarm(alarm)
+        self.after_couplings(stop)
+
     def register_post(self, fn: Callable[[float], None]) -> None:
         if fn not in self._post:
             self._post.append(fn)

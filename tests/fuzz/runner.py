@@ -195,7 +195,6 @@ class Run:
         n = len(self.axes)
         self._peak_v = np.zeros(n)
         self._peak_a = np.zeros(n)
-        self._peak_j = np.zeros(n)
         # Acceleration built without a jerk limit: the setpoint acceleration stepped (a jerk-free ramp was in
         # force: the emergency-stop ramp of MC_Stop Mode 0 and of error reactions, S7-1500T sync V5 §6.1.5.2 /
         # §6.1.5.3, S7-1200 V6 error reaction "without any jerk limit"; or Jerk 0 = no jerk limitation,
@@ -204,7 +203,14 @@ class Run:
         self._prev_a = np.zeros(n)
         self._prev_j = np.zeros(n)
         self._free_acc = np.zeros(n, dtype=bool)     # outstanding jerk-free acceleration
-        self._free_seen = np.zeros(n, dtype=bool)    # ... at some servo cycle of this application cycle
+        # Settling (docs/decisions.md row 66): where a re-plan starts with an acceleration the configured jerk
+        # cannot take back before the velocity passes its bound, the first segment of the new plan takes it
+        # back with the smallest sufficient jerk, above the configured one.  Such a segment starts at the
+        # re-plan, opposes the acceleration and ends when it is zero; its jerk is out of the jerk check's scope
+        # (the velocity check still holds).  The segment is recognised by its start time.
+        self._jlim = np.zeros(n)                     # largest configured jerk per axis (from the watches)
+        self._settle_t = np.full(n, -np.inf)         # start time of the settling segment in force
+        self._peak_j = np.zeros(n)                   # peak |jerk| of the samples outside settling segments
         self._nonfinite: str | None = None
         # the bank holds exactly the episode's axes in order: no gather needed
         self._whole_bank = ctl.bank.n == n and list(self.index) == list(range(n))
@@ -235,20 +241,36 @@ class Run:
             if self._whole_bank:
                 np.maximum(self._peak_v, np.abs(b.sp_v), out=self._peak_v)
                 np.maximum(self._peak_a, np.abs(b.sp_a), out=self._peak_a)
-                np.maximum(self._peak_j, np.abs(b.sp_j), out=self._peak_j)
             else:
                 idx = self.index
                 np.maximum(self._peak_v, np.abs(b.sp_v[idx]), out=self._peak_v)
                 np.maximum(self._peak_a, np.abs(b.sp_a[idx]), out=self._peak_a)
-                np.maximum(self._peak_j, np.abs(b.sp_j[idx]), out=self._peak_j)
             a = b.sp_a if self._whole_bank else b.sp_a[self.index]
             j = b.sp_j if self._whole_bank else b.sp_j[self.index]
-            # a change of acceleration larger than the jerks in force can explain is a step
-            slack = np.maximum(np.abs(j), np.abs(self._prev_j)) * self.ctl.servo_cycle * (1 + REL_TOL) \
-                + ABS_TOL * (1 + np.abs(a))
+            if self._whole_bank:
+                seg_t, seg_a, seg_j = b.seg_t, b.seg_a, b.seg_j
+            else:
+                idx = self.index
+                seg_t, seg_a, seg_j = b.seg_t[idx], b.seg_a[idx], b.seg_j[idx]
+            fresh = np.abs(seg_t - t) <= 1e-12         # a plan made at this sample
+            jl = self._jlim * (1 + REL_TOL) + ABS_TOL
+            starts = fresh & (np.abs(seg_j) > jl) & (seg_j * seg_a < 0)
+            if starts.any():
+                self._settle_t = np.where(starts, seg_t, self._settle_t)
+            settling = (seg_t == self._settle_t) & (a * seg_a >= 0) & (j == seg_j)
+            # a change of acceleration larger than the jerks in force can explain is a step; over the interval
+            # before a fresh plan the old plan's jerk was in force, not the new one's
+            j_in_force = np.where(fresh, np.maximum(np.abs(self._prev_j), self._jlim),
+                                  np.maximum(np.abs(j), np.abs(self._prev_j)))
+            slack = j_in_force * self.ctl.servo_cycle * (1 + REL_TOL) + ABS_TOL * (1 + np.abs(a))
             stepped = np.abs(a - self._prev_a) > slack
             self._free_acc = (self._free_acc | stepped) & (np.abs(a) > ABS_TOL)
-            self._free_seen |= self._free_acc | stepped
+            # the jerk of a sample counts unless a settling segment, a step or a jerk-free acceleration explains it
+            exempt = settling | stepped | self._free_acc
+            jabs = np.abs(j)
+            if exempt.any():
+                jabs = np.where(exempt, 0.0, jabs)
+            np.maximum(self._peak_j, jabs, out=self._peak_j)
             self._prev_a[:] = a
             self._prev_j[:] = j
         except Exception as exc:  # pragma: no cover - a defect of the fuzzer itself
@@ -305,11 +327,11 @@ class Run:
         if ops or self.cycle == 0 or any(fb.Done for fb in self._tag_writers):
             for w in self.watch:
                 w.update_bounds()
+            self._jlim[:] = [w.jlim for w in self.watch]
         coupled_before = [w.coupled() for w in self.watch]
         self._peak_v[:] = 0.0
         self._peak_a[:] = 0.0
         self._peak_j[:] = 0.0
-        self._free_seen[:] = self._free_acc
         try:
             ctl.step()
         except BaseException as exc:
@@ -430,7 +452,7 @@ class Run:
         elif a > w.alim * (1 + REL_TOL) + ABS_TOL:
             self._fail("acceleration", ax.name, f"|setpoint acceleration| {a:.6g} > largest configured "
                        f"{w.alim:.6g} ({a / w.alim:.3g} x), {kind}", "", (self.ep.family(), kind.split()[1]))
-        elif not w.jerk_free and not self._free_seen[k] and w.jlim > 0 and j > w.jlim * (1 + REL_TOL) + ABS_TOL:
+        elif not w.jerk_free and w.jlim > 0 and j > w.jlim * (1 + REL_TOL) + ABS_TOL:
             self._fail("jerk", ax.name, f"|setpoint jerk| {j:.6g} > largest configured {w.jlim:.6g}, {kind}",
                        "", (self.ep.family(), kind.split()[1]))
 

@@ -10,11 +10,11 @@ from .runner import Run
 from .values import Ref
 
 
-def _episode(actor: int = 1) -> Episode:
+def _episode(actor: int = 1, jerk: float = 0.0) -> Episode:
     ep = Episode(0, "S7-1200 V6", {"servo_cycle": 0.001, "app_cycle": 0.004})
     ep.axes = [{"name": "Axis_1", "kind": "pos", "params": {
         "Actor.Type": actor, "DynamicLimits.MaxVelocity": 50.0, "DynamicLimits.MinVelocity": 1.0 if actor == 2 else 0.0,
-        "DynamicDefaults.Acceleration": 500.0, "DynamicDefaults.Deceleration": 500.0, "DynamicDefaults.Jerk": 0.0}}]
+        "DynamicDefaults.Acceleration": 500.0, "DynamicDefaults.Deceleration": 500.0, "DynamicDefaults.Jerk": jerk}}]
     ep.fbs = [{"name": "power", "cls": "MC_Power", "init": {"Axis": Ref("Axis_1"), "Enable": True}},
               {"name": "move", "cls": "MC_MoveRelative", "init": {"Axis": Ref("Axis_1"), "Distance": 20.0,
                                                                    "Velocity": 40.0}}]
@@ -61,3 +61,58 @@ def test_an_exception_out_of_an_instruction_is_reported_and_shrunk_to_a_script()
     text = script(small, f2)
     compile(text, "repro.py", "exec")
     assert "FB['move'].Execute = 'yes'" in text
+
+
+def _plant_segment(run: Run, at: float, jerk_sign: float) -> None:
+    """At ``at`` the axis gets a segment with 20x the configured jerk, opposing its acceleration for
+    ``jerk_sign`` -1 (taking it back to zero in less than a servo cycle, then cruising, as a settling plan
+    does) or building it for +1, as if a plan made at that sample had it."""
+    dt = run.ctl.servo_cycle
+
+    def hook(t):
+        b = run.ctl.bank
+        if abs(t - at) < 1e-9 and b.sp_a[0] != 0.0:
+            b.seg_t[0], b.seg_p[0], b.seg_v[0], b.seg_a[0] = t, b.sp_p[0], b.sp_v[0], b.sp_a[0]
+            b.seg_j[0] = jerk_sign * np.sign(b.sp_a[0]) * 20_000.0
+            b.sp_j = b.sp_j.copy()
+            b.sp_j[0] = b.seg_j[0]
+        elif jerk_sign < 0 and abs(t - at - dt) < 1e-9:
+            a0, j0 = b.seg_a[0], b.seg_j[0]
+            tau = -a0 / j0                          # when the settling segment took the acceleration to zero
+            b.seg_p[0] += tau * (b.seg_v[0] + tau * (a0 / 2 + tau * j0 / 6))
+            b.seg_v[0] += tau * (a0 + tau * j0 / 2)
+            b.seg_t[0], b.seg_a[0], b.seg_j[0] = at + tau, 0.0, 0.0
+            b.sp_a = b.sp_a.copy()
+            b.sp_a[0] = 0.0
+            b.sp_j = b.sp_j.copy()
+            b.sp_j[0] = 0.0
+    run.ctl._post_servo.insert(0, hook)
+
+
+def test_a_jerk_above_the_configured_jerk_is_reported():
+    run = Run(_episode(jerk=1000.0))
+
+    def hook(t):
+        if abs(t - 0.03) < 1e-9:
+            b = run.ctl.bank
+            b.sp_j = b.sp_j.copy()          # the output only (the bank's sp_j may share the segment's array)
+            b.sp_j[0] = 5000.0
+    run.ctl._post_servo.insert(0, hook)
+    f = run.run()
+    assert f is not None and f.kind == "jerk", f
+
+
+def test_a_fresh_segment_building_acceleration_with_a_jerk_above_the_configured_one_is_reported():
+    run = Run(_episode(jerk=1000.0))
+    _plant_segment(run, 0.03, +1.0)
+    f = run.run()
+    assert f is not None and f.kind == "jerk", f
+
+
+def test_a_settling_segment_is_out_of_the_jerk_checks_scope():
+    """docs/decisions.md row 66: a re-plan may take back the acceleration it starts with using a jerk above
+    the configured one (so the velocity keeps its bound); such a segment starts at the re-plan and opposes
+    the acceleration."""
+    run = Run(_episode(jerk=1000.0))
+    _plant_segment(run, 0.03, -1.0)
+    assert run.run() is None

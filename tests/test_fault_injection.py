@@ -414,6 +414,32 @@ def test_defect11_bus_loss_needs_a_bus():
         analog.inject_fault("bus")
 
 
+@pytest.mark.parametrize("family", ["S7-1200", "S7-1500"])
+@pytest.mark.parametrize("kind", ["drive", "encoder", "drive_not_ready"])
+def test_defect11_a_simulated_axis_has_no_device_to_fail(family, kind):
+    """A simulated axis (S7-1200 V6 §12.9.19 Simulation.Mode, S7-1500 Simulation.Mode 1)
+    and a virtual axis run without drive and encoder: injecting a device fault there is a clear error, not an
+    alarm of hardware that does not exist (issue 8 review)."""
+    ctl = Controller(family=family)
+    sim = ctl.add_positioning_axis("Sim", {"Actor.Type": 1, "Simulation.Mode": 1})
+    with pytest.raises(ValueError, match="simulated axis"):
+        sim.inject_fault(kind)
+    assert not sim.alarms and not sim.faults
+    if family == "S7-1500":
+        virtual = ctl.add_positioning_axis("Virtual", {"VirtualAxis.Mode": 1})
+        with pytest.raises(ValueError, match="simulated axis"):
+            virtual.inject_fault(kind)
+
+
+def test_defect11_a_pulse_output_axis_has_no_encoder():
+    ctl = Controller()
+    pto = ctl.add_positioning_axis("Pto", {"Actor.Type": 2, "DynamicLimits.MinVelocity": 1.0})
+    with pytest.raises(ValueError, match="no encoder"):
+        pto.inject_fault("encoder", "hardware")
+    pto.inject_fault("drive_not_ready")              # the drive-ready signal of a pulse drive can fail
+    assert pto.alarms
+
+
 # ---------------------------------------------------------------------------------------------------------
 # scenario (timed faults, the project file's [[faults]])
 def test_defect11_fault_scenario_runs_faults_at_their_time():

@@ -87,6 +87,11 @@ class FaultInjectionMixin:
     def _expand(self: "PositioningAxis", kind: str, detail: str) -> list[tuple[str, str]]:
         """The device faults (device, detail) a fault kind stands for (ValueError when it cannot be)."""
         if kind in DEVICE_ALARMS:
+            if self.sim:
+                raise ValueError(f"axis {self.name}: a simulated axis (Simulation.Mode = 1 or a virtual axis) has "
+                                 f"no drive or encoder that could fail ({kind!r})")
+            if kind == "encoder" and self.pto:
+                raise ValueError(f"axis {self.name}: a pulse output axis (Actor.Type = 2) has no encoder")
             if detail not in DETAILS[kind]:
                 raise ValueError(f"fault {kind!r}: detail {detail!r} is not one of "
                                  + ", ".join(repr(d) for d in DETAILS[kind]))

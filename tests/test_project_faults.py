@@ -207,9 +207,10 @@ HUGE = "1" + "0" * 400          # a TOML integer beyond float range
     ('[[faults]]\nat = 1\naxis = "Axis_1"\nclear = "all"\npersistent = true', "faults[0].persistent: not used"),
     ('[[faults]]\nat = 1\naxis = "Axis_1"\ninject = "drive"\nperiod = 5', "faults[0].period: not used"),
     ('[[faults]]\nat = 1\ninput = "I0.2"\nswitch = "repair"\nperiod = 5', "faults[0].period: not used"),
+    ('[controller]\ncycle_watchdog = 0\ncycle_watchdog_stop = true', "controller.cycle_watchdog_stop = true: allowed"),
 ], ids=["at-beyond-the-scenario-range", "at-huge-int", "switch-low-huge-int", "chatter-period-huge-int",
         "watchdog-huge-int", "axis-with-a-switch-action", "persistent-with-clear", "period-with-inject",
-        "period-without-chatter"])
+        "period-without-chatter", "watchdog-stop-without-watchdog"])
 def test_defect11_project_fault_values_found_in_review(tmp_path, text, expected):
     """Review of issue 8 (found by the config fuzz once it covered [[faults]]/[[switches]]/cycle_watchdog):
     ``at`` beyond 1e12 s gave a ValueError traceback, an integer beyond float range an OverflowError; a key the

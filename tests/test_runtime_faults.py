@@ -158,6 +158,14 @@ def test_defect6_watchdog_off():
         ctl.inject_cycle_overrun()
 
 
+@pytest.mark.parametrize("off", [0, None])
+def test_defect6_watchdog_stop_without_a_watchdog_is_refused(off):
+    """Issue 8 review: STOP on overruns with the watchdog off was accepted and silently did nothing."""
+    with pytest.raises(ValueError, match="cycle_watchdog_stop = True needs a cycle watchdog"):
+        Controller(cycle_watchdog=off, cycle_watchdog_stop=True)
+    assert Controller(cycle_watchdog=off, cycle_watchdog_stop=False).watchdog.limit is None
+
+
 @pytest.mark.parametrize("value", [0.5, -1.0, float("nan"), float("inf"), "10", True, 1e9])
 def test_defect6_watchdog_multiple_validated(value):
     with pytest.raises(ValueError, match="cycle_watchdog"):

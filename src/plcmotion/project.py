@@ -48,7 +48,8 @@ lines, 1000 technology objects, lists of 4096 items, 12 levels of nesting, 1000 
 32 steps per command table.
 ``cycle_watchdog`` (default 100; 0 = off) is the wall-clock time the user programs of one application
 cycle may take, in application cycles, and ``cycle_watchdog_stop = true`` puts the controller in STOP on
-an overrun, as a CPU does when its maximum cycle time is exceeded.
+an overrun, as a CPU does when its maximum cycle time is exceeded (with the watchdog on: 0 and
+``cycle_watchdog_stop = true`` together are refused).
 
 ``family = "S7-1500T"`` (or ``"S7-1500"``; default ``"S7-1200"``) makes it an S7-1500 controller.  Its
 axis tables then use the S7-1500 tag names (``plcmotion.kernel.parameters1500``) and may have
@@ -381,10 +382,13 @@ class _Loader:
                          f"a number of application cycles in [1, {MAX_MULTIPLE:g}], or 0 (off)")
         if "cycle_watchdog_stop" in section:
             stop = section["cycle_watchdog_stop"]
-            if isinstance(stop, bool):
-                extra["cycle_watchdog_stop"] = stop
-            else:
+            if not isinstance(stop, bool):
                 self.bad("controller.cycle_watchdog_stop", stop, "true or false")
+            elif stop and "cycle_watchdog" in extra and extra["cycle_watchdog"] is None:
+                self.bad("controller.cycle_watchdog_stop", stop,
+                         "false while cycle_watchdog is 0 (off): there is no watchdog whose overrun could stop")
+            else:
+                extra["cycle_watchdog_stop"] = stop
 
     # --- [inputs] -----------------------------------------------------------------------------------
     def inputs(self, ctl: Controller, section: Any) -> None:

@@ -54,6 +54,10 @@ class CycleWatchdog:
         if not isinstance(stop, bool):
             raise ValueError(f"cycle_watchdog_stop must be True or False, got {stop!r}")
         self.multiple = check_multiple(multiple)
+        if stop and self.multiple is None:
+            # a STOP on overruns that are never detected would silently do nothing
+            raise ValueError("cycle_watchdog_stop = True needs a cycle watchdog: give cycle_watchdog a number of "
+                             f"application cycles in [1, {MAX_MULTIPLE:g}], not 0/None (off)")
         #: watchdog time [s] (None: no monitoring)
         self.limit = None if self.multiple is None else self.multiple * app_cycle
         #: go to STOP on an overrun (as a CPU on its maximum cycle time) instead of only reporting it

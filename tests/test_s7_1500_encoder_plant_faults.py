@@ -103,6 +103,36 @@ def test_injected_encoder_fault_also_stops_the_followers_s3_3_2():
     assert all(-1e-9 <= q["s"] - p["s"] <= V * 0.001 * 1.01 for p, q in zip(rows, rows[1:]))
 
 
+def test_gearing_to_an_encoder_that_already_failed_is_refused_s3_3_2():
+    """Issue 8 review: a MC_GearIn started after the encoder failed coupled to the held value and showed
+    InGear.  With the actual value invalid there is no leading value (§3.3.2): the job ends with 16#8001
+    and the follower shows the alarm of an invalid leading value, as for a fault during the coupling."""
+    ctl = Controller(family="S7-1500T", app_cycle=0.001)
+    enc = ctl.add_external_encoder("Enc", {"Sensor": FINE, "Plant": {"Velocity": V}})
+    s = ctl.add_synchronous_axis("S", VIRTUAL, leading_values=[("Enc", "actual")])
+    pe, ps, gear = MC_Power(Axis=enc, Enable=True), MC_Power(Axis=s, Enable=True), MC_GearIn()
+
+    def cycles(n, execute=False):
+        outs = []
+        for _ in range(n):
+            pe()
+            ps()
+            gear(Master=enc, Slave=s, Execute=execute, RatioNumerator=1, RatioDenominator=1)
+            outs.append((gear.Busy, gear.InGear, gear.Error, gear.ErrorID))
+            ctl.step()
+        return outs
+
+    cycles(50)
+    enc.inject_fault()
+    cycles(5)
+    assert s.StatusWord.Enable and not s.StatusWord.Error      # the follower itself is fine
+    outs = cycles(20, execute=True)
+    assert not any(busy or in_gear for busy, in_gear, _, _ in outs), outs
+    assert gear.Error and gear.ErrorID == 0x8001
+    assert s.StatusWord.Error and s.ErrorDetail.Number == 900
+    assert s.Velocity == 0.0
+
+
 def test_encoder_recovers_after_reset_once_the_value_is_valid_again_s7_1_1():
     """The fault stays while the measured value is bad (MC_Reset cannot clear it), and is acknowledged
     by MC_Reset once the machine delivers numbers again; MC_Power enables the encoder again."""

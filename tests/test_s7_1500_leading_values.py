@@ -191,6 +191,41 @@ class LossyLink(LocalLink):
             super().send(sample)
 
 
+def test_gearing_to_a_proxy_with_alarm_900_pending_is_refused_s8_2_3():
+    """Issue 8 review: a new coupling to a proxy whose leading value is invalid (alarm 900 pending) would
+    follow the held value.  It ends with 16#8001 and the follower gets the alarm of an invalid leading
+    value; the proxy must be acknowledged first."""
+    link = LossyLink()
+    b = Controller(family="S7-1500T")
+    proxy = b.add_leading_axis_proxy("Proxy", {"Parameter": {"ToleranceTimeExternalLeadingValueInvalid": 0.02}},
+                                     source_link=link)
+    sb = b.add_synchronous_axis("SlaveB", VIRTUAL, leading_values=["Proxy"])
+    a = Controller(family="S7-1500T")
+    m = a.add_positioning_axis("Master", {**VIRTUAL, "CrossPlcSynchronousOperation": {
+        "Interface[1]": {"EnableLeadingValueOutput": True}}})
+    m.provide_leading_value(link)
+    pb, gear = MC_Power(), MC_GearIn()
+    for _ in range(50):
+        a.step()
+        pb(Axis=sb, Enable=True)
+        b.step()
+    link.lost = True
+    for _ in range(50):
+        a.step()
+        pb(Axis=sb, Enable=True)
+        b.step()
+    assert proxy.ErrorWord.X7 and proxy.ErrorDetail.Number == 900 and not sb.StatusWord.Error
+    seen = []
+    for _ in range(10):
+        a.step()
+        pb(Axis=sb, Enable=True)
+        gear(Master=proxy, Slave=sb, Execute=True, RatioNumerator=1, RatioDenominator=1)
+        seen.append(gear.Busy or gear.InGear)
+        b.step()
+    assert not any(seen) and gear.Error and gear.ErrorID == 0x8001
+    assert sb.StatusWord.Error and sb.ErrorDetail.Number == 900
+
+
 def test_proxy_extrapolates_late_values_and_raises_alarm_900_when_they_stop_s8_2_3():
     link = LossyLink()
     a, b, m, sa, sb, proxy, ga, gb = _cross_plc(link, link, delay=0.0)

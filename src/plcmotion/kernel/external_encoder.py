@@ -319,6 +319,11 @@ class ExternalEncoder(LeadingValueMixin, AxisTagsMixin):
         """Actual value coupling needs valid actual values (§3.3.5)."""
         return self.state == "enabled" and not self.alarms
 
+    def leading_value_invalid(self, mode: str) -> str | None:
+        """Why a new coupling cannot use this encoder now (None: it can): with a pending encoder fault the
+        actual value is only the last one held (§3.3.2)."""
+        return None if self.actual_values_valid() else f"actual value of {self.name} invalid"
+
     def actual_values_valid(self) -> bool:
         """StatusSensor[1].Error FALSE: no encoder fault pending (§A.1.31)."""
         return not any(a.kind == F.ENCODER for a in self.alarms)

@@ -225,6 +225,11 @@ class LeadingValueMixin:
         b, i = self.ctl.bank, self.index
         return float(b.act_p[i]), float(b.act_v[i])
 
+    def leading_value_invalid(self: "PositioningAxis1500", mode: str) -> str | None:
+        """An axis always provides a leading value: setpoint coupling waits for position control (§3.3.5),
+        and the actual values stay valid."""
+        return None
+
     def actual_values_valid(self: "PositioningAxis1500") -> bool:
         """Are the actual values valid (no encoder fault)?  An axis's are as long as it has them."""
         return True

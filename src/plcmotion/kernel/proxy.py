@@ -104,6 +104,8 @@ class LeadingAxisProxy(AxisTagsMixin):
         self._slot: int | None = None
         self._cascade_slot: int | None = None
         self._reset()
+        # the telegrams are monitored from the start, with or without a follower (LeadingValueValid, alarm 900)
+        self.lv_slot("setpoint")
 
     def _reset(self) -> None:
         self.samples: deque[LeadingValueSample] = deque()      # usable telegrams only, oldest first
@@ -293,6 +295,12 @@ class LeadingAxisProxy(AxisTagsMixin):
                 self._cascade_slot = self.ctl.sync.register_ext(self._update_ahead)
             return self._cascade_slot
         return self._slot
+
+    def leading_value_invalid(self, mode: str) -> str | None:
+        """Why a new coupling cannot use this proxy now (None: it can): an alarm of the proxy (900, 901, 903)
+        means its leading value is invalid until acknowledged (§8.2.3).  Before the first telegram there is
+        no alarm yet: the coupling starts and the tolerance time decides."""
+        return f"leading value of {self.name} invalid" if self.alarms else None
 
     def lv_position_controlled(self) -> bool:
         """A follower with setpoint coupling waits until the proxy has a valid leading value."""

@@ -208,6 +208,11 @@ class SynchronousMixin(RevolutionsMixin, SyncModifiersMixin):
             job.finish(JobState.ERROR, resolved)
             return
         source, mode = resolved
+        invalid = source.leading_value_invalid(mode)
+        if invalid is not None:
+            # the same as a leading value that becomes invalid while coupled: alarm, job ends with Error
+            self._sync_failure(Coupling(self, source, job, mode), LeadingValueInvalid(invalid))
+            return
         if self.ctl.sync.would_cycle(self, source, mode):
             job.finish(JobState.ERROR, F.reject(F.COUPLING_CYCLE))
             return

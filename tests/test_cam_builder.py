@@ -28,7 +28,7 @@ from plcmotion.kernel.cam import (
     MAX_SEGMENTS,
     interpolate,
 )
-from plcmotion.kernel.cam_to import SEGMENT_FIELDS as TO_SEGMENT_FIELDS
+from plcmotion.s7_1500.technology.cam_to import SEGMENT_FIELDS as TO_SEGMENT_FIELDS
 
 PI = math.pi
 INF = math.inf

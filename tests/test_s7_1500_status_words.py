@@ -177,7 +177,7 @@ def test_alarm_description_names_number_text_and_reaction_s7_1_1():
     """§6.1.5.6 / §7.1.1: the following error alarm is 521 with the reaction "remove enable" (ErrorDetail)."""
     from plcmotion.kernel import faults as F
     from plcmotion.kernel.faults import Reaction
-    from plcmotion.kernel.tags1500 import alarm_description
+    from plcmotion.s7_1500.technology.tags import alarm_description
 
     text = alarm_description(F.alarm(F.FOLLOWING_ERROR, "", Reaction.REMOVE_ENABLE))
     assert text == "alarm 521 following error exceeded (reaction: remove enable)"

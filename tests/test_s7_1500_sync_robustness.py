@@ -7,7 +7,7 @@ import math
 import pytest
 
 from plcmotion import Controller
-from plcmotion.kernel.axis1500 import SynchronousAxis
+from plcmotion.s7_1500.technology.axes import SynchronousAxis
 from plcmotion.s7_1500 import MC_CamIn, MC_GearIn, MC_GearInPos, MC_InterpolateCam, MC_MoveVelocity, MC_Power
 
 from _s7_1500_rig import VIRTUAL, Rig, merge, modulo

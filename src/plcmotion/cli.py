@@ -198,7 +198,7 @@ def load_program(ctl, program: str) -> None:
 
 
 def cmd_run(args: argparse.Namespace) -> int:
-    from .kernel.tags1500 import alarm_description
+    from .s7_1500.technology.tags import alarm_description
     from .kernel.runtime import exception_text
     from .project import ProjectError, load_project
     from .trace import Trace, plot_csv

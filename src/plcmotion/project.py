@@ -52,7 +52,7 @@ an overrun, as a CPU does when its maximum cycle time is exceeded (with the watc
 ``cycle_watchdog_stop = true`` together are refused).
 
 ``family = "S7-1500T"`` (or ``"S7-1500"``; default ``"S7-1200"``) makes it an S7-1500 controller.  Its
-axis tables then use the S7-1500 tag names (``plcmotion.kernel.parameters1500``) and may have
+axis tables then use the S7-1500 tag names (``plcmotion.s7_1500.technology.parameters``) and may have
 ``type = "synchronous"`` with ``leading_values = ["Master", { name = "Encoder", coupling = "actual" }]``,
 ``type = "external_encoder"`` or ``type = "leading_axis_proxy"``; cams are declared in ``[cams.<name>]``::
 
@@ -107,6 +107,7 @@ from .toml_text import quoted as _quoted
 from .toml_text import toml_value
 from .kernel import parameters as P
 from .kernel.axis import ConfigurationError
+from .kernel.family import CAM
 from .kernel.runtime import APP_CYCLE_MAX, SERVO_CYCLE_MAX, SERVO_CYCLE_MIN, Controller
 
 SECTIONS = ("controller", "axes", "trace", "inputs", "command_tables", "cams", "switches", "faults")
@@ -314,7 +315,8 @@ class _Loader:
             if key not in CONTROLLER_KEYS:
                 self.unknown(f"controller.{key}", value, "key", list(CONTROLLER_KEYS))
         extra: dict[str, Any] = {}
-        from .kernel.runtime import FAMILIES
+        from .kernel.family import names as family_names
+        FAMILIES = family_names()
         family = section.get("family", "S7-1200")
         if family not in FAMILIES:
             same = [f for f in FAMILIES if isinstance(family, str) and f.lower() == family.strip().lower()]
@@ -495,12 +497,12 @@ class _Loader:
         if ctl.family == "S7-1200":
             return P.S7_1200
         if kind == "external_encoder":
-            from .kernel.external_encoder import ENCODER_SCHEMA
+            from .s7_1500.technology.external_encoder import ENCODER_SCHEMA
             return ENCODER_SCHEMA
         if kind == "leading_axis_proxy":
-            from .kernel.proxy import PROXY_SCHEMA
+            from .s7_1500.technology.proxy import PROXY_SCHEMA
             return PROXY_SCHEMA
-        from .kernel.parameters1500 import S7_1500
+        from .s7_1500.technology.parameters import S7_1500
         return S7_1500
 
     def _leading_values(self, key: str, value: Any) -> list[tuple[str, str]] | None:
@@ -581,10 +583,10 @@ class _Loader:
         if not isinstance(section, dict):
             self.bad("cams", section, "one table [cams.<name>] per cam")
             return
-        if not ctl.family_t:
+        if not ctl.offers(CAM):
             self.note('cams: cams need family = "S7-1500T" in [controller]')
             return
-        from .kernel.cam_to import SEGMENT_FIELDS
+        from .s7_1500.technology.cam_to import SEGMENT_FIELDS
         for name, table in section.items():
             key = f"cams.{_key(name)}"
             if not _NAME.match(name) or name in declared:

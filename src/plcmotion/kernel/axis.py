@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING, Any, Mapping
 
 from . import faults as F
 from . import parameters as P
+from .family import PULSE_SLICE_TIME
 from .faults import Fault, Reaction
 from .jobs import MOTION_KINDS, POSITIONING_KINDS, Job, JobKind, JobState
 from .motion import DirectionFault, MotionPlanner, Plan, limits, modulo_target, wrap
@@ -48,13 +49,10 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
 
     #: how this kind of technology object names and checks its configuration tags
     schema: P.AxisSchema = P.S7_1200
-    family = "S7-1200"
 
     def __init__(self, ctl: "Controller", name: str, cfg: Mapping[str, Any], *, db_number: int | None = None):
         self.ctl = ctl
         self.name = name
-        if self.family == "S7-1200" and ctl.technology_version >= 7:
-            self._use_v7_tags()
         self.db_number = db_number if db_number is not None else ctl._next_db_number()
         self.cfg: dict[str, Any] = dict(cfg)          # tag values (work memory)
         self.load_cfg: dict[str, Any] = dict(cfg)     # start values (load memory), used by a restart
@@ -693,7 +691,7 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
 
     def _slice_start(self, t: float) -> float:
         """When a new command takes effect: at once, or on a PTO at the next segment boundary."""
-        if not self.pto or self.ctl.technology_version < 7:
+        if not self.pto or PULSE_SLICE_TIME not in self.ctl.rules:
             return t
         period = self.eff["Actor.PTOSliceTime"] / 1000.0
         if period <= self.ctl.servo_cycle * (1 + 1e-9):

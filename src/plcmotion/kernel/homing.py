@@ -18,6 +18,7 @@ import math
 from typing import TYPE_CHECKING
 
 from . import faults as F
+from .family import DIRECT_HOMING_WHEN_DISABLED
 from .faults import Reaction
 from .jobs import Job, JobKind, JobState
 from .profiles import Limits
@@ -72,8 +73,8 @@ class HomingMixin:
     # --- direct homing and absolute encoder adjustment ---------------------------------------------------
     def home_direct(self: "PositioningAxis", job: Job) -> None:
         """Mode 0: position := Position; 1: position += Position; 6/7: absolute encoder adjustment."""
-        v7_disabled_ok = self.ctl.technology_version >= 7 and not self.pto and job.mode in (0, 1)
-        if self.state != "enabled" and not (v7_disabled_ok and self.state == "disabled"):
+        disabled_ok = DIRECT_HOMING_WHEN_DISABLED in self.ctl.rules and not self.pto and job.mode in (0, 1)
+        if self.state != "enabled" and not (disabled_ok and self.state == "disabled"):
             job.finish(JobState.ERROR, F.reject(F.NOT_ENABLED))
             return
         if self.job is not None and self.job.busy and self.job.kind == JobKind.HOME_ACTIVE:

@@ -20,7 +20,7 @@ from collections import deque
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:  # pragma: no cover
-    from .axis1500 import PositioningAxis1500
+    from .axis import PositioningAxis
 
 
 def _pt1(y: float, x: float, dt: float, T: float) -> float:
@@ -216,51 +216,51 @@ class LeadingValueMixin:
     #: any axis has actual values; a virtual one's equal its setpoints (§3.3.2, decision 29)
     provides_actual_values = True
 
-    def _lv_init(self: "PositioningAxis1500") -> None:
+    def _lv_init(self: "PositioningAxis") -> None:
         self._extrapolator: Extrapolator | None = None
         self._delay: DelayLine | None = None
         self._lv_slots: dict[str, int] = {}
 
-    def actual_values(self: "PositioningAxis1500") -> tuple[float, float]:
+    def actual_values(self: "PositioningAxis") -> tuple[float, float]:
         b, i = self.ctl.bank, self.index
         return float(b.act_p[i]), float(b.act_v[i])
 
-    def leading_value_invalid(self: "PositioningAxis1500", mode: str) -> str | None:
+    def leading_value_invalid(self: "PositioningAxis", mode: str) -> str | None:
         """An axis always provides a leading value: setpoint coupling waits for position control (§3.3.5),
         and the actual values stay valid."""
         return None
 
-    def actual_values_valid(self: "PositioningAxis1500") -> bool:
+    def actual_values_valid(self: "PositioningAxis") -> bool:
         """Are the actual values valid (no encoder fault)?  An axis's are as long as it has them."""
         return True
 
-    def velocity_lag(self: "PositioningAxis1500", dt: float) -> float:
+    def velocity_lag(self: "PositioningAxis", dt: float) -> float:
         """Age of the actual velocity relative to the actual position: half a cycle for a velocity that
         is the difference of two encoder values, none for the exact velocity of a simulated drive."""
         return 0.5 * dt if self.servo else 0.0
 
-    def provided_value(self: "PositioningAxis1500") -> tuple[float, float, float]:
+    def provided_value(self: "PositioningAxis") -> tuple[float, float, float]:
         """This servo cycle's value for delayed followers and other controllers: the setpoint."""
         b, i = self.ctl.bank, self.index
         return float(b.sp_p[i]), float(b.sp_v[i]), float(b.sp_a[i])
 
-    def provided_value_at(self: "PositioningAxis1500", t: float) -> tuple[float, float, float]:
+    def provided_value_at(self: "PositioningAxis", t: float) -> tuple[float, float, float]:
         return setpoint_at(self, t)
 
-    def provided_value_valid(self: "PositioningAxis1500") -> tuple[bool, bool]:
+    def provided_value_valid(self: "PositioningAxis") -> tuple[bool, bool]:
         """(valid, tracking) of the provided value (telegram flags, §8.1.4)."""
         return (self.state in ("enabled", "disabling") and self._blocking_alarm() is None,
                 bool(self.servo and not self.ctl.bank.closed_loop[self.index]))
 
-    def lv_position_controlled(self: "PositioningAxis1500") -> bool:
+    def lv_position_controlled(self: "PositioningAxis") -> bool:
         """Setpoint coupling needs a position-controlled leading axis (§3.3.5)."""
         return self.state in ("enabled", "disabling") and self.position_controlled
 
-    def lv_modulo(self: "PositioningAxis1500") -> tuple[float, float] | None:
+    def lv_modulo(self: "PositioningAxis") -> tuple[float, float] | None:
         e = self.eff
         return (e["Modulo.StartValue"], e["Modulo.Length"]) if e["Modulo.Enable"] else None
 
-    def lv_value(self: "PositioningAxis1500", mode: str, t: float) -> tuple[float, float, float]:
+    def lv_value(self: "PositioningAxis", mode: str, t: float) -> tuple[float, float, float]:
         """The leading value this TO provides with coupling type ``mode`` at time ``t``."""
         if mode == "setpoint":
             return self.provided_value_at(t)
@@ -273,7 +273,7 @@ class LeadingValueMixin:
             return p, v, a
         return self._ensure_delay().at(t - self.local_delay_time())
 
-    def lv_slot(self: "PositioningAxis1500", mode: str) -> int:
+    def lv_slot(self: "PositioningAxis", mode: str) -> int:
         """Slot of this source's actual or delayed leading value in the sync stage (created on first use)."""
         slot = self._lv_slots.get(mode)
         if slot is None:
@@ -286,7 +286,7 @@ class LeadingValueMixin:
             self._lv_slots[mode] = slot
         return slot
 
-    def _ensure_extrapolator(self: "PositioningAxis1500") -> Extrapolator:
+    def _ensure_extrapolator(self: "PositioningAxis") -> Extrapolator:
         if self._extrapolator is None:
             ex = Extrapolator(self)
             ex.step(self.ctl.time, self.ctl.servo_cycle)
@@ -296,7 +296,7 @@ class LeadingValueMixin:
             self.ctl.sync.register_ext(lambda t, ex=ex: ex.step(t, dt))
         return self._extrapolator
 
-    def _ensure_delay(self: "PositioningAxis1500") -> DelayLine:
+    def _ensure_delay(self: "PositioningAxis") -> DelayLine:
         if self._delay is None:
             line = DelayLine(self)
             self._delay = line
@@ -310,10 +310,10 @@ class LeadingValueMixin:
             ctl.sync.register_post(record)
         return self._delay
 
-    def local_delay_time(self: "PositioningAxis1500") -> float:
+    def local_delay_time(self: "PositioningAxis") -> float:
         return self.eff.get("CrossPlcSynchronousOperation.LocalLeadingValueDelayTime", 0.0)
 
-    def provide_leading_value(self: "PositioningAxis1500", sink) -> None:
+    def provide_leading_value(self: "PositioningAxis", sink) -> None:
         """Send this TO's leading value to another controller every servo cycle (cross-PLC, §8):
         needs ``CrossPlcSynchronousOperation.Interface[1].EnableLeadingValueOutput`` = TRUE.
 
@@ -340,13 +340,13 @@ class LeadingValueMixin:
         ctl.sync.register_post(send)
 
     # --- tags -------------------------------------------------------------------------------------------
-    def leading_axis_dependent_time(self: "PositioningAxis1500") -> float:
+    def leading_axis_dependent_time(self: "PositioningAxis") -> float:
         """T_i + T_Ipo + position filter T1 + T2 (§3.3.6); T_i is one servo cycle for a real encoder."""
         e = self.eff
         ti = 0.0 if self.sim else self.ctl.servo_cycle
         return ti + self.ctl.servo_cycle + e["Extrapolation.PositionFilter.T1"] + e["Extrapolation.PositionFilter.T2"]
 
-    def extrapolation_time(self: "PositioningAxis1500") -> float:
+    def extrapolation_time(self: "PositioningAxis") -> float:
         """Effective extrapolation time: leading-axis part (if included) + following-axis part + delay."""
         e = self.eff
         t = e["Extrapolation.FollowingAxisDependentTime"] + self.local_delay_time()
@@ -354,13 +354,13 @@ class LeadingValueMixin:
             t += self.leading_axis_dependent_time()
         return t
 
-    def extrapolation_status(self: "PositioningAxis1500") -> tuple[float, float, float, float]:
+    def extrapolation_status(self: "PositioningAxis") -> tuple[float, float, float, float]:
         ex = self._extrapolator
         if ex is None:
             return 0.0, 0.0, 0.0, 0.0
         return ex.filtered_position, ex.filtered_velocity, ex.position, ex.velocity
 
-    def delayed_leading_value(self: "PositioningAxis1500") -> tuple[float, float, float]:
+    def delayed_leading_value(self: "PositioningAxis") -> tuple[float, float, float]:
         if self._delay is None:
             return 0.0, 0.0, 0.0
         return self._delay.at(self.ctl._bank_time - self.local_delay_time())

@@ -23,17 +23,17 @@ from ..drives.plant import Plant
 from ..drives.simulated import ServoDrives, SetpointDrives
 from . import retain
 from . import monitoring
+from . import family as families
 from . import parameters as P
 from .axis import ConfigurationError, PositioningAxis
 from .bank import AxisBank
-from .cam_to import CamTO
 from .sync import SyncStage
-from .command_table import CommandTable
 from .io import DEFAULT_FILTER, DigitalInputs, DigitalOutputs
 from .watchdog import CycleOverrunWarning, CycleWatchdog, Overrun
 
 RUN, STOP = "RUN", "STOP"
-FAMILIES = ("S7-1200", "S7-1500", "S7-1500T")
+#: how error messages name an object whose parameters are wrong (default: its kind without the article)
+_WHERE = {families.POSITIONING_AXIS: "axis", families.SYNCHRONOUS_AXIS: "axis"}
 _EPS_T = 1e-9
 _NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 
@@ -153,8 +153,10 @@ class Controller:
     ``app_cycle``: period of the user programs [s], a whole multiple of ``servo_cycle`` (default 4 ms).
     ``input_filter``: default filter time of the digital inputs [s] (6.4 ms as on the CPU).
     ``state_file``: where retentive data is kept (absolute encoder adjustment); None keeps it in memory.
-    ``technology_version``: 6 or 7, the S7-1200 Motion Control version whose rules apply where they
-    differ (V7: PTO segment time, direct homing of a disabled PROFIdrive/analog axis).
+    ``family``: the registered family whose technology objects the controller creates (``plcmotion``
+    registers "S7-1200" - the default -, "S7-1500" and "S7-1500T"; see ``kernel.family``).
+    ``technology_version``: the version of the family's technology objects whose rules apply where versions
+    differ (S7-1200: 6 or 7, default 6; S7-1500: 5).
     ``cycle_watchdog``: the user programs of one application cycle may take this many application cycles of
     wall-clock time; a longer run is an overrun (``CycleOverrunWarning``, ``cycle_overruns``,
     ``last_overrun``).  0 or None: no monitoring.  ``cycle_watchdog_stop``: an overrun puts the controller in
@@ -164,26 +166,28 @@ class Controller:
 
     def __init__(self, servo_cycle: float = 0.001, app_cycle: float = 0.004, *,
                  input_filter: float = DEFAULT_FILTER, state_file: str | None = None,
-                 technology_version: int | None = None, family: str = "S7-1200",
+                 technology_version: int | None = None, family: str | None = None,
                  cycle_watchdog: float | None = 100.0, cycle_watchdog_stop: bool = False):
         problem = cycle_problem(servo_cycle, app_cycle)
         if problem:
             raise ValueError(f"{problem[0]} = {problem[1]!r}: {problem[2]}")
         ratio = app_cycle / servo_cycle
-        if family not in FAMILIES:
-            raise ValueError(f"family must be one of {', '.join(FAMILIES)}, got {family!r}")
-        #: the controller family whose technology objects are created: S7-1200, S7-1500 or S7-1500T
-        self.family = family
-        self.family_t = family == "S7-1500T"
+        fam = families.lookup(family) if family is not None else families.default()
+        #: the family whose technology objects this controller creates (a registered name, e.g. "S7-1200")
+        self.family = fam.name
+        self._family = fam
         if technology_version is None:
-            technology_version = 6 if family == "S7-1200" else 5
-        allowed = (6, 7) if family == "S7-1200" else (5,)
+            technology_version = fam.default_version
         if (isinstance(technology_version, bool) or not isinstance(technology_version, numbers.Integral)
-                or technology_version not in allowed):
-            raise ValueError(f"technology_version for {family} must be "
-                             + (" or ".join(map(str, allowed))) + f", got {technology_version!r}")
-        #: behaviour of S7-1200 Motion Control V6.0 or V7.0 where they differ (PTOSliceTime, MC_Home 0/1)
+                or technology_version not in fam.versions):
+            raise ValueError(f"technology_version for {fam.name} must be "
+                             + (" or ".join(map(str, fam.versions))) + f", got {technology_version!r}")
+        #: version of the family's technology objects whose rules apply where versions differ
         self.technology_version = int(technology_version)
+        #: names of the version-dependent rules in force (from the family, see ``kernel.family``)
+        self.rules: frozenset[str] = fam.rules(self.technology_version)
+        #: optional kernel features the family uses (e.g. actual value coupling)
+        self.features: frozenset[str] = fam.features
         self.servo_cycle = float(servo_cycle)
         self.app_cycle = round(ratio) * self.servo_cycle
         # time = k / rate when the servo frequency is a whole number: 1.001 instead of 1.0010000000000001
@@ -194,8 +198,8 @@ class Controller:
         self.watchdog = CycleWatchdog(self.app_cycle, cycle_watchdog, cycle_watchdog_stop)
         self.bank = AxisBank()
         self.axes: dict[str, PositioningAxis] = {}
-        self.command_tables: dict[str, CommandTable] = {}
-        self.cams: dict[str, CamTO] = {}
+        self.command_tables: dict[str, Any] = {}
+        self.cams: dict[str, Any] = {}
         self.objects: dict[str, Any] = {}           # other technology objects (encoders, proxies)
         self._db_counter = 0
         self._deferred: list[Callable[[float], None]] = []
@@ -243,58 +247,76 @@ class Controller:
     # --- configuration ---------------------------------------------------------------------------------
     def add_positioning_axis(self, name: str, params: Mapping[str, Any] | None = None, *,
                              source: str | None = None) -> PositioningAxis:
-        """Create a positioning axis; ``params`` are nested dicts or dotted paths of the TO tags (§12.9)."""
-        if self.family == "S7-1200":
-            return self._add_axis(PositioningAxis, name, params, source)
-        from .axis1500 import PositioningAxis1500
-        return self._add_axis(PositioningAxis1500, name, params, source)
+        """Create a positioning axis; ``params`` are nested dicts or dotted paths of the family's TO tags."""
+        return self._create(families.POSITIONING_AXIS, name, params, source=source)
 
     def add_synchronous_axis(self, name: str, params: Mapping[str, Any] | None = None, *,
                              leading_values: Any = (), source: str | None = None):
-        """Create a synchronous axis (S7-1500/S7-1500T): a positioning axis that follows a leading value.
+        """Create a synchronous axis: a positioning axis that follows a leading value.
 
-        ``leading_values``: the possible leading values (§6.1.3), names of technology objects or
-        ``(name, type)`` pairs with type "setpoint" (default), "actual" or "delayed" (S7-1500T)."""
-        self._need_1500("a synchronous axis")
-        from .axis1500 import SynchronousAxis
+        ``leading_values``: the possible leading values, names of technology objects or ``(name, type)``
+        pairs with type "setpoint" (default), "actual" or "delayed"."""
+        self._offered(families.SYNCHRONOUS_AXIS)
         leading = _leading_list(name, leading_values)
-        return self._add_axis(SynchronousAxis, name, params, source, leading_values=leading)
+        return self._create(families.SYNCHRONOUS_AXIS, name, params, source=source, leading_values=leading)
 
     def add_external_encoder(self, name: str, params: Mapping[str, Any] | None = None, *,
                              source: str | None = None):
-        """Create an external encoder (S7-1500T): a leading value source with actual values; the measured
-        machine moves with ``Plant.Velocity`` (see :class:`~plcmotion.kernel.external_encoder.ExternalEncoder`)."""
-        self._need_1500("an external encoder", t_only=True)
-        from .external_encoder import ENCODER_SCHEMA, ExternalEncoder
-        self._check_name(name)
-        where = source or f"external encoder {name}"
-        cfg, issues = ENCODER_SCHEMA.validate(_flat(params, where))
-        if issues:
-            raise ConfigurationError(where, issues)
-        enc = ExternalEncoder(self, name, cfg)
-        self.objects[name] = enc
-        return enc
+        """Create an external encoder: a leading value source with actual values of a measured machine."""
+        return self._create(families.EXTERNAL_ENCODER, name, params, source=source)
 
     def add_leading_axis_proxy(self, name: str, params: Mapping[str, Any] | None = None, *,
                                source_link: Any = None, source: str | None = None):
-        """Create a leading axis proxy (S7-1500T) that takes the leading value of an axis of another
-        controller from ``source_link`` (a transport, see ``plcmotion.crossplc``)."""
-        self._need_1500("a leading axis proxy", t_only=True)
-        from .proxy import PROXY_SCHEMA, LeadingAxisProxy
-        self._check_name(name)
-        where = source or f"leading axis proxy {name}"
-        cfg, issues = PROXY_SCHEMA.validate(_flat(params, where))
-        if issues:
-            raise ConfigurationError(where, issues)
-        proxy = LeadingAxisProxy(self, name, cfg, source_link)
-        self.objects[name] = proxy
-        return proxy
+        """Create a leading axis proxy that takes the leading value of an axis of another controller from
+        ``source_link`` (a transport, see ``plcmotion.crossplc``)."""
+        return self._create(families.LEADING_AXIS_PROXY, name, params, source=source, source_link=source_link)
 
-    def _need_1500(self, what: str, t_only: bool = False) -> None:
-        if self.family == "S7-1200" or (t_only and not self.family_t):
-            need = "S7-1500T" if t_only else "S7-1500 or S7-1500T"
-            raise ValueError(f"{what} needs a controller of family {need} (Controller(family=...)); "
+    def add_cam(self, name: str, points: Any = (), segments: Any = (), *, interpolation_mode: int = 0,
+                boundary_conditions: int = 0):
+        """Create a cam technology object from ``points`` and ``segments``; interpolate it before use."""
+        factory = self._offered(families.CAM)
+        self._check_name(name)
+        return self._register(families.CAM, name, factory(self, name, points, segments,
+                                                          interpolation_mode=interpolation_mode,
+                                                          boundary_conditions=boundary_conditions))
+
+    def add_command_table(self, name: str, commands: Any = (), *, source: str | None = None):
+        """Create a command table TO from up to 32 command steps."""
+        factory = self._offered(families.COMMAND_TABLE)
+        self._check_name(name)
+        return self._register(families.COMMAND_TABLE, name, factory(self, name, commands))
+
+    def _offered(self, kind: str) -> Callable[..., Any]:
+        """The family's factory for objects of ``kind``; a ValueError naming the families that offer it."""
+        factory = self._family.factories.get(kind)
+        if factory is None:
+            need = " or ".join(families.offering(kind)) or "none of the registered families"
+            raise ValueError(f"{kind} needs a controller of family {need} (Controller(family=...)); "
                              f"this one is {self.family}")
+        return factory
+
+    def _create(self, kind: str, name: str, params: Mapping[str, Any] | None, *, source: str | None,
+                **kw: Any) -> Any:
+        """A technology object made by the family's factory from validated parameters, then registered."""
+        factory = self._offered(kind)
+        self._check_name(name)
+        where = source or f"{_WHERE.get(kind) or kind.split(' ', 1)[1]} {name}"
+        return self._register(kind, name, factory(self, name, _flat(params, where), where, **kw))
+
+    def _register(self, kind: str, name: str, obj: Any) -> Any:
+        getattr(self, families.TABLES.get(kind, "objects"))[name] = obj
+        if kind in (families.POSITIONING_AXIS, families.SYNCHRONOUS_AXIS):
+            self._by_index.append(obj)
+        return obj
+
+    def offers(self, kind: str) -> bool:
+        """Whether the family offers technology objects of ``kind`` (``kernel.family`` constants)."""
+        return kind in self._family.factories
+
+    def offers_job(self, kind: Any) -> bool:
+        """Whether the family's instructions may start jobs of this kernel job kind."""
+        kinds = self._family.job_kinds
+        return kinds is None or kind in kinds
 
     def _lookup(self, name: str) -> Any:
         """The technology object named ``name`` (axes, cams, encoders, proxies)."""
@@ -303,16 +325,13 @@ class Controller:
                 return table[name]
         return None
 
-    def _add_axis(self, cls: type, name: str, params: Mapping[str, Any] | None, source: str | None, **kw: Any):
-        self._check_name(name)
-        where = source or f"axis {name}"
-        cfg, issues = cls.schema.validate(_flat(params, where))
+    def new_axis(self, cls: type, name: str, flat: Mapping[str, Any], where: str, **kw: Any) -> Any:
+        """For a family's factory: an axis of class ``cls`` from the flat tag values ``flat``, checked with
+        ``cls.schema`` (a ConfigurationError names ``where`` and every bad tag)."""
+        cfg, issues = cls.schema.validate(flat)
         if issues:
             raise ConfigurationError(where, issues)
-        axis = cls(self, name, cfg, **kw)
-        self.axes[name] = axis
-        self._by_index.append(axis)
-        return axis
+        return cls(self, name, cfg, **kw)
 
     def _check_name(self, name: str) -> None:
         if not isinstance(name, str) or not _NAME.match(name):
@@ -325,38 +344,9 @@ class Controller:
         self._db_counter += 1
         return self._db_counter
 
-    def add_cam(self, name: str, points: Any = (), segments: Any = (), *, interpolation_mode: int = 0,
-                boundary_conditions: int = 0) -> CamTO:
-        """Create a cam technology object (S7-1500T): Point[1..n] = ``points``, Segment[1..m] = ``segments``
-        (dicts of xmin, xmax, a0..a6, sineAmplitude, sinePeriod, sinePhase).  Interpolate it with
-        MC_InterpolateCam before use."""
-        self._check_name(name)
-        self._need_1500("a cam", t_only=True)
-        issues = [P.Issue(tag, "selection", value, "allowed: " + text)
-                  for tag, value, allowed, text in (
-                      ("InterpolationSettings.InterpolationMode", interpolation_mode, (0, 1, 2),
-                       "0 (linear), 1 (cubic spline) or 2 (Bézier spline)"),
-                      ("InterpolationSettings.BoundaryConditions", boundary_conditions, (0, 1),
-                       "0 (none) or 1 (equal first derivative at start and end)"))
-                  if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value not in allowed]
-        if issues:
-            raise ConfigurationError(f"cam {name}", issues)
-        points, segments = _cam_values(name, points, segments)
-        cam = CamTO(self, name, points, segments, interpolation_mode, boundary_conditions)
-        self.cams[name] = cam
-        return cam
-
     def _defer(self, fn: Callable[[float], None]) -> None:
         """Run ``fn(t)`` at the start of the next servo cycle (jobs handed to MC-Servo)."""
         self._deferred.append(fn)
-
-    def add_command_table(self, name: str, commands: Any = (), *, source: str | None = None) -> CommandTable:
-        """Create a command table TO; ``commands`` are up to 32 dicts of Type/Position/Velocity/Duration/
-        NextStep/StepCode (S7-1200 V6 §12.10.8.1)."""
-        self._check_name(name)
-        table = CommandTable(self, name, commands)
-        self.command_tables[name] = table
-        return table
 
     def _drive_group(self, kind: str) -> DriveGroup:
         group = self._groups.get(kind)

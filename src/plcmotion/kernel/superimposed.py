@@ -14,7 +14,7 @@ from .jobs import Job, JobState
 from .profiles import Planner, PlanningError, Profile
 
 if TYPE_CHECKING:  # pragma: no cover
-    from .axis1500 import PositioningAxis1500
+    from .axis import PositioningAxis
 
 _EPS_T = 1e-9
 
@@ -22,23 +22,23 @@ _EPS_T = 1e-9
 class SuperimposedMixin:
     """Mixed into the S7-1500 axis."""
 
-    def _sup_init(self: "PositioningAxis1500") -> None:
+    def _sup_init(self: "PositioningAxis") -> None:
         self.sup_profile: Profile | None = None      # None: no superimposed part
         self.sup_job: Job | None = None
         self._sup_seg = 0
         self._sup_carry: tuple[float, float, float] | None = None
 
     @property
-    def superimposed_active(self: "PositioningAxis1500") -> bool:
+    def superimposed_active(self: "PositioningAxis") -> bool:
         """StatusWord.X23: a superimposed motion is running."""
         return self.sup_job is not None and self.sup_job.busy
 
-    def sup_state_at(self: "PositioningAxis1500", t: float) -> tuple[float, float, float]:
+    def sup_state_at(self: "PositioningAxis", t: float) -> tuple[float, float, float]:
         if self.sup_profile is None:
             return 0.0, 0.0, 0.0
         return self.sup_profile.at(t)
 
-    def start_superimposed(self: "PositioningAxis1500", job: Job, lim) -> None:
+    def start_superimposed(self: "PositioningAxis", job: Job, lim) -> None:
         """Plan the superimposed positioning by ``job.position`` from the present superimposed state."""
         t = self.now
         p, v, a = self.sup_state_at(t)
@@ -57,7 +57,7 @@ class SuperimposedMixin:
             # nothing left to superimpose (e.g. Distance 0 from a resting part): no end event will come
             self._finish_job(job, JobState.DONE, t)
 
-    def _sup_load(self: "PositioningAxis1500", profile: Profile | None) -> None:
+    def _sup_load(self: "PositioningAxis", profile: Profile | None) -> None:
         was = self.sup_profile is not None
         self.sup_profile = profile
         self._sup_seg = 0
@@ -73,7 +73,7 @@ class SuperimposedMixin:
             self._sup_segment(t=self.now)
         self._schedule()
 
-    def _sup_segment(self: "PositioningAxis1500", t: float) -> None:
+    def _sup_segment(self: "PositioningAxis", t: float) -> None:
         prof = self.sup_profile
         assert prof is not None
         while prof.end_of(self._sup_seg) <= t + _EPS_T:
@@ -87,7 +87,7 @@ class SuperimposedMixin:
         else:
             self._timers.pop("superimposed", None)
 
-    def _on_superimposed_timer(self: "PositioningAxis1500", t: float) -> None:
+    def _on_superimposed_timer(self: "PositioningAxis", t: float) -> None:
         if self.sup_profile is None:
             return
         self._sup_segment(t)
@@ -96,7 +96,7 @@ class SuperimposedMixin:
             if job is not None and job.busy:
                 self._finish_job(job, JobState.DONE, t)
 
-    def _sup_take_over(self: "PositioningAxis1500", t: float) -> None:
+    def _sup_take_over(self: "PositioningAxis", t: float) -> None:
         """A basic job takes the superimposed state over: remember it for the next plan, end the part."""
         if self.sup_profile is None:
             return
@@ -106,7 +106,7 @@ class SuperimposedMixin:
         self.sup_job = None
         self._sup_load(None)
 
-    def _sup_clear(self: "PositioningAxis1500") -> None:
+    def _sup_clear(self: "PositioningAxis") -> None:
         if self.sup_job is not None and self.sup_job.busy:
             self._finish_job(self.sup_job, JobState.ABORTED, self.now)
         self.sup_job = None

@@ -20,6 +20,7 @@ import numpy as np
 
 from . import faults as F
 from . import override as O
+from .family import ACTUAL_VALUE_COUPLING
 from .faults import Fault, Reaction
 from .jobs import Job, JobKind, JobState
 from .leading import setpoint_at
@@ -30,7 +31,7 @@ from .sync_modifiers import SyncModifiersMixin
 from .sync_revolutions import RevolutionsMixin
 
 if TYPE_CHECKING:  # pragma: no cover
-    from .axis1500 import PositioningAxis1500 as Axis
+    from .axis import PositioningAxis as Axis
 
 _EPS = 1e-12
 COUPLING_TYPES = ("setpoint", "actual", "delayed")
@@ -120,7 +121,7 @@ class SynchronousMixin(RevolutionsMixin, SyncModifiersMixin):
             return F.reject(F.LV_NOT_READY, "no_setpoints")
         if mode == "delayed" and not getattr(master, "provides_delayed_values", False):
             return F.reject(F.LV_NOT_READY, "no_delayed_values")      # §3.3.3: not a proxy
-        if mode != "setpoint" and not self.ctl.family_t:
+        if mode != "setpoint" and ACTUAL_VALUE_COUPLING not in self.ctl.features:
             return F.reject(F.NOT_AVAILABLE, "actual_value_coupling")
         if mode == "setpoint" and getattr(master, "cascade_delay", 0.0) and self.provides_cross_plc():
             # §8.1.3 cascade: the axis that provides the value on runs ahead by the proxy's
@@ -193,7 +194,7 @@ class SynchronousMixin(RevolutionsMixin, SyncModifiersMixin):
 
     def _sync_submit(self: "Axis", job: Job) -> None:
         t = self.now
-        if job.kind in (JobKind.GEAR_IN_POS, JobKind.CAM_IN, JobKind.PHASING) and not self.ctl.family_t:
+        if not self.ctl.offers_job(job.kind):
             job.finish(JobState.ERROR, F.reject(F.NOT_AVAILABLE, job.kind.value))
             return
         fault = self._sync_check(job)

@@ -13,7 +13,7 @@ from .profiles import INF, Planner, PlanningError
 from .sync import Coupling
 
 if TYPE_CHECKING:  # pragma: no cover
-    from .axis1500 import PositioningAxis1500 as Axis
+    from .axis import PositioningAxis as Axis
 
 
 class SyncModifiersMixin:
@@ -103,7 +103,7 @@ class SyncModifiersMixin:
 
     # --- simulation of synchronous operation (MC_SynchronizedMotionSimulation, §3.4) -----------------
     def start_simulation(self: "Axis", job: Job) -> Fault | None:
-        if not self.ctl.family_t:
+        if not self.ctl.offers_job(job.kind):
             return F.reject(F.NOT_AVAILABLE, "simulation")
         c = self.coupling
         if c is None or not c.job.in_sync:

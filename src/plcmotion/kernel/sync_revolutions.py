@@ -16,7 +16,7 @@ import numpy as np
 from .sync import GEAR, Coupling
 
 if TYPE_CHECKING:  # pragma: no cover
-    from .axis1500 import SynchronousAxis as Axis
+    from .axis import PositioningAxis as Axis
 
 
 class RevolutionsMixin:

@@ -15,7 +15,8 @@ class _S71200:
     AXIS_TYPES: ClassVar[tuple[type, ...]] = (PositioningAxis,)
 
     def _family_ok(self, to: Any) -> bool:
-        return getattr(type(to), "family", "S7-1200") == "S7-1200"
+        # an S7-1200 instruction works on the technology objects of an S7-1200 controller only
+        return getattr(getattr(to, "ctl", None), "family", None) == "S7-1200"
 
     def _axis_error(self, kind: str) -> InstructionError:
         # 16#8408: 16#001B a technology object of another type, 16#001C not a technology object (§12.8)

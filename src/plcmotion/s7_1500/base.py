@@ -7,7 +7,7 @@ from typing import Any, ClassVar
 
 from .. import fb
 from ..fb import InstructionError, as_bool, as_int, as_real
-from ..kernel.axis1500 import PositioningAxis1500, SynchronousAxis
+from .technology.axes import PositioningAxis1500, SynchronousAxis
 from ..kernel.faults import Fault
 from ..kernel.profiles import INF
 from . import errors as E

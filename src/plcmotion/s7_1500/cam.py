@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from typing import Any, ClassVar
 
-from ..kernel.cam_to import CamTO
+from .technology.cam_to import CamTO
 from ..kernel.jobs import Job, JobKind
 from .base import ExecuteInstruction, InstructionError, real
 

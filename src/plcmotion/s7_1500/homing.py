@@ -10,8 +10,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from ..kernel.axis1500 import PositioningAxis1500
-from ..kernel.external_encoder import ExternalEncoder
+from .technology.axes import PositioningAxis1500
+from .technology.external_encoder import ExternalEncoder
 from ..kernel.jobs import Job, JobKind, JobState
 from .. import fb
 from . import errors as E

@@ -3,8 +3,8 @@ from __future__ import annotations
 
 from typing import Any, ClassVar
 
-from ..kernel.axis1500 import PositioningAxis1500
-from ..kernel.external_encoder import ExternalEncoder
+from .technology.axes import PositioningAxis1500
+from .technology.external_encoder import ExternalEncoder
 from ..kernel.jobs import Job, JobKind, JobState
 from .. import fb
 from . import errors as E
@@ -41,7 +41,7 @@ class MC_Reset(ExecuteInstruction):  # noqa: N801
 
     def _accept(self, value: Any, types: tuple[type, ...]) -> bool:
         return callable(getattr(value, "acknowledge", None)) and callable(getattr(value, "restart", None)) and \
-            getattr(type(value), "family", "S7-1500") != "S7-1200" and hasattr(value, "ctl")
+            getattr(getattr(value, "ctl", None), "family", None) in ("S7-1500", "S7-1500T")
 
     def _start(self, axis: Any) -> Job:
         restart = as_bool(self, "Restart", self.Restart)

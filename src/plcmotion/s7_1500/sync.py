@@ -10,8 +10,8 @@ from __future__ import annotations
 
 from typing import Any, ClassVar
 
-from ..kernel.axis1500 import PositioningAxis1500, SynchronousAxis
-from ..kernel.cam_to import CamTO
+from .technology.axes import PositioningAxis1500, SynchronousAxis
+from .technology.cam_to import CamTO
 from ..kernel.jobs import Job, JobKind, JobState
 from . import errors as E
 from .base import ExecuteInstruction, Instruction, InstructionError, as_bool, as_int, as_real, dynamic, dynamics, \
@@ -352,7 +352,7 @@ class MC_LeadingValueAdditive(Instruction):  # noqa: N801
                 # the job belongs to the axis at Axis now; rewiring acts at the next rising edge
                 axis = self._axis()
                 values = self._values()
-                if not axis.ctl.family_t:
+                if not axis.ctl.offers_job(JobKind.LV_ADDITIVE):
                     raise InstructionError(E.T_ONLY)
                 object.__setattr__(self, "_add", Job(JobKind.LV_ADDITIVE, owner=self))
                 object.__setattr__(self, "_add_axis", axis)

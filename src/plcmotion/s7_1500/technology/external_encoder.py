@@ -17,20 +17,20 @@ from typing import TYPE_CHECKING, Any, Callable, Mapping
 
 import numpy as np
 
-from . import faults as F
-from .config import TagAccessError
-from .fault_injection import checked_real
-from .faults import Fault, Reaction
-from .jobs import Job, JobState
-from .leading import LeadingValueMixin
-from .parameters import E12, P, R, REAL, AxisSchema, Param
-from .parameters1500 import _PARAMS_1500, canonical
-from .tags import AxisTagsMixin
-from .tags1500 import ALARM_NUMBERS, REACTION_CODES, ErrorWord, WarningWord
-from .words import pack, word_type
+from ...kernel import faults as F
+from ...kernel.config import TagAccessError
+from ...kernel.fault_injection import checked_real
+from ...kernel.faults import Fault, Reaction
+from ...kernel.jobs import Job, JobState
+from ...kernel.leading import LeadingValueMixin
+from ...kernel.parameters import E12, P, R, REAL, AxisSchema, Param
+from .parameters import _PARAMS_1500, canonical
+from ...kernel.tags import AxisTagsMixin
+from .tags import ALARM_NUMBERS, REACTION_CODES, ErrorWord, WarningWord
+from ...kernel.words import pack, word_type
 
 if TYPE_CHECKING:  # pragma: no cover
-    from .runtime import Controller
+    from ...kernel.runtime import Controller
 
 _PREFIXES = ("Sensor[1].Type", "Sensor[1].InverseDirection", "Sensor[1].System", "Sensor[1].Parameter.",
              "Properties.", "Units.LengthUnit", "Units.VelocityUnit", "Modulo.", "Extrapolation.",
@@ -101,7 +101,6 @@ class ExternalEncoder(LeadingValueMixin, AxisTagsMixin):
     """External encoder technology object: a leading value source with actual values only."""
 
     kind = "TO_ExternalEncoder"
-    family = "S7-1500"
     schema = ENCODER_SCHEMA
     _dynamic = DYNAMIC
     _dynamic_types = {p: "LReal" for p in DYNAMIC}
@@ -298,7 +297,7 @@ class ExternalEncoder(LeadingValueMixin, AxisTagsMixin):
         e = self.eff
         if not e["Modulo.Enable"]:
             return value
-        from .motion import wrap
+        from ...kernel.motion import wrap
         return wrap(value, e["Modulo.StartValue"], e["Modulo.Length"])
 
     def modulo_cycle(self) -> int:

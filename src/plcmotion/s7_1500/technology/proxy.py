@@ -24,16 +24,16 @@ import numbers
 from collections import deque
 from typing import TYPE_CHECKING, Any, Callable, Mapping
 
-from . import faults as F
-from .config import TagAccessError
-from .faults import Fault, Reaction
-from .leading_value import LeadingValueSample, LeadingValueSource
-from .parameters import E12, REAL, RW, AxisSchema, Param
-from .tags import AxisTagsMixin
-from .words import pack, word_type
+from ...kernel import faults as F
+from ...kernel.config import TagAccessError
+from ...kernel.faults import Fault, Reaction
+from ...kernel.leading_value import LeadingValueSample, LeadingValueSource
+from ...kernel.parameters import E12, REAL, RW, AxisSchema, Param
+from ...kernel.tags import AxisTagsMixin
+from ...kernel.words import pack, word_type
 
 if TYPE_CHECKING:  # pragma: no cover
-    from .runtime import Controller
+    from ...kernel.runtime import Controller
 
 _PARAMS = [
     Param("Parameter.LocalLeadingValueDelayTime", REAL, 0.0, RW, (10,), 0.0, E12,
@@ -81,7 +81,6 @@ class LeadingAxisProxy(AxisTagsMixin):
     """Leading axis proxy TO; ``source`` delivers the leading value telegrams (a transport)."""
 
     kind = "TO_LeadingAxisProxy"
-    family = "S7-1500"
     schema = PROXY_SCHEMA
     _dynamic = DYNAMIC
     _dynamic_types = {p: "LReal" for p in DYNAMIC}

@@ -13,13 +13,13 @@ from typing import TYPE_CHECKING, Any, Iterable, Mapping
 
 import numpy as np
 
-from . import faults as F
-from .cam import MAX_POINTS, MAX_SEGMENTS, CamCurve, CamDefinitionError, SegmentDef, interpolate
-from .jobs import Job, JobKind, JobState
-from .words import pack, word_type
+from ...kernel import faults as F
+from ...kernel.cam import MAX_POINTS, MAX_SEGMENTS, CamCurve, CamDefinitionError, SegmentDef, interpolate
+from ...kernel.jobs import Job, JobKind, JobState
+from ...kernel.words import pack, word_type
 
 if TYPE_CHECKING:  # pragma: no cover
-    from .runtime import Controller
+    from ...kernel.runtime import Controller
 
 SEGMENT_FIELDS = ("xmin", "xmax", "a0", "a1", "a2", "a3", "a4", "a5", "a6", "sineAmplitude", "sinePeriod",
                   "sinePhase")
@@ -323,7 +323,7 @@ class CamTO:
             self._set_setting(path.split(".")[1], value)
             return
         if path in self._TAGS:
-            from .config import TagAccessError
+            from ...kernel.config import TagAccessError
             raise TagAccessError(f"{self.name}.{path} is read-only")
         self._resolve(path)(value)
 

@@ -14,15 +14,15 @@ from typing import TYPE_CHECKING, Any, Callable
 
 import numpy as np
 
-from . import faults as F
-from .faults import Fault, Reaction
-from .jobs import JobKind
-from .tags import DYNAMIC as _DYN1200
-from .tags import communication_fault
-from .words import pack, word_type
+from ...kernel import faults as F
+from ...kernel.faults import Fault, Reaction
+from ...kernel.jobs import JobKind
+from ...kernel.tags import DYNAMIC as _DYN1200
+from ...kernel.tags import communication_fault
+from ...kernel.words import pack, word_type
 
 if TYPE_CHECKING:  # pragma: no cover
-    from .axis1500 import PositioningAxis1500 as Axis
+    from .axes import PositioningAxis1500 as Axis
 
 StatusWord = word_type("StatusWord", {
     "Enable": 0, "Error": 1, "RestartActive": 2, "OnlineStartValuesChanged": 3, "ControlPanelActive": 4,

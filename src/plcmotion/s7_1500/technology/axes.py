@@ -10,21 +10,21 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any, Mapping
 
-from . import faults as F
-from . import override as O
-from . import tags1500 as T
-from .axis import DISABLED, ENABLED, ENABLING, PositioningAxis
-from .faults import Fault, Reaction
-from .jobs import POSITIONING_KINDS, Job, JobKind, JobState
-from .leading import LeadingValueMixin
-from .motion import limits
-from .parameters1500 import S7_1500
-from .profiles import INF, Planner, Profile
-from .superimposed import SuperimposedMixin
-from .sync_axis import SynchronousMixin
+from ...kernel import faults as F
+from ...kernel import override as O
+from . import tags as T
+from ...kernel.axis import DISABLED, ENABLED, ENABLING, PositioningAxis
+from ...kernel.faults import Fault, Reaction
+from ...kernel.jobs import POSITIONING_KINDS, Job, JobKind, JobState
+from ...kernel.leading import LeadingValueMixin
+from ...kernel.motion import limits
+from .parameters import S7_1500
+from ...kernel.profiles import INF, Planner, Profile
+from ...kernel.superimposed import SuperimposedMixin
+from ...kernel.sync_axis import SynchronousMixin
 
 if TYPE_CHECKING:  # pragma: no cover
-    from .runtime import Controller
+    from ...kernel.runtime import Controller
 
 _EPS_T = 1e-9
 #: MC_Stop modes and their stop response (a new MC_Stop aborts one with the same or a lower one, §9.3.1 B)
@@ -35,7 +35,6 @@ class PositioningAxis1500(SuperimposedMixin, LeadingValueMixin, PositioningAxis)
     """Positioning axis technology object of the S7-1500 (TO_PositioningAxis)."""
 
     schema = S7_1500
-    family = "S7-1500"
     _dynamic = T.DYNAMIC
     _dynamic_types = T.TYPES
     _dynamic_aliases: dict[str, str] = {}
@@ -313,7 +312,7 @@ class PositioningAxis1500(SuperimposedMixin, LeadingValueMixin, PositioningAxis)
             self._remove_enable(t, by_power=True)
 
     def _max_dynamics(self):
-        from .motion import max_dynamics
+        from ...kernel.motion import max_dynamics
         return max_dynamics(self)
 
     def _abort_all(self, t: float, *, keep_simulated: bool = True) -> None:

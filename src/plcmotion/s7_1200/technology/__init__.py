@@ -1,0 +1,37 @@
+"""S7-1200 Motion Control technology objects (V6/V7) and their registration as the family "S7-1200".
+
+The positioning axis and the command table are still the kernel's classes (their S7-1200 tag names and the
+command table runner move here as the axis is split into components); this package says how a controller of
+this family creates them and which version-dependent rules apply.  ``plcmotion`` imports it on import.
+"""
+from __future__ import annotations
+
+from typing import Any, Mapping
+
+from ...kernel import family as K
+from ...kernel.axis import PositioningAxis
+from ...kernel.command_table import CommandTable
+
+
+def _rules(version: int) -> frozenset[str]:
+    # S7-1200 V7 rules (docs/decisions.md rows 49 and 54): a new command on a PTO axis waits for the next
+    # Actor.PTOSliceTime boundary; MC_Home Mode 0/1 also works on a disabled PROFIdrive/analog axis
+    return frozenset({K.PULSE_SLICE_TIME, K.DIRECT_HOMING_WHEN_DISABLED}) if version >= 7 else frozenset()
+
+
+def _positioning_axis(ctl: Any, name: str, flat: Mapping[str, Any], where: str) -> PositioningAxis:
+    axis = ctl.new_axis(PositioningAxis, name, flat, where)
+    if ctl.technology_version >= 7:
+        axis._use_v7_tags()              # V7 status tags: StatusSensor[1], ErrorBits.AdaptionError
+    return axis
+
+
+def _command_table(ctl: Any, name: str, commands: Any) -> CommandTable:
+    return CommandTable(ctl, name, commands)
+
+
+S7_1200 = K.register(K.Family("S7-1200", versions=(6, 7), default_version=6,
+                              factories={K.POSITIONING_AXIS: _positioning_axis, K.COMMAND_TABLE: _command_table},
+                              rules=_rules))
+
+__all__ = ["S7_1200"]

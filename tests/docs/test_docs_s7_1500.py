@@ -7,7 +7,7 @@ import pytest
 
 from plcmotion.s7_1500 import errors as E
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 DOCS = ROOT / "docs" / "s7_1500"
 
 

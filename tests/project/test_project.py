@@ -10,7 +10,7 @@ import pytest
 import plcmotion
 from plcmotion.project import ProjectError, check_project, load_project
 
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 VALID = """
 [controller]

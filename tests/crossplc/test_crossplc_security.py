@@ -157,7 +157,7 @@ def test_wrong_key_token_or_mode_is_rejected_and_replay_dropped() -> None:
 def test_security_page_quick_start_runs() -> None:
     """docs/crossplc_security.md: the quick start builds a secured publisher and subscriber."""
     from pathlib import Path
-    page = (Path(__file__).resolve().parents[1] / "docs" / "crossplc_security.md").read_text()
+    page = (Path(__file__).resolve().parents[2] / "docs" / "crossplc_security.md").read_text()
     code = page.split("```python\n", 1)[1].split("```", 1)[0]
     scope: dict = {}
     exec(compile(code, "crossplc_security.md", "exec"), scope)

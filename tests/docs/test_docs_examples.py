@@ -4,7 +4,7 @@ links between the pages resolve, and the analog drive example project runs throu
 
 The pages embed their example between ``<!-- example: docs/examples/X.py -->`` and
 ``<!-- end example -->``; after editing a script, refresh the pages with
-``python tests/test_docs_examples.py``.
+``python tests/docs/test_docs_examples.py``.
 """
 from __future__ import annotations
 
@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 DOCS = ROOT / "docs"
 EXAMPLES = sorted((DOCS / "examples").glob("*.py"))
 INSTRUCTIONS = ("MC_Power", "MC_Reset", "MC_Home", "MC_Halt", "MC_MoveAbsolute", "MC_MoveRelative",
@@ -65,7 +65,7 @@ def test_page_shows_its_plot_and_its_example(name):
     blocks = _EMBED.findall(text)
     assert [b[1] for b in blocks] == [f"docs/examples/{name}.py"]
     assert blocks[0][2] == _block(ROOT / blocks[0][1]), \
-        f"{page.name} does not show the current script; run: python tests/test_docs_examples.py"
+        f"{page.name} does not show the current script; run: python tests/docs/test_docs_examples.py"
     assert f"(instructions/{name}.md)" in (DOCS / "index.md").read_text()
 
 

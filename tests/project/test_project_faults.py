@@ -163,7 +163,7 @@ def test_defect11_docs_project_example_loads(tmp_path):
     """The ``[[switches]]``/``[[faults]]`` example of docs/fault_injection.md is a valid project (with an axis)."""
     import re
 
-    page = (Path(__file__).resolve().parents[1] / "docs" / "fault_injection.md").read_text(encoding="utf-8")
+    page = (Path(__file__).resolve().parents[2] / "docs" / "fault_injection.md").read_text(encoding="utf-8")
     (block,) = re.findall(r"```toml\n(.*?)```", page, re.DOTALL)
     ctl = load_project(write(tmp_path, AXIS + "\n" + block))
     assert len(ctl.plant.scenario.pending) == 4 and ctl.plant.switch("I0.5").name == "part present"

@@ -469,6 +469,6 @@ def test_not_producible_codes_are_documented():
     """Every code listed as not producible is explained in docs/errorids.md."""
     from pathlib import Path
 
-    text = (Path(__file__).resolve().parents[1] / "docs" / "errorids.md").read_text()
+    text = (Path(__file__).resolve().parents[2] / "docs" / "errorids.md").read_text()
     for (error_id, info) in NOT_PRODUCIBLE:
         assert f"16#{error_id:04X}" in text

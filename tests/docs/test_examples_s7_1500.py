@@ -8,7 +8,7 @@ import pytest
 from plcmotion import load_project
 from plcmotion.cli import load_program
 
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 def test_flying_saw_cuts_with_the_carriage_synchronous_to_the_bar_s4_2():

@@ -31,7 +31,7 @@ from plcmotion.s7_1200 import (MC_ChangeDynamic, MC_MoveJog, MC_MoveRelative, MC
 from plcmotion.s7_1200.variables import Bool, DInt, Int, Real, UDInt
 
 NAN, INF = math.nan, math.inf
-DOCS = Path(__file__).resolve().parents[1] / "docs" / "instructions" / "parameters.md"
+DOCS = Path(__file__).resolve().parents[2] / "docs" / "instructions" / "parameters.md"
 
 _DYN = {"Acceleration": 50.0, "Deceleration": 50.0, "EmergencyDeceleration": 500.0, "Jerk": 0.0}
 PTO = {"Actor": {"Type": 2}, "DynamicLimits": {"MaxVelocity": 100.0, "MinVelocity": 1.0}, "DynamicDefaults": _DYN}

@@ -1,4 +1,4 @@
-"""Test rig for the S7-1200 V6 status/override tests (tests/test_s7_1200_*.py).
+"""Test rig for the S7-1200 V6 status/override tests (tests/s7_1200/test_s7_1200_*.py).
 
 A PLC-like harness: every *scan* calls each registered instruction instance exactly once (the way a
 cyclic OB calls its FBs) and then advances the controller by one application cycle.  Inputs are changed

@@ -25,7 +25,7 @@ Every test does two things:
 
 Regenerate the golden traces after an intended change of behaviour with::
 
-    PLCMOTION_UPDATE_GOLDEN=1 PYTHONPATH=src python -m pytest tests/test_s7_1200_function_charts.py
+    PLCMOTION_UPDATE_GOLDEN=1 PYTHONPATH=src python -m pytest tests/s7_1200/test_s7_1200_function_charts.py
 
 A golden file is (re)written only when the explicit checks of its test pass, so a trace that contradicts
 the manual is never frozen; review the diff of tests/golden/ against the manual's description before
@@ -55,7 +55,7 @@ from plcmotion.s7_1200 import (MC_Halt, MC_Home, MC_MoveAbsolute, MC_MoveJog, MC
 
 SERVO = 0.001                      # servo cycle [s]
 APP = 0.004                        # application cycle [s]: one program call = one row
-GOLDEN = Path(__file__).parent / "golden"
+GOLDEN = Path(__file__).resolve().parents[1] / "golden"
 UPDATE = os.environ.get("PLCMOTION_UPDATE_GOLDEN") == "1"
 MAX_ROWS = 1500                    # longer traces are thinned ...
 KEEP_EVERY = 25                    # ... to every 25th row (0.1 s) inside constant stretches

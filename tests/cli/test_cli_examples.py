@@ -10,7 +10,7 @@ import pytest
 from plcmotion.cli import main
 from plcmotion.trace import read_csv
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ROOT / "examples"
 PNG = b"\x89PNG\r\n\x1a\n"
 

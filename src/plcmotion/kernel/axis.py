@@ -68,7 +68,7 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
         self.index = ctl.bank.add()
         t = ctl.time
         spec = drive_spec(cfg)
-        self.drive = ctl._drive_group(spec.actuator).add(self.index, spec, ctl.servo_cycle, t)
+        self.drive = ctl._drive_group(spec.actuator.value).add(self.index, spec, ctl.servo_cycle, t)
         self.motion = MotionPlanner(self)
 
         self.state = DISABLED

@@ -359,7 +359,7 @@ class Controller:
         return table
 
     def _drive_group(self, kind: str) -> DriveGroup:
-        """The group of the drives of ``kind`` (an ``ActuatorKind``; its value names it, e.g. "servo")."""
+        """The group of the drives of ``kind`` (the value of an ``ActuatorKind``: "servo", "stepper", "ideal")."""
         group = self._groups.get(kind)
         if group is None:
             group = new_drive_group(kind, self.bank)

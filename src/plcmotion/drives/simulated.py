@@ -92,7 +92,7 @@ class _ServoChannel(DriveChannel):
         g, m = self.group, self.member
         link = g.links[m]
         if link is None:
-            raise TypeError("only axes with a PROFIdrive drive (Actor.Type = 1) exchange telegrams")
+            raise TypeError("only axes with a PROFIdrive drive exchange telegrams")
         link.cycles = g.cycles
         q = float(g.q[m])
         count = math.floor(float(g.x[m]) / q)

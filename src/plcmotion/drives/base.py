@@ -1,28 +1,50 @@
-"""The narrow interface between the kernel and whatever moves the axis.
+"""The neutral interface between the kernel and whatever moves the axis.
 
-Drives of one kind form a *group* that is updated for all its members at once (the kernel keeps per-cycle
-values in arrays, see ``kernel.bank``).  Each member axis gets a *channel* for the few things that happen
-on events: switching the enable signal, asking whether the drive is ready, re-referencing the actual value.
+A drive model is built from a :class:`~plcmotion.drives.spec.DriveSpec` (actuator, interface, speed range,
+mechanics, timing, encoder, simulated plant), never from a family's tags.  Drives of one kind form a
+*group* that is updated for all its members at once, on the kernel's arrays (``kernel.bank``); each member
+axis gets a *channel* for what happens on events.
 
-Per servo cycle the kernel calls ``group.read`` before interpolation (actual values into the bank) and
-``group.write`` after position control (commands out of the bank).
+Per servo cycle the kernel calls, for every group:
+
+1. ``group.read(bank, t, dt)`` before interpolation: the actual values of time ``t`` into
+   ``bank.act_p`` [length unit] and ``bank.act_v`` [length unit/s] of the group's members, in axis
+   coordinates (positive = the axis's positive direction, whatever the drive's polarity);
+2. ``group.write(bank, t)`` after position control: this cycle's command out of the bank -
+   ``bank.cmd_v`` (speed setpoint [length unit/s], for drives with their own speed loop) or
+   ``bank.sp_p``/``bank.sp_v`` (position setpoint, for drives that follow a position: steppers, ideal
+   drives, a CiA 402 drive in cyclic synchronous position mode).
+
+On events the kernel uses the member's :class:`DriveChannel`: ``set_enable`` (MC_Power enables or
+disables; the drive runs its own switch-on sequence), ``ready`` (the drive executes setpoints; polled
+while enabling and for the status), ``set_fault`` (a fault of the drive itself: not ready, the power
+section stops following the setpoint and ramps down), ``set_actual`` (homing re-references the actual
+value), ``reconfigure`` (the axis configuration changed at run time: a new spec), the zero mark latch
+(``arm_zero_mark``/``zero_mark_latched``/``disarm_zero_mark``) and ``communication_ok``.  It reads back
+``mechanical_position`` (where the load really is: what switches and zero marks see).
+
+Nothing here runs per cycle per axis in Python: a group keeps its members' state in numpy arrays.
 """
 from __future__ import annotations
 
 from abc import ABC, abstractmethod
-from typing import Any, Mapping
+from typing import Any
+
+from .spec import DriveSpec
 
 
 class DriveChannel(ABC):
-    """Event-time access to one member of a drive group."""
+    """Event-time access to one member of a drive group (the kernel keeps it as ``axis.drive``)."""
 
     @abstractmethod
     def set_enable(self, on: bool, t: float) -> None:
-        """Switch the drive enable (the 'Drive enabled' output / control word)."""
+        """Switch the drive enable at time ``t`` (enable output, PROFIdrive STW1, CiA 402 controlword):
+        the drive steps through its own states and is :meth:`ready` after them (``DriveSpec.ready_delay``);
+        without enable it ramps down with ``DriveSpec.off_ramp_time``."""
 
     @abstractmethod
     def ready(self, t: float) -> bool:
-        """'Drive ready': the drive executes setpoints."""
+        """'Drive ready' at time ``t``: enabled, switched on, no fault, the drive executes setpoints."""
 
     @abstractmethod
     def set_actual(self, bank: Any, value: float) -> None:
@@ -34,13 +56,17 @@ class DriveChannel(ABC):
 
     @property
     def communication_ok(self) -> bool:
+        """The controller exchanges data with the drive (FALSE: no drive on a bus to talk to)."""
         return True
 
-    def reconfigure(self, cfg: Mapping[str, Any]) -> None:
-        """Configuration tags that became effective at runtime (mechanics)."""
+    def reconfigure(self, spec: DriveSpec) -> None:
+        """The axis configuration changed at run time: ``spec`` is the whole new specification, the drive
+        takes what it can change while running (the stepper its pulse length; a servo drive keeps the values
+        it was commissioned with)."""
 
     def set_fault(self, on: bool) -> None:
-        """A fault of the drive itself (fault injection): it stops executing setpoints and is not ready."""
+        """A fault of the drive itself (fault injection) comes (``on``) or goes: it stops executing setpoints,
+        is not ready and ramps down (``DriveSpec.off_ramp_time``); it reports ``DriveSpec.fault_code``."""
 
     def disturb(self, jump: float = 0.0, force: float | None = None, blocked: bool | None = None) -> None:
         """A disturbance of the load (fault injection): ``jump`` moves the load at once, ``force`` is an
@@ -60,14 +86,18 @@ class DriveChannel(ABC):
 
 
 class DriveGroup(ABC):
+    """All drives of one kind, updated together on the bank's arrays once per servo cycle."""
+
     @abstractmethod
-    def add(self, index: int, cfg: Mapping[str, Any], servo_cycle: float, t: float) -> DriveChannel:
-        """Attach the axis with bank index ``index``."""
+    def add(self, index: int, spec: DriveSpec, servo_cycle: float, t: float) -> DriveChannel:
+        """Attach the axis with bank index ``index`` and drive ``spec`` at time ``t`` (``servo_cycle`` [s]);
+        the group reads the spec here and keeps what it needs in its arrays."""
 
     @abstractmethod
     def read(self, bank: Any, t: float, dt: float) -> None:
-        """Bring actual values of time ``t`` into ``bank.act_p``/``bank.act_v``."""
+        """Bring the actual values of time ``t`` (``dt`` after the last read) into ``bank.act_p`` and
+        ``bank.act_v`` of the members."""
 
     @abstractmethod
     def write(self, bank: Any, t: float) -> None:
-        """Take this cycle's commands from the bank."""
+        """Take this cycle's commands of the members from the bank (``cmd_v`` or ``sp_p``/``sp_v``)."""

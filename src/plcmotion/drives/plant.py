@@ -18,6 +18,7 @@ from typing import Any, Callable
 
 from ..kernel.io import check_address
 from .base import DriveChannel
+from .spec import PlantSpec
 
 
 def _position(name: str, value: Any) -> float:
@@ -234,26 +235,9 @@ class Plant:
             level, edge = item.sample(t)
             set_level(item.address, level, edge)
 
-    def wire_axis(self, cfg: dict, channel: DriveChannel, t: float) -> None:
-        """Create the switches an axis configuration describes (``Plant.*`` and the input addresses)."""
-        lo = cfg["Plant.HWLimitMinPosition"]
-        if lo is not None and cfg["PositionLimits_HW.MinSwitchAddress"]:
-            self._place(channel, cfg["PositionLimits_HW.MinSwitchAddress"], -math.inf, lo,
-                        cfg["PositionLimits_HW.MinSwitchLevel"], "low hardware limit switch", None, t)
-        hi = cfg["Plant.HWLimitMaxPosition"]
-        if hi is not None and cfg["PositionLimits_HW.MaxSwitchAddress"]:
-            self._place(channel, cfg["PositionLimits_HW.MaxSwitchAddress"], hi, math.inf,
-                        cfg["PositionLimits_HW.MaxSwitchLevel"], "high hardware limit switch", None, t)
-        cam = cfg["Plant.HomingSwitchPosition"]
-        if cam is not None:
-            length = cfg["Plant.HomingSwitchLength"]
-            seen: set[str] = set()
-            for kind in ("ActiveHoming", "PassiveHoming"):
-                address = cfg[f"Sensor[1].{kind}.DigitalInputAddress"]
-                if address and address not in seen:
-                    seen.add(address)
-                    self._place(channel, address, cam, cam + length, cfg[f"Sensor[1].{kind}.SwitchLevel"],
-                                "homing switch", cfg["Plant.HomingSwitchPeriod"], t)
-        ready = cfg["Actor.Interface.DriveReadyInput"]
-        if ready:
-            self.add(Signal(ready, channel.ready, "drive ready"), t)
+    def wire_axis(self, spec: PlantSpec, channel: DriveChannel, t: float) -> None:
+        """Create the switches of one axis's simulated machine and wire its drive's ready signal."""
+        for sw in spec.switches:
+            self._place(channel, sw.address, sw.low, sw.high, sw.active_high, sw.name, sw.period, t)
+        if spec.ready_input:
+            self.add(Signal(spec.ready_input, channel.ready, "drive ready"), t)

@@ -16,11 +16,11 @@ from typing import Any
 
 from .profidrive import (G1_STW, G1_ZSW, STW1, STW2, DriveState, DriveStateMachine, EncoderCommand,
                          telegram_types)
+from .spec import DriveSpec
 
 _OFF = STW1(NoCoastStop=True, NoQuickStop=True, EnableOperation=True, EnableRampGenerator=True,
             UnfreezeRampGenerator=True, EnableSetpoint=True, ControlByPlc=True)   # 16#047E: OFF1
 _ON = _OFF.with_bits(On=True)                                                      # 16#047F
-_FAULT_CODE = 7900          # a generic drive fault number for injected faults (SINAMICS style)
 _U32 = 1 << 32
 
 
@@ -36,20 +36,22 @@ def word_scale(telegram: int, analog: bool) -> tuple[float, int]:
 class ProfidriveLink:
     """Per-axis state of the telegram exchange."""
 
-    def __init__(self, cfg: Any, servo_cycle: float):
-        self.telegram = cfg["Actor.Interface.Telegram"]
-        self.reference_rpm = cfg["Actor.DriveParameter.ReferenceSpeed"]
-        off = max(cfg["Plant.OffRampTime"], 0.0)
+    def __init__(self, spec: DriveSpec, servo_cycle: float):
+        self.telegram = spec.telegram
+        self.reference_rpm = spec.reference_speed
+        off = max(spec.off_ramp_time, 0.0)
         self.sm = DriveStateMachine(self.reference_rpm, off1_ramp_time=off, off3_ramp_time=off)
+        self.fault_code = spec.fault_code
         self.stw1 = _OFF
         self.g1_stw = G1_STW()
         self.cycles = 0
         self.enable = False
         self._ack = False
-        self.steps = cfg["Sensor[1].Parameter.StepsPerRevolution"]
-        self.fine1 = cfg["Sensor[1].Parameter.FineResolutionXist1"]
-        self.fine2 = cfg["Sensor[1].Parameter.FineResolutionXist2"]
-        self.revolutions = cfg["Sensor[1].Parameter.DeterminableRevolutions"] if cfg["Sensor[1].Type"] else 0
+        enc = spec.encoder
+        self.steps = enc.steps_per_revolution
+        self.fine1 = enc.fine_bits
+        self.fine2 = enc.fine_bits_absolute
+        self.revolutions = enc.determinable_revolutions if enc.absolute else 0
         self.encoder_error = 0
 
     # --- written by the technology object --------------------------------------------------------------
@@ -63,7 +65,7 @@ class ProfidriveLink:
 
     def set_fault(self, on: bool) -> None:
         if on:
-            self.sm.inject_fault(_FAULT_CODE, cause_active=True)
+            self.sm.inject_fault(self.fault_code, cause_active=True)
         else:
             self.sm.clear_fault_cause()
             self.acknowledge()

@@ -1,41 +1,38 @@
-"""Simulated drives: a servo drive with its encoder, a stepper on a pulse output, and the ideal drive of
-``Simulation.Mode = 1``.
+"""Simulated drives: a servo drive with its encoder, a stepper on a pulse output, and the ideal drive of a
+simulated axis.
 
 Servo (PROFIdrive/analog, S7-1200 V6 §2.2): the drive closes its speed loop, modelled as a first-order lag
-with time constant ``Plant.SpeedTimeConstant`` and integrated exactly over each servo cycle; its speed is
-limited to ``Actor.DriveParameter.MaxSpeed``.  The encoder counts increments of finite size (steps per
-revolution times the fine resolution of Gx_XIST1, or the linear grid), so the actual position is quantised
-and lags the setpoint: the following error is a real quantity.  Without enable the drive ramps down with
-its own ramp (``Plant.OffRampTime``), as a drive does when the controller removes the enable.
+with time constant ``PlantSpec.speed_time_constant`` and integrated exactly over each servo cycle; its speed
+is limited to ``DriveSpec.max_speed``.  The encoder counts increments of finite size
+(``EncoderSpec.increment``: steps per revolution times the fine resolution, or the linear grid), so the
+actual position is quantised and lags the setpoint: the following error is a real quantity.  Without
+enable the drive ramps down with its own ramp (``DriveSpec.off_ramp_time``), as a drive does when the
+controller removes the enable.
 
 Stepper (PTO, §2.1): open loop, the actual position is the number of output pulses, i.e. the setpoint
 rounded to whole pulses; the actual velocity is the pulse frequency.
+
+Every model takes a :class:`~plcmotion.drives.spec.DriveSpec` and reads it when a member is added (or
+reconfigured), never in the servo cycle.
 """
 from __future__ import annotations
 
 import math
-from typing import Any, Mapping
+from typing import Any
 
 import numpy as np
 
 from .base import DriveChannel, DriveGroup
 from .profidrive_link import ProfidriveLink, word_scale
+from .spec import ActuatorKind, DriveSpec, SetpointInterface
 
 
-def encoder_increment(cfg: Mapping[str, Any]) -> float:
-    """Distance [user unit] of one increment of the encoder (S7-1200 V6 §5.4.3.3, §12.9.6.3)."""
-    fine = 2 ** cfg["Sensor[1].Parameter.FineResolutionXist1"]
-    if cfg["Sensor[1].System"] == 1:                      # rotary
-        per_rev = cfg["Sensor[1].Parameter.StepsPerRevolution"] * fine
-        distance = (cfg["Mechanics.LeadScrew"] if cfg["Sensor[1].MountingMode"] == 0
-                    else cfg["Sensor[1].Parameter.DistancePerRevolution"])
-        return distance / per_rev
-    return cfg["Sensor[1].Parameter.Resolution"] / fine
-
-
-def drive_speed_limit(cfg: Mapping[str, Any]) -> float:
-    """Load velocity [user unit/s] at the drive's maximum speed."""
-    return cfg["Actor.DriveParameter.MaxSpeed"] / 60.0 * cfg["Mechanics.LeadScrew"]
+def new_drive_group(kind: ActuatorKind | str, bank: Any) -> DriveGroup:
+    """An empty group of simulated drives of ``kind`` (the controller keeps one group per kind)."""
+    kind = ActuatorKind(kind)
+    if kind is ActuatorKind.SPEED_SERVO:
+        return ServoDrives()
+    return SetpointDrives(stepper=kind is ActuatorKind.PULSE, bank=bank)
 
 
 class _ServoChannel(DriveChannel):
@@ -95,7 +92,7 @@ class _ServoChannel(DriveChannel):
         g, m = self.group, self.member
         link = g.links[m]
         if link is None:
-            raise TypeError("only axes with a PROFIdrive drive (Actor.Type = 1) exchange telegrams")
+            raise TypeError("only axes with a PROFIdrive drive exchange telegrams")
         link.cycles = g.cycles
         q = float(g.q[m])
         count = math.floor(float(g.x[m]) / q)
@@ -159,29 +156,27 @@ class ServoDrives(DriveGroup):
         for name in self._FIELDS:
             setattr(self, name, np.zeros(0))
 
-    def add(self, index: int, cfg: Mapping[str, Any], servo_cycle: float, t: float) -> DriveChannel:
-        tc = cfg["Plant.SpeedTimeConstant"]
+    def add(self, index: int, spec: DriveSpec, servo_cycle: float, t: float) -> DriveChannel:
+        plant, enc = spec.plant, spec.encoder
+        tc = plant.speed_time_constant
         e = math.exp(-servo_cycle / tc) if tc > 0 else 0.0
-        vlim = drive_speed_limit(cfg)
-        off_time = cfg["Plant.OffRampTime"]
-        q = encoder_increment(cfg)
-        x0 = cfg["Plant.InitialPosition"]
-        zm_dist = cfg["Plant.ZeroMarkDistance"]
+        vlim = spec.max_velocity
+        off_time = spec.off_ramp_time
+        q = enc.increment
+        x0 = plant.initial_position
+        rev_dist = enc.distance_per_revolution
+        zm_dist = plant.zero_mark_distance
         if zm_dist is None:
             # one zero mark per encoder revolution; a linear encoder has a single one
-            rotary = cfg["Sensor[1].System"] == 1
-            zm_dist = ((cfg["Mechanics.LeadScrew"] if cfg["Sensor[1].MountingMode"] == 0
-                        else cfg["Sensor[1].Parameter.DistancePerRevolution"]) if rotary else math.inf)
-        profidrive = cfg["Actor.Type"] == 1
-        scale, limit = word_scale(cfg["Actor.Interface.Telegram"], analog=not profidrive)
-        rev_dist = (cfg["Mechanics.LeadScrew"] if cfg["Sensor[1].MountingMode"] == 0
-                    else cfg["Sensor[1].Parameter.DistancePerRevolution"])
+            zm_dist = rev_dist if enc.rotary else math.inf
+        profidrive = spec.interface is SetpointInterface.PROFIDRIVE
+        scale, limit = word_scale(spec.telegram, analog=not profidrive)
+        lead = spec.length_per_revolution
         values = dict(x=x0, v=0.0, cmd=0.0, e=e, tfac=tc * (1 - e), vlim=vlim,
                       off_dec=(vlim / off_time) if off_time > 0 else math.inf, ready_at=math.inf,
-                      ready_delay=cfg["Plant.ReadyDelay"], q=q, off=0.0, last=math.floor(x0 / q) * q,
-                      zm_dir=0.0, zm_dist=zm_dist, zm_off=cfg["Plant.ZeroMarkOffset"], zm_hit=math.nan,
-                      zm_count=0.0, lead=cfg["Mechanics.LeadScrew"],
-                      qscale=scale / cfg["Actor.DriveParameter.ReferenceSpeed"], qmax=float(limit), word=0.0,
+                      ready_delay=spec.ready_delay, q=q, off=0.0, last=math.floor(x0 / q) * q,
+                      zm_dir=0.0, zm_dist=zm_dist, zm_off=plant.zero_mark_offset, zm_hit=math.nan,
+                      zm_count=0.0, lead=lead, qscale=scale / spec.reference_speed, qmax=float(limit), word=0.0,
                       rev_dist=rev_dist, dist=0.0)
         for name in self._FIELDS:
             setattr(self, name, np.append(getattr(self, name), values[name]))
@@ -191,7 +186,7 @@ class ServoDrives(DriveGroup):
         self.pulses = np.append(self.pulses, False)
         self.blk = np.append(self.blk, False)
         member = len(self.idx) - 1
-        self.links.append(ProfidriveLink(cfg, servo_cycle) if profidrive else None)
+        self.links.append(ProfidriveLink(spec, servo_cycle) if profidrive else None)
         if profidrive:
             self.stepping.add(member)                 # leave "switching on inhibited" (OFF1 word)
         return _ServoChannel(self, member)
@@ -307,11 +302,11 @@ class _DirectChannel(DriveChannel):
     def communication_ok(self) -> bool:
         return not self.group.stepper
 
-    def reconfigure(self, cfg: Mapping[str, Any]) -> None:
+    def reconfigure(self, spec: DriveSpec) -> None:
         """Mechanics written at runtime (effective at enable, §12.9.5/§12.9.8): new pulse length."""
         g, m = self.group, self.member
         if g.stepper:
-            g.pulse[m] = cfg["Mechanics.LeadScrew"] / cfg["Actor.DriveParameter.PulsesPerDriveRevolution"]
+            g.pulse[m] = spec.pulse_length
 
 
 class SetpointDrives(DriveGroup):
@@ -325,13 +320,12 @@ class SetpointDrives(DriveGroup):
         self.mech_offset = np.zeros(0)          # machine position = actual value + offset
         self.bank = bank
 
-    def add(self, index: int, cfg: Mapping[str, Any], servo_cycle: float, t: float) -> DriveChannel:
-        pulse = (cfg["Mechanics.LeadScrew"] / cfg["Actor.DriveParameter.PulsesPerDriveRevolution"]
-                 if self.stepper else 0.0)
+    def add(self, index: int, spec: DriveSpec, servo_cycle: float, t: float) -> DriveChannel:
+        pulse = spec.pulse_length if self.stepper else 0.0
         self.idx = np.append(self.idx, index)
         self.pulse = np.append(self.pulse, pulse)
         self.grid = np.append(self.grid, 0.0)
-        self.mech_offset = np.append(self.mech_offset, cfg["Plant.InitialPosition"])
+        self.mech_offset = np.append(self.mech_offset, spec.plant.initial_position)
         return _DirectChannel(self, len(self.idx) - 1)
 
     def read(self, bank: Any, t: float, dt: float) -> None:

@@ -17,6 +17,7 @@ from .jobs import MOTION_KINDS, POSITIONING_KINDS, Job, JobKind, JobState
 from .motion import DirectionFault, MotionPlanner, Plan, limits, modulo_target, wrap
 from .profiles import Planner, PlanningError, Profile, velocity_reach
 from .config import ConfigMixin
+from .drive_config import drive_spec
 from .fault_injection import FaultInjectionMixin
 from .homing import HomingMixin
 from .switches import SwitchesMixin
@@ -64,8 +65,8 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
         self.servo = not self.pto and not self.sim
         self.index = ctl.bank.add()
         t = ctl.time
-        group = ctl._drive_group("stepper" if self.pto else "ideal" if self.sim else "servo")
-        self.drive = group.add(self.index, cfg, ctl.servo_cycle, t)
+        spec = drive_spec(cfg)
+        self.drive = ctl._drive_group(spec.actuator.value).add(self.index, spec, ctl.servo_cycle, t)
         self.motion = MotionPlanner(self)
 
         self.state = DISABLED
@@ -110,7 +111,7 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
             b.sp_p[i] = b.act_p[i]
         self._setup_io()
         if not self.sim:
-            ctl.plant.wire_axis(self.eff, self.drive, t)
+            ctl.plant.wire_axis(spec.plant, self.drive, t)
         self._start_profile(Planner.hold(t, float(b.sp_p[i])))
 
     # ------------------------------------------------------------------------------------------------
@@ -159,8 +160,7 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
         if self.pto:
             return P.pulse_length(self.eff)
         if self.servo:
-            from ..drives.simulated import encoder_increment
-            return encoder_increment(self.eff)
+            return drive_spec(self.eff).encoder.increment
         return 1e-9 * max(1.0, abs(self.eff["PositionLimits_SW.MaxPosition"]),
                           abs(self.eff["PositionLimits_SW.MinPosition"]))
 
@@ -188,7 +188,7 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
         b.pm_dwell[i] = e["PositioningMonitoring.MinDwellTime"]
         b.ss_threshold[i] = e["StandstillSignal.VelocityThreshold"]
         b.ss_dwell[i] = e["StandstillSignal.MinDwellTime"]
-        self.drive.reconfigure(e)
+        self.drive.reconfigure(drive_spec(e))
         self._set_loop_flags()
 
     def _set_loop_flags(self) -> None:

@@ -20,7 +20,7 @@ import numpy as np
 
 from ..drives.base import DriveGroup
 from ..drives.plant import Plant
-from ..drives.simulated import ServoDrives, SetpointDrives
+from ..drives.simulated import new_drive_group
 from . import retain
 from . import monitoring
 from . import family as families
@@ -349,9 +349,10 @@ class Controller:
         self._deferred.append(fn)
 
     def _drive_group(self, kind: str) -> DriveGroup:
+        """The group of the drives of ``kind`` (the value of an ``ActuatorKind``: "servo", "stepper", "ideal")."""
         group = self._groups.get(kind)
         if group is None:
-            group = ServoDrives() if kind == "servo" else SetpointDrives(stepper=kind == "stepper", bank=self.bank)
+            group = new_drive_group(kind, self.bank)
             self._groups[kind] = group
             self._group_list.append(group)
         return group

@@ -1,0 +1,155 @@
+"""What a drive is, in the words of motion control: the neutral specification every drive model takes.
+
+A :class:`DriveSpec` describes one axis's actuator (how it is commanded and how fast it may turn), the
+mechanics between motor and load, the encoder (:class:`EncoderSpec`) and, for a simulated drive, the
+machine around it (:class:`PlantSpec`).  Lengths are in the axis's length unit ("length unit", e.g. mm
+or degree), speeds of the motor in revolutions per minute, times in seconds.
+
+The specs are frozen values built once when the axis is created (and again when the axis configuration
+changes at run time): drive models read them at creation or on change, never per servo cycle.  Who
+builds them is the family's business; the kernel's builder is ``kernel.drive_config.drive_spec``.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from enum import Enum
+
+
+class ActuatorKind(str, Enum):
+    """How the actuator is commanded.  (A ``str`` enum: the value names the drive group.)"""
+
+    #: a drive that closes its own speed loop; the controller closes the position loop and sends a speed
+    #: setpoint (PROFIdrive telegram, analog +-10 V, CiA 402 cyclic synchronous velocity)
+    SPEED_SERVO = "servo"
+    #: a stepper on a pulse output: open loop, the actual position is the number of pulses sent
+    PULSE = "stepper"
+    #: no drive: the actual value is the setpoint (simulated or virtual axis)
+    IDEAL = "ideal"
+
+
+class SetpointInterface(str, Enum):
+    """How the setpoint travels to the drive (it decides how the speed setpoint is quantised)."""
+
+    #: PROFIdrive standard telegram: 16#4000 (16 bit) or 16#40000000 (32 bit) = 100 % of the reference speed
+    PROFIDRIVE = "profidrive"
+    #: analog output: 27648 = 10 V = 100 % of the reference speed
+    ANALOG = "analog"
+    #: pulse train (direction and pulses)
+    PULSES = "pulses"
+    #: no physical setpoint (ideal drive)
+    NONE = "none"
+
+
+class EncoderKind(str, Enum):
+    INCREMENTAL = "incremental"          #: counts from where it was switched on; needs homing
+    ABSOLUTE = "absolute"                #: knows its position over ``determinable_revolutions``
+    CYCLIC_ABSOLUTE = "cyclic_absolute"  #: absolute within its range, the range repeats
+
+
+class EncoderInterface(str, Enum):
+    """Where the encoder's actual value comes from (decides e.g. whether it has zero marks on the bus)."""
+
+    DRIVE_TELEGRAM = "drive_telegram"    #: the encoder of the drive, in the drive's telegram
+    PROFIDRIVE = "profidrive"            #: an encoder with its own PROFIdrive telegram
+    TECHNOLOGY_MODULE = "technology_module"
+    HIGH_SPEED_COUNTER = "high_speed_counter"
+
+
+@dataclass(frozen=True)
+class EncoderSpec:
+    """The position measuring system.
+
+    A rotary encoder has ``steps_per_revolution`` marks per turn and turns once per
+    ``distance_per_revolution`` of load travel; a linear encoder has a mark every ``step_length``.  The
+    cyclic actual value resolves each step into ``2 ** fine_bits`` counts (PROFIdrive Gx_XIST1, fine
+    resolution), the absolute value into ``2 ** fine_bits_absolute`` (Gx_XIST2).  The actual position
+    therefore moves in whole :attr:`increment` steps.
+    """
+
+    kind: EncoderKind = EncoderKind.INCREMENTAL
+    rotary: bool = True
+    steps_per_revolution: int = 2048     #: marks per encoder revolution (rotary)
+    fine_bits: int = 11                  #: fine resolution of the cyclic actual value [bit]
+    fine_bits_absolute: int = 9          #: fine resolution of the absolute value [bit]
+    #: load travel per encoder revolution [length unit]; also the length over which an absolute value
+    #: counts one revolution and, by default, the distance between zero marks
+    distance_per_revolution: float = 10.0
+    step_length: float = 0.001           #: linear encoder: distance between two marks [length unit]
+    #: revolutions an absolute encoder tells apart (0: incremental, it tells none)
+    determinable_revolutions: int = 0
+    #: the encoder counts against the axis's positive direction.  Values at the drive interface are always
+    #: in axis coordinates: a drive adapter corrects the sign on its side (the simulated machine is wired
+    #: consistently, so the inversion cancels and nothing is observable: decision 53)
+    inverse_direction: bool = False
+    interface: EncoderInterface = EncoderInterface.DRIVE_TELEGRAM
+
+    @property
+    def absolute(self) -> bool:
+        return self.kind is not EncoderKind.INCREMENTAL
+
+    @property
+    def increment(self) -> float:
+        """Length of one count of the cyclic actual value [length unit] (S7-1200 V6 §5.4.3.3, §12.9.6.3)."""
+        fine = 2 ** self.fine_bits
+        if self.rotary:
+            return self.distance_per_revolution / (self.steps_per_revolution * fine)
+        return self.step_length / fine
+
+
+@dataclass(frozen=True)
+class SwitchSpec:
+    """A switch of the simulated machine, actuated while the load is in [low, high] (machine coordinates),
+    repeating every ``period`` if given, wired to input ``address``."""
+
+    address: str
+    low: float = -math.inf
+    high: float = math.inf
+    active_high: bool = True             #: FALSE: an NC contact, the input is FALSE while actuated
+    name: str = "switch"
+    period: float | None = None
+
+
+@dataclass(frozen=True)
+class PlantSpec:
+    """The simulated machine behind a drive (no meaning for a real drive)."""
+
+    initial_position: float = 0.0        #: load position at controller start [length unit]
+    #: time constant of the drive's closed speed loop, modelled as a first-order lag [s] (0: ideal)
+    speed_time_constant: float = 0.002
+    #: distance between the encoder's zero marks [length unit]; None: one per encoder revolution
+    #: (a linear encoder has a single one)
+    zero_mark_distance: float | None = None
+    zero_mark_offset: float = 0.0        #: machine position of one zero mark [length unit]
+    switches: tuple[SwitchSpec, ...] = ()    #: limit and homing switches the load actuates
+    ready_input: str = ""                #: input wired to the drive's "ready" signal ("" for none)
+
+
+@dataclass(frozen=True)
+class DriveSpec:
+    """One axis's drive: actuator, interface, speed range, mechanics, timing, encoder and plant."""
+
+    actuator: ActuatorKind = ActuatorKind.SPEED_SERVO
+    interface: SetpointInterface = SetpointInterface.PROFIDRIVE
+    telegram: int = 3                    #: PROFIdrive standard telegram (1, 2, 3, 4) of a PROFIdrive drive
+    reference_speed: float = 3000.0      #: motor speed of a 100 % speed setpoint [1/min]
+    max_speed: float = 3000.0            #: the drive limits the motor speed to this [1/min]
+    length_per_revolution: float = 10.0  #: load travel per motor revolution (lead screw, gear) [length unit]
+    pulses_per_revolution: int = 1000    #: pulse drive: pulses per motor revolution
+    ready_delay: float = 0.0             #: from enable until the drive reports "ready" [s]
+    #: the drive ramps from ``max_speed`` to standstill in this time when its enable is removed or when it
+    #: faults (the power section stops following the setpoint) [s]; 0: at once
+    off_ramp_time: float = 0.1
+    fault_code: int = 7900               #: fault number the drive reports for a fault of its own
+    encoder: EncoderSpec = field(default_factory=EncoderSpec)
+    plant: PlantSpec = field(default_factory=PlantSpec)
+
+    @property
+    def max_velocity(self) -> float:
+        """Load velocity at ``max_speed`` [length unit/s]."""
+        return self.max_speed / 60.0 * self.length_per_revolution
+
+    @property
+    def pulse_length(self) -> float:
+        """Load travel of one pulse of a pulse drive [length unit]."""
+        return self.length_per_revolution / self.pulses_per_revolution

@@ -201,3 +201,14 @@ def test_thousand_points_interpolate_into_a_usable_curve_s6_2_5_7():
     for mode in (LINEAR, CUBIC_SPLINE, BEZIER):
         cam = interpolate(pts, [], mode, 1)
         assert cam.value(90.0) == pytest.approx(50.0, abs=0.05)
+
+
+def test_bezier_flat_start_before_a_peak_stays_in_range_s5_1():
+    """Hypothesis found it after the test moved (new derandomized examples): points 0, 0, 0, 1, 0 gave a
+    Bézier cam that dipped to -3.7e-7 near the start - a Hermite piece between two samples of the B-spline
+    left the range although the spline does not.  The values stay within the points' range."""
+    pts = [(10.0 * i, y) for i, y in enumerate([0.0, 0.0, 0.0, 1.0, 0.0])]
+    cam = interpolate(pts, [], BEZIER, 0)
+    x = np.linspace(0.0, 40.0, 4001)
+    values = cam.evaluate(x)[0]
+    assert values.min() >= -1e-12 and values.max() <= 1.0 + 1e-12

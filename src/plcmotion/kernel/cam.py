@@ -409,11 +409,68 @@ def _pieces_bezier(g: _Gap, lo: float, hi: float) -> tuple[list[float], list[np.
     xs, ys = bx(u), by(u)
     slopes = dby(u) / dbx(u)
     xs[0], ys[0], xs[-1], ys[-1] = ctrl[0][0], ctrl[0][1], ctrl[-1][0], ctrl[-1][1]
+    _keep_in_range(xs, ys, slopes, lo, hi, fixed=(g.slope_left is not None, g.slope_right is not None))
     bp, cs = [], []
     for i in range(len(u) - 1):
         bp.append(float(xs[i]))
         cs.append(_hermite(xs[i], xs[i + 1], ys[i], ys[i + 1], slopes[i], slopes[i + 1]))
     return bp, cs
+
+
+def _hermite_range(y0: float, y1: float, m0: float, m1: float) -> tuple[float, float]:
+    """Smallest and largest value of the cubic Hermite piece with end values y0, y1 and end slopes m0, m1
+    (already multiplied by the piece's length), over the piece."""
+    a, b, c = 3.0 * (m0 + m1 + 2.0 * (y0 - y1)), 2.0 * (3.0 * (y1 - y0) - 2.0 * m0 - m1), m0   # h'(t)
+    ts = [0.0, 1.0]
+    if abs(a) > 1e-300:
+        disc = b * b - 4.0 * a * c
+        if disc >= 0.0:
+            r = math.sqrt(disc)
+            ts += [t for t in ((-b - r) / (2.0 * a), (-b + r) / (2.0 * a)) if 0.0 < t < 1.0]
+    elif abs(b) > 1e-300 and 0.0 < -c / b < 1.0:
+        ts.append(-c / b)
+    vals = [y0 + t * (m0 + t * ((3.0 * (y1 - y0) - 2.0 * m0 - m1) + t * (m0 + m1 + 2.0 * (y0 - y1))))
+            for t in ts]
+    return min(vals), max(vals)
+
+
+def _keep_in_range(xs: np.ndarray, ys: np.ndarray, slopes: np.ndarray, lo: float, hi: float,
+                   fixed: tuple[bool, bool] = (False, False)) -> None:
+    """Limit the sample slopes of a Bézier gap where a Hermite piece between two samples would leave the cam's
+    value range [lo, hi] although the curve itself does not (a sample near the edge of the range next to a
+    steep one: the Hermite cubic dips past the edge, found by hypothesis as -3.7e-7 on a range of 1).  Such a
+    piece gets the Fritsch-Carlson limits (slopes along the chord, at most three times it), which keep it
+    between its end values; the slopes are shared with the neighbours, so C1 holds.  An end slope that joins
+    a segment or meets the boundary condition (``fixed``) is kept."""
+    tol = 1e-12 * max(1.0, abs(lo), abs(hi))
+    keep = {0} if fixed[0] else set()
+    if fixed[1]:
+        keep.add(len(xs) - 1)
+    for _ in range(4):                       # a limited slope changes the neighbour piece: recheck
+        changed = False
+        for i in range(len(xs) - 1):
+            h = xs[i + 1] - xs[i]
+            if not h > 0.0:
+                continue
+            y0, y1 = ys[i], ys[i + 1]
+            low, high = _hermite_range(y0, y1, slopes[i] * h, slopes[i + 1] * h)
+            if low >= lo - tol and high <= hi + tol:
+                continue
+            d = (y1 - y0) / h
+            before = (slopes[i], slopes[i + 1])
+            free = [j for j in (i, i + 1) if j not in keep]
+            for j in free:
+                if slopes[j] * d <= 0.0:
+                    slopes[j] = 0.0
+            if d != 0.0 and free:
+                a, b = slopes[i] / d, slopes[i + 1] / d
+                norm = math.hypot(a, b)
+                if norm > 3.0:
+                    for j in free:
+                        slopes[j] *= 3.0 / norm
+            changed = changed or before != (slopes[i], slopes[i + 1])
+        if not changed:
+            return
 
 
 def _bezier_boundary_slope(first: "_Gap", last: "_Gap", lo: float, hi: float) -> float:

@@ -224,6 +224,15 @@ def test_reversing_blend_plans_no_motion_through_the_target():
     assert ax.blends == []                           # transition velocity 0: the axis stops at the target
 
 
+def test_cancelling_the_waiting_blend_replans_the_running_positioning_to_stop():
+    ax = FakeAxis()
+    j1, j2 = move(1000.0, 50.0), move(500.0, 30.0)
+    ax.queue.submit(j1)
+    ax.queue.submit(j2, BufferMode.BLENDING_LOW)
+    ax.queue.abort_all()
+    assert j2.state == JobState.ABORTED and ax.blends[-1] == (j1, None, 0.0) and j1.active
+
+
 def test_family_transition_velocity_replaces_the_plcopen_choice():
     ax = FakeAxis()
     j1, j2 = move(1000.0, 50.0), move(500.0, 30.0)
@@ -458,6 +467,49 @@ def test_axis_disable_aborts_waiting_jobs():
     ctl.run(20.0)
     assert velocity(ctl, axis) == 0.0 and axis.queue.pending == ()
     del owner
+
+
+def test_cancelled_blend_stops_at_the_first_target():
+    ctl, axis = sim_axis()
+    j1 = Job(JobKind.RELATIVE, position=1000.0, velocity=50.0)
+    j2 = Job(JobKind.RELATIVE, position=500.0, velocity=50.0)
+    axis.submit(j1)
+    ctl.run(5.0)
+    axis.submit(j2, BufferMode.BLENDING_HIGH)
+    ctl.run(1.0)
+    axis.queue.abort_all()
+    assert j2.state == JobState.ABORTED and j1.active
+    rec = Recorder(ctl, axis)
+    ctl.run_until(lambda: not j1.busy, 60.0)
+    assert j1.state == JobState.DONE and position(ctl, axis) == pytest.approx(1000.0, abs=1e-9)
+    assert max(s[1] for s in rec.samples) == pytest.approx(1000.0, abs=1e-9)
+
+
+def test_queued_job_is_checked_when_it_is_accepted():
+    ctl, axis = sim_axis()
+    j1 = Job(JobKind.RELATIVE, position=100.0, velocity=50.0)
+    j2 = Job(JobKind.ABSOLUTE, position=300.0, velocity=50.0)
+    axis.submit(j1)
+    axis.submit(j2, BufferMode.BUFFERED)              # the axis is not homed: no absolute positioning
+    assert j2.state == JobState.ERROR and j2.fault.kind == F.NOT_HOMED and j1.active
+
+
+def test_blend_within_software_limits_is_not_a_move_to_the_limit():
+    """With software limit switches active the motion beyond the first target belongs to the next job: the
+    blend passes 1000 and ends at 1500 without a limit alarm."""
+    ctl, axis = sim_axis(**{"PositionLimits_SW.Active": True, "PositionLimits_SW.MinPosition": -10.0,
+                            "PositionLimits_SW.MaxPosition": 1600.0})
+    axis.home_direct(Job(JobKind.HOME_DIRECT, position=0.0))
+    assert axis.sw_limits_effective()
+    j1 = Job(JobKind.ABSOLUTE, position=1000.0, velocity=50.0)
+    j2 = Job(JobKind.ABSOLUTE, position=1500.0, velocity=50.0)
+    axis.submit(j1)
+    axis.submit(j2, BufferMode.BLENDING_LOW)
+    rec = Recorder(ctl, axis)
+    ctl.run_until(lambda: not j2.busy, 120.0)
+    assert rec.crossing(1000.0)[2] == pytest.approx(50.0, abs=ACC * DT + 1e-6)
+    assert j1.state == j2.state == JobState.DONE and not axis.alarms
+    assert position(ctl, axis) == pytest.approx(1500.0, abs=1e-9)
 
 
 # --- random sequences ---------------------------------------------------------------------------------------------

@@ -82,8 +82,14 @@ class AxisQueueOwner:
         way = self._next_way(running, job)
         return way is None or way * heading <= 0.0
 
-    def plan_blend(self, running: Job, job: Job, speed: float) -> float:
+    def plan_blend(self, running: Job, job: Job | None, speed: float) -> float:
         ax = self.axis
+        if job is None:
+            # the job it was to blend into is gone: the positioning stops at its target again (from beyond
+            # it, if it has passed it already)
+            if running.extra.pop("blend_speed", None) and running is ax.job and running.busy:
+                ax._plan_job(running, ax.now, new_command=False)
+            return 0.0
         if running is not ax.job or not ax._interpolating:
             return 0.0                       # its motion has ended already: the handover is at Done
         way = self._next_way(running, job)

@@ -117,32 +117,43 @@ def end_speed(planner: Planner, p: float, v: float, a: float, target: float, lim
     return min(max(speed, lo), hi)
 
 
+def _ramp_then_cruise(planner: Planner, t: float, p: float, v: float, a: float, x: float, speed: float,
+                      sign: float, lim: Limits) -> tuple[list[Segment], float]:
+    """Segments that change the speed to ``speed`` at once and keep it up to ``x``, and the time at ``x``."""
+    ramp = planner.velocity(t, p, v, a, sign * speed, _speed_limits(lim, speed))
+    segments = ramp.segments[:-1]
+    rest = max((x - ramp.final.p) * sign, 0.0)       # >= 0 up to rounding: the speed is reachable
+    if rest > 0.0:
+        segments.append(Segment(ramp.t_end, ramp.final.p, sign * speed, 0.0, 0.0))
+    return segments, ramp.t_end + rest / speed
+
+
 def blend_profile(planner: Planner, t: float, p: float, v: float, a: float, target: float, lim: Limits,
                   speed: float, *, allow_reverse: bool = True) -> Profile:
     """Time-optimal move to ``target`` passing it at ``speed`` (clamped by ``end_speed``) and going on.
 
     At or below the job's velocity this is ``Planner.position`` with an end velocity; above it the move
-    runs to the point from which the last ramp up to ``speed`` ends exactly at the target.
+    runs to the point from which the last ramp up to ``speed`` ends exactly at the target.  Where the axis
+    cannot stop before that point any more (``Planner.position`` would turn back), it changes its speed at
+    once and keeps it up to there.
     """
     u = end_speed(planner, p, v, a, target, lim, speed)
+    if u <= 0.0:
+        return planner.position(t, p, v, a, target, lim, allow_reverse=allow_reverse)
     sign = math.copysign(1.0, v if abs(v) > 1e-9 else target - p)
-    if u > 0.0 and (target - planner.stop_position(p, v, a, lim)) * sign < -1e-9:
-        # the axis cannot stop before the target any more (``Planner.position`` would turn back): change
-        # the speed to ``u`` at once and keep it up to the target
-        ramp = planner.velocity(t, p, v, a, sign * u, _speed_limits(lim, u))
-        segments = ramp.segments[:-1]
-        segments.append(Segment(ramp.t_end, ramp.final.p, sign * u, 0.0, 0.0))
-        t_end = ramp.t_end + (target - ramp.final.p) / (sign * u)
-        segments.append(Segment(t_end, target, sign * u, 0.0, 0.0))
-        return Profile(segments, t_end)
-    if u <= lim.velocity * (1 + _REL):
-        return planner.position(t, p, v, a, target, lim, allow_reverse=allow_reverse, end_velocity=u)
     cruise = lim.velocity
-    ramp = planner.velocity(0.0, 0.0, sign * cruise, 0.0, sign * u, _speed_limits(lim, u))
-    start = target - ramp.final.p
-    first = planner.position(t, p, v, a, start, lim, allow_reverse=allow_reverse, end_velocity=cruise)
-    t0 = first.t_end
-    segments = first.segments[:-1]
-    segments += [Segment(t0 + s.t, start + s.p, s.v, s.a, s.j) for s in ramp.segments[:-1]]
-    segments.append(Segment(t0 + ramp.t_end, target, sign * u, 0.0, 0.0))
-    return Profile(segments, t0 + ramp.t_end)
+    ramp = None
+    start, first_speed = target, u
+    if u > cruise * (1 + _REL) and sign * v <= cruise * (1 + _REL):
+        ramp = planner.velocity(0.0, 0.0, sign * cruise, 0.0, sign * u, _speed_limits(lim, u))
+        start, first_speed = target - ramp.final.p, cruise
+    if (start - planner.stop_position(p, v, a, lim)) * sign < -1e-9 or first_speed > cruise * (1 + _REL):
+        segments, t0 = _ramp_then_cruise(planner, t, p, v, a, start, first_speed, sign, lim)
+    else:
+        first = planner.position(t, p, v, a, start, lim, allow_reverse=allow_reverse, end_velocity=first_speed)
+        segments, t0 = first.segments[:-1], first.t_end
+    if ramp is not None:
+        segments += [Segment(t0 + s.t, start + s.p, s.v, s.a, s.j) for s in ramp.segments[:-1]]
+        t0 += ramp.t_end
+    segments.append(Segment(t0, target, sign * u, 0.0, 0.0))
+    return Profile(segments, t0)

@@ -100,9 +100,10 @@ class QueueOwner(Protocol):
     def reverses(self, running: Job, job: Job) -> bool:
         """Whether ``job``, started at the target of ``running``, moves against its direction of travel."""
 
-    def plan_blend(self, running: Job, job: Job, speed: float) -> float:
+    def plan_blend(self, running: Job, job: Job | None, speed: float) -> float:
         """Re-plan the running positioning to pass its target at ``speed`` (lowered where the distance or the
-        dynamics do not allow it) on the way to ``job``; returns the planned speed (0: it stops there)."""
+        dynamics do not allow it) on the way to ``job``; returns the planned speed (0: it stops there).
+        ``job`` None: the blend is cancelled, the positioning stops at its target again."""
 
     def passed_target(self, job: Job) -> bool:
         """Whether the running positioning ``job`` has passed its target in a blend."""
@@ -200,8 +201,12 @@ class JobQueue:
             self.owner.finish(running, JobState.DONE)    # reported back through finished() -> _advance
 
     def abort_all(self) -> None:
-        """End every waiting job aborted (the axis was disabled, restarted, ...)."""
+        """End every waiting job aborted; a running positioning planned to blend into one stops at its target."""
+        running = self._running
+        blended = bool(self._waiting) and self._waiting[0].mode.blending
         self._abort_waiting()
+        if blended and running is not None and running.busy and running.kind in POSITIONING_KINDS:
+            self.owner.plan_blend(running, None, 0.0)
 
     # --- rules ----------------------------------------------------------------------------------------
     def _advance(self) -> None:

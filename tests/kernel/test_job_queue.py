@@ -455,10 +455,8 @@ def test_buffered_job_waits_for_positioning_monitoring_on_a_servo_axis():
     assert j2.state == JobState.DONE and position(ctl, axis) == pytest.approx(100.0, abs=1e-9)
 
 
-def test_axis_disable_aborts_waiting_jobs():
+def test_axis_alarm_aborts_waiting_jobs():
     ctl, axis = sim_axis()
-    owner = object()
-    axis.power_owner = None
     j1, j2 = (Job(JobKind.RELATIVE, position=1000.0, velocity=50.0) for _ in range(2))
     axis.submit(j1)
     axis.submit(j2, BufferMode.BUFFERED)
@@ -466,7 +464,18 @@ def test_axis_disable_aborts_waiting_jobs():
     assert j1.state == JobState.ERROR and j2.state == JobState.ABORTED
     ctl.run(20.0)
     assert velocity(ctl, axis) == 0.0 and axis.queue.pending == ()
-    del owner
+
+
+def test_disabling_the_axis_aborts_waiting_jobs():
+    ctl, axis = sim_axis()
+    j1, j2 = (Job(JobKind.RELATIVE, position=1000.0, velocity=50.0) for _ in range(2))
+    axis.submit(j1)
+    axis.submit(j2, BufferMode.BLENDING_LOW)
+    ctl.run(1.0)
+    axis.power(axis.power_owner, False, 1, 0)
+    ctl.run(20.0)
+    assert j1.state == JobState.ABORTED and j2.state == JobState.ABORTED and not j2.pending
+    assert axis.state == "disabled" and velocity(ctl, axis) == 0.0
 
 
 def test_cancelled_blend_stops_at_the_first_target():

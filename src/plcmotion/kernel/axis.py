@@ -14,6 +14,7 @@ from . import parameters as P
 from .family import PULSE_SLICE_TIME
 from .faults import Fault, Reaction
 from .jobs import MOTION_KINDS, POSITIONING_KINDS, Job, JobKind, JobState
+from .axis_queue import BufferMode, axis_queue
 from .motion import DirectionFault, MotionPlanner, Plan, limits, modulo_target, wrap
 from .profiles import Planner, PlanningError, Profile, velocity_reach
 from .config import ConfigMixin
@@ -74,6 +75,7 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
         self.position_controlled = True
         self.alarms: list[Fault] = []
         self.job: Job | None = None                   # active motion job
+        self.queue = axis_queue(self)                 # jobs waiting behind it (PLCopen BufferMode)
         self.passive_home: Job | None = None
         self.table_job: Job | None = None             # MC_CommandTable job (also before it takes over)
         self.power_owner: Any = None
@@ -250,6 +252,7 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
                 if self.profile is prof and name in self._pending:
                     del self._pending[name]
                     self._on_milestone(name, t)
+        self.queue.poll()
         self._schedule()
 
     def _on_timer(self, name: str, t: float) -> None:
@@ -315,6 +318,7 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
             self._table_release(job)
         if self._pm_job is job:
             self._stop_positioning_monitor()
+        self.queue.finished(job)
 
     # ------------------------------------------------------------------------------------------------
     # positioning monitoring (§5.4.4.6), following error, from the vectorised monitors
@@ -608,8 +612,12 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
             return Fault(F.PENDING_ALARM, first.kind + "/" + first.detail, False, text=str(first))
         return None
 
-    def submit(self, job: Job) -> None:
-        """Start a motion job (MC_Halt, MC_MoveAbsolute, MC_MoveRelative, MC_MoveVelocity, MC_MoveJog)."""
+    def submit(self, job: Job, buffer_mode: BufferMode = BufferMode.ABORTING) -> None:
+        """Start a motion job (MC_Halt, MC_MoveAbsolute, MC_MoveRelative, MC_MoveVelocity, MC_MoveJog);
+        with a buffer mode other than Aborting it waits in ``self.queue`` behind the running job."""
+        if buffer_mode != BufferMode.ABORTING:
+            self.queue.submit(job, buffer_mode)
+            return
         fault = self.check_start(job)
         if fault is not None:
             job.finish(JobState.ERROR, fault)
@@ -620,7 +628,7 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
             return
         p, v, a = self._state_now()
         if job.kind == JobKind.RELATIVE:
-            job.target = p + job.position
+            job.target = job.extra.pop("relative_base", p) + job.position
             if abs(job.target) > P.E12:
                 job.finish(JobState.ERROR, F.reject(F.REJECTED, "numeric_limit"))
                 return

@@ -84,6 +84,8 @@ LV_NOT_READY = "lv_not_ready"            # the leading value source cannot provi
 # axis alarm of a synchronous axis: the master of the job is not configured as a possible leading value
 SYNC_MASTER = "sync_master"
 LV_INVALID = "lv_invalid"                # leading axis proxy: external leading value invalid (alarm 900)
+QUEUE_FULL = "queue_full"                # the axis's job queue holds as many waiting jobs as it can (depth)
+NOT_APPENDABLE = "not_appendable"        # a job cannot wait behind the running one (detail: its kind)
 
 
 def alarm(kind: str, detail: str = "", reaction: Reaction = Reaction.NONE, text: str = "") -> Fault:

@@ -76,11 +76,18 @@ class Job:
     start_sync: bool = False           # synchronization has started (StartSync)
     in_sync: bool = False              # synchronous (InGear / InSync)
     end_of_profile: int = 0            # counts cam ends reached (EndOfProfile)
+    # waiting in the axis's job queue behind the running job (PLCopen buffer modes, kernel/job_queue.py)
+    pending: bool = False
     extra: dict = field(default_factory=dict)
 
     @property
     def busy(self) -> bool:
         return self.state == JobState.BUSY
+
+    @property
+    def active(self) -> bool:
+        """PLCopen Part 1 "Active": the job controls the axis (Busy and no longer waiting in the queue)."""
+        return self.state == JobState.BUSY and not self.pending
 
     def finish(self, state: JobState, fault: Fault | None = None) -> None:
         if self.state == JobState.BUSY:

@@ -10,6 +10,7 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
+from .blending import blend_profile
 from .jobs import Job, JobKind
 from .profiles import INF, Limits, Planner, PlanningError, Profile, ReversalRequired, first_time_at_velocity
 
@@ -190,16 +191,21 @@ class MotionPlanner:
             target = job.target
             if lim.velocity <= 0.0:                  # velocity override 0 %: wait at standstill
                 return Plan(pl.stop(t, p, v, a, lim), override_hold=True)
+            blend = job.extra.get("blend_speed", 0.0)     # passes the target into a queued job (job_queue)
+            reverse = self._permitted(-1) and self._permitted(1)
             try:
-                profile = pl.position(t, p, v, a, target, lim, allow_reverse=self._permitted(-1) and self._permitted(1),
-                                      end_velocity=job.extra.get("end_velocity", 0.0))
+                if blend:
+                    profile = blend_profile(pl, t, p, v, a, target, lim, blend, allow_reverse=reverse)
+                else:
+                    profile = pl.position(t, p, v, a, target, lim, allow_reverse=reverse,
+                                          end_velocity=job.extra.get("end_velocity", 0.0))
             except ReversalRequired:
                 raise DirectionFault("reversal") from None
             self._check_direction(profile, p)
-            if ax.pto and profile.duration < SHORT_POSITIONING and abs(v) <= 1e-12 and target != p:
+            if ax.pto and profile.duration < SHORT_POSITIONING and abs(v) <= 1e-12 and target != p and not blend:
                 # §12.5: a positioning shorter than 2 ms runs at pulses x 500 Hz, i.e. takes 2 ms
                 profile = Planner.constant_move(t, p, target, SHORT_POSITIONING)
-            return self._guard(Plan(profile), t, p, v, a, lim, cruise=abs(job.velocity))
+            return self._guard(Plan(profile), t, p, v, a, lim, cruise=abs(job.velocity), passes_on=bool(blend))
         if kind in (JobKind.VELOCITY, JobKind.JOG):
             target_v = 0.0 if job.jog_released else ax.commanded_velocity(job.velocity)
             lim = _strict(limits(ax, None, job=job), replan, reach)
@@ -250,7 +256,10 @@ class MotionPlanner:
         return Plan(Planner.ramp_stop(t, p, v, abs(v) / duration))
 
     # --- software limit switches (§2.3, §5.4.4.3, §12.4) -------------------------------------------
-    def _guard(self, plan: Plan, t: float, p: float, v: float, a: float, lim: Limits, cruise: float) -> Plan:
+    def _guard(self, plan: Plan, t: float, p: float, v: float, a: float, lim: Limits, cruise: float,
+               passes_on: bool = False) -> Plan:
+        """``passes_on``: the motion beyond the profile's end belongs to the next job, which is guarded
+        when it starts; only the way to the target counts here."""
         ax = self.axis
         if not ax.sw_limits_effective():
             return plan
@@ -271,7 +280,7 @@ class MotionPlanner:
         if side is None and profile.final.v == 0.0:
             final = profile.final
             final.p = min(max(final.p, lo_lim), hi_lim)
-        if side is None:
+        if side is None and not passes_on:
             fv = profile.final.v
             side = "max" if fv > 0 else "min" if fv < 0 else None
         if side is None:

@@ -15,7 +15,7 @@ from .jobs import Job, JobKind
 from .profiles import INF, Limits, Planner, PlanningError, Profile, ReversalRequired, first_time_at_velocity
 
 if TYPE_CHECKING:  # pragma: no cover
-    from .axis import PositioningAxis
+    from .protocols import PlannedAxis as PositioningAxis
 
 _TOL = 1e-9
 SHORT_POSITIONING = 0.002       # s, PTO positioning duration below which the velocity is reduced (§12.5)

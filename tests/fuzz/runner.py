@@ -33,6 +33,8 @@ STUCK_SECONDS = 2.5            # Busy at standstill longer than this (virtual ti
 STUCK_CHECKED = {"MC_MoveAbsolute", "MC_MoveRelative", "MC_Halt", "MC_Reset", "MC_MoveSuperimposed",
                  "MC_PhasingRelative", "MC_PhasingAbsolute", "MC_InterpolateCam", "MC_GetCamLeadingValue",
                  "MC_GetCamFollowingValue", "MC_ChangeDynamic", "MC_WriteParam"}
+# outputs that show a job progressing although its axes stand still
+PROGRESS_OUTPUTS = ("CoveredPhaseShift", "AbsolutePhaseShift")
 REL_TOL = 1e-3                 # relative tolerance of the dynamic limits
 ABS_TOL = 1e-6
 
@@ -151,6 +153,7 @@ class Run:
         self.fbs: dict[str, Any] = {}
         self.fb_cls: dict[str, str] = {}
         self._busy_still: dict[str, int] = {}
+        self._progress: dict[str, tuple] = {}
         self._prev_exec: dict[str, bool] = {}
         self._job_axes: dict[str, list] = {}
         self.stopped = False
@@ -202,6 +205,7 @@ class Run:
         # applied to building it), so the jerk check is out of scope until the acceleration is zero again.
         self._prev_a = np.zeros(n)
         self._prev_j = np.zeros(n)
+        self._prev_t = -math.inf                     # time of the previous servo sample
         self._free_acc = np.zeros(n, dtype=bool)     # outstanding jerk-free acceleration
         # Settling (docs/decisions.md row 66): where a re-plan starts with an acceleration the configured jerk
         # cannot take back before the velocity passes its bound, the first segment of the new plan takes it
@@ -252,7 +256,9 @@ class Run:
             else:
                 idx = self.index
                 seg_t, seg_a, seg_j = b.seg_t[idx], b.seg_a[idx], b.seg_j[idx]
-            fresh = np.abs(seg_t - t) <= 1e-12         # a plan made at this sample
+            # a segment that began since the previous sample: a plan made at this sample (an event) or in the
+            # application cycle before it (an instruction plans from the last sample's time)
+            fresh = seg_t > self._prev_t - 1e-12
             jl = self._jlim * (1 + REL_TOL) + ABS_TOL
             starts = fresh & (np.abs(seg_j) > jl) & (seg_j * seg_a < 0)
             if starts.any():
@@ -273,6 +279,7 @@ class Run:
             np.maximum(self._peak_j, jabs, out=self._peak_j)
             self._prev_a[:] = a
             self._prev_j[:] = j
+            self._prev_t = t
         except Exception as exc:  # pragma: no cover - a defect of the fuzzer itself
             self._nonfinite = f"fuzzer hook failed: {exc!r}"
 
@@ -392,7 +399,12 @@ class Run:
             still = all(b.sp_v[a.index] == 0.0 and b.sp_a[a.index] == 0.0 and abs(b.act_v[a.index]) < 1e-6
                         for a in axes)
             override = all(_num(a.cfg.get("Override.Velocity", 100.0)) not in (None, 0.0) for a in axes)
-            if still and override:
+            # a phase shift goes on while synchronous operation is simulated (S7-1500T V5 §9.1.6.1: the
+            # follower's synchronous setpoint is zero then): its progress output moving is not standstill
+            progress = tuple(out.get(k) for k in PROGRESS_OUTPUTS if k in out)
+            moved = progress != self._progress.get(name, progress)
+            self._progress[name] = progress
+            if still and override and not moved:
                 n = self._busy_still.get(name, 0) + 1
                 self._busy_still[name] = n
                 if n * self.ctl.app_cycle > STUCK_SECONDS:

@@ -221,6 +221,13 @@ class Planner:
         d1 = (peak * peak - u0 * u0) / (2 * acc) if peak >= u0 else (u0 * u0 - peak * peak) / (2 * dec)
         d3 = (peak * peak - ue * ue) / (2 * dec)
         cruise = dist - d1 - d3
+        if cruise < -1e-9 * max(1.0, dist) and peak > u0:
+            # an acceleration so small that the speed gain lies below the float resolution of the speed (fuzz
+            # seed 454750: 1e-300): the rounding of peak**2 - u0**2, divided by it, swamps the distance.  The
+            # gain is nil - cruise at the current speed instead of speeding up.
+            peak = u0
+            d1, d3 = 0.0, (u0 * u0 - ue * ue) / (2 * dec)
+            cruise = dist - d3
         if cruise < -1e-9 * max(1.0, dist):
             raise PlanningError(f"trapezoid: target {target_p!r} behind the stop point (p={b.p!r}, v={b.v!r})")
         p, v = b.p, sign * u0

@@ -5,43 +5,33 @@ Every stage is a function ``stage(ctl, t)`` over the controller's axis bank (the
 axes, see :mod:`.bank`) at the servo time ``t``.  Python code per axis runs only where something
 happens to that axis (an event is due, a monitor trips, an input changed), never as a loop over all axes.
 
-The order (:data:`SERVO_STAGES`):
+The order is the table :data:`SERVO_STAGES` at the end of this module, the only place that defines it;
+the stage functions above it are in the same order, and :func:`describe` lists names and what each does
+(``Controller.servo_stages`` gives the names).  In short: read drives, encoders and inputs -> pre-servo
+hooks -> jobs, inputs, re-plans and events of single axes -> interpolate, superimpose, couple the
+setpoints of all axes -> position control and monitoring -> write drives -> post-servo hooks (trace).
 
-==================  =================================================================================
-``read_drives``     drive groups deliver the actual values of this cycle (``act_p``, ``act_v``)
-``read_encoders``   external encoders measure (leading values with actual values)
-``read_inputs``     the machine model (plant) sets the digital inputs, the input filters apply
-``pre_servo``       user hooks: see this cycle's actual values and inputs, last cycle's setpoints
-``accept_jobs``     work handed to the servo cycle by the application cycle (``Controller._defer``)
-``watch_inputs``    axes that watch inputs every cycle (limit switches, homing cams, drive signals)
-``replan``          axes whose dynamics changed plan their motion again with the new values
-``axis_events``     axes with a due event: segment end, milestone, timer (the profile planner)
-``interpolate``     the active profile segment of every axis -> setpoint ``sp_p/sp_v/sp_a/sp_j``
-``superimpose``     the superimposed motion part is added to the setpoint
-``couple``          synchronous operation: following axes take their setpoint from a leading value
-``control``         position control: following error and speed command ``cmd_v`` of closed loops
-``monitor``         following error, positioning and standstill monitoring
-``write_drives``    drive groups take the commands of this cycle
-``post_servo``      user hooks (traces, tags): see this cycle's setpoints and drive commands
-==================  =================================================================================
+Each stage names the controller attributes that say whether it has work (``when``: no encoders, no
+hooks, no superimposed motion, no axes ...); :func:`compile_cycle` turns the table into one function
+with one line per stage, so an idle stage costs one attribute test and no call - as cheap as the
+hand-written pipeline this table replaced.  A new kind of per-cycle work is a new row in the table.
 
-A stage with nothing to do returns after one cheap test (no encoders, no superimposed motion, no
-closed loop): the list costs a function call per stage and nothing else.  Failures are handled where the
-cause is known: a defect while handling one axis stops only that axis (``PositioningAxis._internal_error``,
-16#8FFF); a hook that raises is user code and stops the controller (``Controller._run_hooks``); anything
-else escaping a stage is a kernel defect, which the controller turns into STOP naming the stage.
+Failures are handled where the cause is known: a defect while handling one axis stops only that axis
+(``PositioningAxis._internal_error``, 16#8FFF); a hook that raises is user code and stops the controller
+(``Controller._run_hooks``); anything else escaping a stage is a kernel defect, which the controller
+turns into STOP naming the stage (:func:`failed_stage`).
 """
 from __future__ import annotations
 
 import linecache
-from typing import TYPE_CHECKING, Callable, NamedTuple
+from typing import Any, Callable, NamedTuple
 
 import numpy as np
 
 from . import monitoring
 
-if TYPE_CHECKING:  # pragma: no cover
-    from .runtime import Controller
+#: the controller whose cycle runs (``runtime.Controller``; not imported: the runtime imports this module)
+Controller = Any
 
 #: time tolerance of events [s]: an event due within it is handled in this cycle
 _EPS_T = 1e-9
@@ -49,7 +39,7 @@ _SIXTH = 1.0 / 6.0
 
 
 # --- inputs ----------------------------------------------------------------------------------------------
-def read_drives(ctl: "Controller", t: float) -> None:
+def read_drives(ctl: Controller, t: float) -> None:
     """Drive groups deliver the actual values of this cycle (encoder counts, pulses output)."""
     b = ctl.bank
     dt = ctl.servo_cycle
@@ -57,14 +47,14 @@ def read_drives(ctl: "Controller", t: float) -> None:
         g.read(b, t, dt)
 
 
-def read_encoders(ctl: "Controller", t: float) -> None:
+def read_encoders(ctl: Controller, t: float) -> None:
     """External encoders (measuring systems that are no axis) take their actual values."""
     dt = ctl.servo_cycle
     for enc in ctl._encoders:
         enc.read(t, dt)
 
 
-def read_inputs(ctl: "Controller", t: float) -> None:
+def read_inputs(ctl: Controller, t: float) -> None:
     """The machine model writes the digital inputs of this cycle, then the input filters apply."""
     inputs = ctl.inputs
     inputs.begin_cycle(t)
@@ -73,20 +63,20 @@ def read_inputs(ctl: "Controller", t: float) -> None:
     inputs.update(t)
 
 
-def pre_servo(ctl: "Controller", t: float) -> None:
+def pre_servo(ctl: Controller, t: float) -> None:
     """User hooks before the motion: actual values and inputs of this cycle, setpoints of the last one."""
     ctl._run_hooks(ctl._pre_servo, t)
 
 
 # --- motion: events and re-plans of single axes --------------------------------------------------------
-def accept_jobs(ctl: "Controller", t: float) -> None:
+def accept_jobs(ctl: Controller, t: float) -> None:
     """Work that the application cycle handed to the servo cycle runs at its start, in order."""
     work, ctl._deferred = ctl._deferred, []
     for fn in work:
         fn(t)
 
 
-def watch_inputs(ctl: "Controller", t: float) -> None:
+def watch_inputs(ctl: Controller, t: float) -> None:
     """Axes that evaluate inputs every cycle (hardware limit switches, homing, drive signals)."""
     for axis in ctl._input_axes:
         try:
@@ -95,7 +85,7 @@ def watch_inputs(ctl: "Controller", t: float) -> None:
             axis._internal_error(exc)
 
 
-def replan(ctl: "Controller", t: float) -> None:
+def replan(ctl: Controller, t: float) -> None:
     """Axes whose parameters changed while they move plan again, in axis order (deterministic)."""
     dirty = sorted(ctl._dirty_axes, key=lambda ax: ax.index)
     ctl._dirty_axes.clear()
@@ -106,7 +96,7 @@ def replan(ctl: "Controller", t: float) -> None:
             axis._internal_error(exc)
 
 
-def axis_events(ctl: "Controller", t: float) -> None:
+def axis_events(ctl: Controller, t: float) -> None:
     """Axes with an event due now (segment end, milestone, timer) handle it; the others are not visited."""
     due = ctl.bank.next_event <= t + _EPS_T
     if due.any():
@@ -120,7 +110,7 @@ def axis_events(ctl: "Controller", t: float) -> None:
 
 
 # --- setpoints of all axes at once --------------------------------------------------------------------
-def interpolate(ctl: "Controller", t: float) -> None:
+def interpolate(ctl: Controller, t: float) -> None:
     """Evaluate the active constant-jerk segment of every axis at ``t``: the setpoint of this cycle."""
     b = ctl.bank
     tau = t - b.seg_t
@@ -133,7 +123,7 @@ def interpolate(ctl: "Controller", t: float) -> None:
     ctl._bank_time = t
 
 
-def superimpose(ctl: "Controller", t: float) -> None:
+def superimpose(ctl: Controller, t: float) -> None:
     """Add the superimposed motion part (MC_MoveSuperimposed) to the basic motion of every axis."""
     b = ctl.bank
     tau = t - b.sup_t
@@ -144,13 +134,13 @@ def superimpose(ctl: "Controller", t: float) -> None:
     b.sp_a = b.sp_a + (a + tau * j)
 
 
-def couple(ctl: "Controller", t: float) -> None:
+def couple(ctl: Controller, t: float) -> None:
     """Synchronous operation: following axes take their setpoints from their leading values."""
     ctl.sync.run(t)
 
 
 # --- closed loops -------------------------------------------------------------------------------------
-def control(ctl: "Controller", t: float) -> None:
+def control(ctl: Controller, t: float) -> None:
     """Position control of the closed-loop axes (speed precontrol plus Kv times the following error);
     axes without position control have their setpoint follow the actual position."""
     if "servo" in ctl._groups:
@@ -161,7 +151,7 @@ def control(ctl: "Controller", t: float) -> None:
         b.cmd_v = np.where(b.closed_loop, b.kpc * b.sp_v + b.kv * err, b.sp_v)
 
 
-def monitor(ctl: "Controller", t: float) -> None:
+def monitor(ctl: Controller, t: float) -> None:
     """Following error, positioning and standstill monitoring of the closed-loop axes."""
     if "servo" in ctl._groups:
         if ctl._n_fe:
@@ -172,19 +162,19 @@ def monitor(ctl: "Controller", t: float) -> None:
 
 
 # --- outputs ------------------------------------------------------------------------------------------
-def write_drives(ctl: "Controller", t: float) -> None:
+def write_drives(ctl: Controller, t: float) -> None:
     """Drive groups take the commands of this cycle (speed setpoints, pulse trains)."""
     b = ctl.bank
     for g in ctl._group_list:
         g.write(b, t)
 
 
-def post_servo(ctl: "Controller", t: float) -> None:
+def post_servo(ctl: Controller, t: float) -> None:
     """User hooks after the motion (traces, tags): setpoints and drive commands of this cycle."""
     ctl._run_hooks(ctl._post_servo, t)
 
 
-Stage = Callable[["Controller", float], None]
+Stage = Callable[[Controller, float], None]
 
 
 class ServoStage(NamedTuple):
@@ -219,7 +209,7 @@ SERVO_STAGES: tuple[ServoStage, ...] = (
 STAGE_NAMES: tuple[str, ...] = tuple(stage.name for stage in SERVO_STAGES)
 
 
-def _compile(stages: tuple[ServoStage, ...]) -> tuple[Callable[["Controller", float], None], str]:
+def compile_cycle(stages: tuple[ServoStage, ...]) -> tuple[Callable[[Controller, float], None], str]:
     """One function that runs ``stages`` in order, one source line per stage.
 
     Generated instead of a loop over the list because a loop costs a call per stage even when the
@@ -245,7 +235,7 @@ def _compile(stages: tuple[ServoStage, ...]) -> tuple[Callable[["Controller", fl
 
 
 #: ``run_servo_cycle(ctl, t)``: one servo cycle; RUNNER_SOURCE is its generated source (for reading)
-run_servo_cycle, RUNNER_SOURCE = _compile(SERVO_STAGES)
+run_servo_cycle, RUNNER_SOURCE = compile_cycle(SERVO_STAGES)
 
 
 def failed_stage(exc: BaseException) -> str | None:
@@ -265,4 +255,4 @@ def describe() -> list[tuple[str, str]]:
     return [(s.name, " ".join((s.run.__doc__ or "").split("\n\n")[0].split())) for s in SERVO_STAGES]
 
 
-__all__ = ["SERVO_STAGES", "STAGE_NAMES", "ServoStage", "describe", "failed_stage", "run_servo_cycle"]
+__all__ = ["SERVO_STAGES", "STAGE_NAMES", "ServoStage", "compile_cycle", "describe", "failed_stage", "run_servo_cycle"]

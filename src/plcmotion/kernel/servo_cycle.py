@@ -213,17 +213,18 @@ def compile_cycle(stages: tuple[ServoStage, ...]) -> tuple[Callable[[Controller,
     """One function that runs ``stages`` in order, one source line per stage.
 
     Generated instead of a loop over the list because a loop costs a call per stage even when the
-    stage is idle and measurably slows the cycle (bench/axes.py); the generated code is exactly the
-    hand-written pipeline: ``if ctl.<when> and ...: <stage>(ctl, t)``.  The line of a stage is also how
+    stage is idle and measurably slows the cycle (bench/axes.py); the generated code is what one
+    would write by hand: ``if ctl.<when> and ...: stage_<name>(ctl, t)``.  The line of a stage is also how
     :func:`failed_stage` finds the stage that raised, without any per-stage bookkeeping."""
     lines = ["def run_servo_cycle(ctl, t):"]
     namespace: dict[str, object] = {}
     for stage in stages:
+        fn = f"stage_{stage.name}"          # prefixed: a stage named "t" or "if" cannot break the code
         paths = [part for path in stage.when for part in path.split(".")]
-        if not stage.name.isidentifier() or stage.name in namespace or not all(p.isidentifier() for p in paths):
+        if not fn.isidentifier() or fn in namespace or not all(p.isidentifier() for p in paths):
             raise ValueError(f"servo stage {stage.name!r} (when {stage.when!r}): names must be unique identifiers")
-        namespace[stage.name] = stage.run
-        call = f"{stage.name}(ctl, t)"
+        namespace[fn] = stage.run
+        call = f"{fn}(ctl, t)"
         lines.append(f"    if {' and '.join('ctl.' + p for p in stage.when)}: {call}" if stage.when
                      else f"    {call}")
     source = "\n".join(lines) + "\n"
@@ -255,4 +256,5 @@ def describe() -> list[tuple[str, str]]:
     return [(s.name, " ".join((s.run.__doc__ or "").split("\n\n")[0].split())) for s in SERVO_STAGES]
 
 
-__all__ = ["SERVO_STAGES", "STAGE_NAMES", "ServoStage", "compile_cycle", "describe", "failed_stage", "run_servo_cycle"]
+__all__ = ["SERVO_STAGES", "STAGE_NAMES", "ServoStage", "compile_cycle", "describe", "failed_stage",
+           "run_servo_cycle"]

@@ -9,17 +9,17 @@ Only axes whose monitor trips are handed to Python code.
 """
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import Any
 
 import numpy as np
 
-if TYPE_CHECKING:  # pragma: no cover
-    from .runtime import Controller
+#: the controller (``runtime.Controller``), not imported: the runtime runs these through the servo cycle
+Controller = Any
 
 _EPS_T = 1e-9
 
 
-def following_error(ctl: "Controller", t: float) -> None:
+def following_error(ctl: Controller, t: float) -> None:
     b = ctl.bank
     speed = np.abs(b.sp_v)
     limit = np.minimum(b.fe_max, b.fe_min + b.fe_slope * np.maximum(speed - b.fe_vmin, 0.0))
@@ -29,7 +29,7 @@ def following_error(ctl: "Controller", t: float) -> None:
             ctl._axis_at(i)._on_following_error(t)
 
 
-def positioning(ctl: "Controller", t: float) -> None:
+def positioning(ctl: Controller, t: float) -> None:
     b = ctl.bank
     on = b.pm_on
     inside = on & (np.abs(b.pm_target - b.act_p) <= b.pm_window)
@@ -47,7 +47,7 @@ def positioning(ctl: "Controller", t: float) -> None:
             ctl._axis_at(i)._on_positioning_fault(t, "not_reached")
 
 
-def standstill(ctl: "Controller", t: float) -> None:
+def standstill(ctl: Controller, t: float) -> None:
     b = ctl.bank
     below = np.abs(b.act_v) < b.ss_threshold
     b.ss_since = np.where(below, b.ss_since, t)

@@ -1,8 +1,9 @@
-"""The controller: virtual clock, user programs and the fixed servo-cycle pipeline.
+"""The controller: virtual clock, user programs and the servo cycle.
 
-Each servo cycle (S7-1200 V6 §2.2.7, LinuxCNC-style fixed order):
-read drives and encoders -> pre-servo hooks -> interpolator (due events of each axis, then all setpoints)
--> position control and monitoring -> write drives -> post-servo hooks (trace).
+Each servo cycle (S7-1200 V6 §2.2.7, LinuxCNC-style fixed order) runs the named stages of
+:mod:`.servo_cycle` in order: read drives and encoders -> pre-servo hooks -> events of single axes ->
+interpolation of all setpoints -> coupling -> position control and monitoring -> write drives ->
+post-servo hooks (trace).  ``Controller.servo_stages`` lists them.
 Every application cycle the user programs run first (like OB1), then the servo cycles of that period.
 Time is virtual: ``servo cycles x servo_cycle``; the same program gives the same trace bit for bit.
 """
@@ -16,17 +17,15 @@ import traceback
 import warnings
 from typing import Any, Callable, Mapping
 
-import numpy as np
-
 from ..drives.base import DriveGroup
 from ..drives.plant import Plant
 from ..drives.simulated import new_drive_group
 from . import retain
-from . import monitoring
 from . import family as families
 from . import parameters as P
 from .axis import ConfigurationError, PositioningAxis
 from .bank import AxisBank
+from .servo_cycle import STAGE_NAMES, failed_stage, run_servo_cycle
 from .sync import SyncStage
 from .io import DEFAULT_FILTER, DigitalInputs, DigitalOutputs
 from .watchdog import CycleOverrunWarning, CycleWatchdog, Overrun
@@ -519,92 +518,24 @@ class Controller:
         return self.time
 
     # --- the servo cycle -------------------------------------------------------------------------------
+    @property
+    def servo_stages(self) -> tuple[str, ...]:
+        """The names of the servo-cycle stages in the order they run (see :mod:`.servo_cycle`)."""
+        return STAGE_NAMES
+
     def _servo(self) -> None:
         self._k += 1
         t = self._time_of(self._k)
         if self._servo_defect:
             return
-        try:
-            self._servo_pipeline(t)
+        try:    # no per-stage try: axes and hooks isolate their faults inside the stages
+            run_servo_cycle(self, t)
         except Exception as exc:  # a defect in the kernel: stop in a defined state, keep the reason
             if isinstance(exc, Warning):    # a hook's ProgramErrorWarning turned into an error by a filter
                 raise
             self._servo_defect = True
-            self.stop(f"internal error in the servo cycle at t = {t:.6g} s: {exception_text(exc)}\n"
-                      + _traceback_text(exc))
-
-    def _servo_pipeline(self, t: float) -> None:
-        b = self.bank
-        dt = self.servo_cycle
-        for g in self._group_list:
-            g.read(b, t, dt)
-        if self._encoders:
-            for enc in self._encoders:
-                enc.read(t, dt)
-        self.inputs.begin_cycle(t)
-        if self.plant.items:
-            self.plant.update(t)
-        self.inputs.update(t)
-        self._run_hooks(self._pre_servo, t)
-        if self._deferred:
-            work, self._deferred = self._deferred, []
-            for fn in work:
-                fn(t)
-        for axis in self._input_axes:
-            try:
-                axis._check_inputs(t)
-            except Exception as exc:
-                axis._internal_error(exc)
-        if b.n:
-            if self._dirty_axes:
-                dirty = sorted(self._dirty_axes, key=lambda ax: ax.index)
-                self._dirty_axes.clear()
-                for axis in dirty:
-                    try:
-                        axis._apply_dirty("servo")
-                    except Exception as exc:      # a re-plan with the new values failed: 16#8FFF, stopped
-                        axis._internal_error(exc)
-            due = b.next_event <= t + _EPS_T
-            if due.any():
-                for i in np.flatnonzero(due):
-                    axis = self._by_index[i]
-                    try:
-                        axis._on_event(t)
-                    except Exception as exc:      # isolate a defect to its axis (16#8FFF, axis stopped)
-                        axis._internal_error(exc)
-            # interpolator: evaluate the active segment of every axis
-            tau = t - b.seg_t
-            j = b.seg_j
-            a = b.seg_a
-            b.sp_p = b.seg_p + tau * (b.seg_v + tau * (0.5 * a + tau * (j * (1.0 / 6.0))))
-            b.sp_v = b.seg_v + tau * (a + (0.5 * tau) * j)
-            b.sp_a = a + tau * j
-            b.sp_j = j
-            if self._n_sup:
-                # superimposed motion (S7-1500 MC_MoveSuperimposed) adds to every basic motion
-                tau = t - b.sup_t
-                j = b.sup_j
-                a = b.sup_a
-                b.sp_p = b.sp_p + (b.sup_p + tau * (b.sup_v + tau * (0.5 * a + tau * (j * (1.0 / 6.0)))))
-                b.sp_v = b.sp_v + (b.sup_v + tau * (a + (0.5 * tau) * j))
-                b.sp_a = b.sp_a + (a + tau * j)
-            self._bank_time = t
-            if self.sync.active:
-                self.sync.run(t)
-            if "servo" in self._groups:
-                # position control of the closed-loop axes; others follow their actual value
-                b.sp_p = np.where(b.follow_act, b.act_p, b.sp_p)
-                err = b.sp_p - b.act_p
-                b.fe = err
-                b.cmd_v = np.where(b.closed_loop, b.kpc * b.sp_v + b.kv * err, b.sp_v)
-                if self._n_fe:
-                    monitoring.following_error(self, t)
-                if self._n_pm:
-                    monitoring.positioning(self, t)
-                monitoring.standstill(self, t)
-        for g in self._group_list:
-            g.write(b, t)
-        self._run_hooks(self._post_servo, t)
+            self.stop(f"internal error in the servo cycle, stage {failed_stage(exc)!r}, at t = {t:.6g} s: "
+                      f"{exception_text(exc)}\n" + _traceback_text(exc))
 
     def _run_hooks(self, hooks: list[Callable[[float], None]], t: float) -> None:
         """Hooks are user code: one that raises stops the controller (like a faulty OB), not the kernel."""

@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any, Mapping
 
 from . import faults as F
 from . import parameters as P
+from .axis_config import axis_config
 from .faults import Fault, Reaction
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -30,6 +31,13 @@ _SERVO_CODES = {10, 1, 2, 5, 6, 7, 8}
 
 class ConfigMixin:
     """Runtime configuration of the positioning axis (mixed into PositioningAxis)."""
+
+    def _make_effective(self: "PositioningAxis", values: dict[str, Any]) -> None:
+        """Tag values ``values`` are in effect from now on: the kernel parameters and the typed axis
+        configuration (``axis.config``) follow them together, here and nowhere else."""
+        self.ueff = values
+        self.eff = self.schema.to_kernel(values)
+        self.config = axis_config(self.eff)
 
     def _moment_codes(self: "PositioningAxis", moment: str) -> set[int]:
         if not self.pto:
@@ -58,8 +66,7 @@ class ConfigMixin:
         for path in due:
             self._dirty.discard(path)
         changed = any(candidate[p] != self.ueff[p] for p in due)
-        self.ueff = candidate
-        self.eff = self.schema.to_kernel(candidate)
+        self._make_effective(candidate)
         if changed:
             self._apply_bank_config()
             if moment == "servo":
@@ -83,8 +90,7 @@ class ConfigMixin:
         """Validate all tag values; with ``apply`` make them effective when valid."""
         bad = self._validate(self.cfg)
         if bad is None and apply and self._dirty:
-            self.ueff = dict(self.cfg)
-            self.eff = self.schema.to_kernel(self.ueff)
+            self._make_effective(dict(self.cfg))
             self._dirty.clear()
             self._apply_bank_config()
         return bad

@@ -18,7 +18,8 @@ from .axis_queue import BufferMode, axis_queue
 from .motion import DirectionFault, MotionPlanner, Plan, limits, modulo_target, wrap
 from .profiles import Planner, PlanningError, Profile, velocity_reach
 from .config import ConfigMixin
-from .drive_config import drive_spec
+from .axis_config import AxisConfig
+from ..drives.spec import ActuatorKind
 from .fault_injection import FaultInjectionMixin
 from .homing import HomingMixin
 from .switches import SwitchesMixin
@@ -58,15 +59,16 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
         self.db_number = db_number if db_number is not None else ctl._next_db_number()
         self.cfg: dict[str, Any] = dict(cfg)          # tag values (work memory)
         self.load_cfg: dict[str, Any] = dict(cfg)     # start values (load memory), used by a restart
-        self.ueff: dict[str, Any] = dict(cfg)         # tag values in effect
-        self.eff: dict[str, Any] = self.schema.to_kernel(self.ueff)   # kernel parameters in effect
-        cfg = self.eff
-        self.pto = cfg["Actor.Type"] == 2
-        self.sim = (not self.pto) and cfg["Simulation.Mode"] == 1
+        self.ueff: dict[str, Any]                     # tag values in effect
+        self.eff: dict[str, Any]                      # kernel parameters in effect
+        self.config: AxisConfig                       # the same, typed: what the kernel reads
+        self._make_effective(dict(cfg))
+        spec = self.config.drive
+        self.pto = spec.actuator is ActuatorKind.PULSE
+        self.sim = spec.actuator is ActuatorKind.IDEAL
         self.servo = not self.pto and not self.sim
         self.index = ctl.bank.add()
         t = ctl.time
-        spec = drive_spec(cfg)
         self.drive = ctl._drive_group(spec.actuator.value).add(self.index, spec, ctl.servo_cycle, t)
         self.motion = MotionPlanner(self)
 
@@ -99,7 +101,7 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
 
         b = ctl.bank
         i = self.index
-        x0 = cfg["Plant.InitialPosition"] if self.servo else 0.0
+        x0 = spec.plant.initial_position if self.servo else 0.0
         b.act_p[i] = b.sp_p[i] = x0
         b.servo[i] = self.servo
         b.follow_act[i] = self.servo
@@ -144,53 +146,56 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
     @property
     def activated(self) -> bool:
         """StatusBits.Activated: the axis holds its pulse generator (always for an own one, §12.1)."""
-        no = self.eff["Actor.Interface.PTO"] if self.pto else 0
+        no = self.config.pulse_output.generator if self.pto else 0
         return not no or self.ctl._pto_holder.get(no) is self
 
     def pto_used_by_other(self) -> bool:
         """ErrorBits.HWUsed: another enabled axis holds the pulse generator of this axis (§12.1)."""
-        no = self.eff["Actor.Interface.PTO"] if self.pto else 0
+        no = self.config.pulse_output.generator if self.pto else 0
         holder = self.ctl._pto_holder.get(no) if no else None
         return holder is not None and holder is not self and holder.state != DISABLED
 
     def sw_limits_effective(self) -> bool:
         """SW limit switches act only on a homed, non-modulo axis (§2.3; modulo: see docs/decisions)."""
-        return self.eff["PositionLimits_SW.Active"] and self.homed and not self.eff["Modulo.Enable"]
+        c = self.config
+        return c.software_limits.enabled and self.homed and not c.modulo.enabled
 
     def position_resolution(self) -> float:
         """Smallest position step of the axis: one pulse (PTO), one encoder increment (servo)."""
+        c = self.config
         if self.pto:
-            return P.pulse_length(self.eff)
+            return c.drive.pulse_length
         if self.servo:
-            return drive_spec(self.eff).encoder.increment
-        return 1e-9 * max(1.0, abs(self.eff["PositionLimits_SW.MaxPosition"]),
-                          abs(self.eff["PositionLimits_SW.MinPosition"]))
+            return c.drive.encoder.increment
+        return 1e-9 * max(1.0, abs(c.software_limits.maximum), abs(c.software_limits.minimum))
 
     def commanded_velocity(self, velocity: float) -> float:
         """A commanded velocity with the velocity override applied (S7-1500 ``Override.Velocity``)."""
-        override = self.eff.get("Override.Velocity")
+        override = self.config.defaults.velocity_override
         return velocity if override is None else velocity * override / 100.0
 
     def _wrap(self, value: float) -> float:
-        if self.eff["Modulo.Enable"]:
-            return wrap(value, self.eff["Modulo.StartValue"], self.eff["Modulo.Length"])
+        m = self.config.modulo
+        if m.enabled:
+            return wrap(value, m.start, m.length)
         return value
 
     def _apply_bank_config(self) -> None:
-        b, i, e = self.ctl.bank, self.index, self.eff
-        b.kv[i] = e["PositionControl.Kv"]
-        b.kpc[i] = e["PositionControl.Kpc"] / 100.0
-        fmin, fmax, vmin = e["FollowingError.MinValue"], e["FollowingError.MaxValue"], e["FollowingError.MinVelocity"]
-        vmax = e["DynamicLimits.MaxVelocity"]
+        b, i, c = self.ctl.bank, self.index, self.config
+        b.kv[i] = c.position_control.kv
+        b.kpc[i] = c.position_control.precontrol / 100.0
+        fe = c.following_error
+        fmin, fmax, vmin = fe.min_value, fe.max_value, fe.min_velocity
+        vmax = c.limits.max_velocity
         b.fe_min[i] = fmin
         b.fe_max[i] = max(fmax, fmin)
         b.fe_vmin[i] = vmin
         b.fe_slope[i] = (fmax - fmin) / (vmax - vmin) if vmax > vmin else 0.0
-        b.pm_window[i] = e["PositioningMonitoring.Window"]
-        b.pm_dwell[i] = e["PositioningMonitoring.MinDwellTime"]
-        b.ss_threshold[i] = e["StandstillSignal.VelocityThreshold"]
-        b.ss_dwell[i] = e["StandstillSignal.MinDwellTime"]
-        self.drive.reconfigure(drive_spec(e))
+        b.pm_window[i] = c.positioning.window
+        b.pm_dwell[i] = c.positioning.min_dwell_time
+        b.ss_threshold[i] = c.standstill.velocity_threshold
+        b.ss_dwell[i] = c.standstill.min_dwell_time
+        self.drive.reconfigure(c.drive)
         self._set_loop_flags()
 
     def _set_loop_flags(self) -> None:
@@ -199,7 +204,7 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
         closed = on and self.position_controlled
         b.closed_loop[i] = closed
         b.follow_act[i] = self.servo and not closed
-        fe = closed and self.eff["FollowingError.EnableMonitoring"]
+        fe = closed and self.config.following_error.enabled
         if fe != b.fe_on[i]:
             b.fe_on[i] = fe
             self.ctl._n_fe += 1 if fe else -1
@@ -325,7 +330,7 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
     def _start_positioning_monitor(self, job: Job, t: float) -> None:
         b, i = self.ctl.bank, self.index
         b.pm_target[i] = self.profile.final.p
-        b.pm_deadline[i] = t + self.eff["PositioningMonitoring.ToleranceTime"]
+        b.pm_deadline[i] = t + self.config.positioning.tolerance_time
         b.pm_in_since[i] = math.nan
         if not b.pm_on[i]:
             b.pm_on[i] = True
@@ -368,7 +373,7 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
             return F.reject(F.ALREADY_ENABLED) if enable else None
         if enable and self.ctl.mode != "RUN":
             return F.reject(F.REJECTED, "starting_up")
-        no = self.eff["Actor.Interface.PTO"] if self.pto else 0
+        no = self.config.pulse_output.generator if self.pto else 0
         if no:
             # several axes on one pulse generator: the first MC_Power call of an axis takes the PTO over
             # once the axis holding it is disabled (§12.1)
@@ -444,7 +449,7 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
         if stop_mode == 1:
             if self.pto:
                 # pulse output stopped within 30 ms (f >= 100 Hz) or up to 1.5 s at 2 Hz (§11.1.1)
-                f = abs(v) / P.pulse_length(self.eff)
+                f = abs(v) / self.config.drive.pulse_length
                 duration = 0.03 if f >= 100.0 else (3.0 / f if f > 0 else 0.0)
                 plan = self.motion.ramp_out(t, p, v, duration)
                 self._start_profile(plan.profile, plan)
@@ -559,8 +564,7 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
             self._remove_enable(t, by_power=True)
         self.power_owner = None
         self.cfg = dict(self.load_cfg)
-        self.ueff = dict(self.load_cfg)
-        self.eff = self.schema.to_kernel(self.ueff)
+        self._make_effective(dict(self.load_cfg))
         self._dirty.clear()
         self.alarms.clear()
         self.busy_commands.clear()
@@ -660,7 +664,7 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
         self._plan_job(job, t)
 
     def _absolute_target(self, job: Job, p: float, v: float, a: float) -> float:
-        if self.eff["Modulo.Enable"]:
+        if self.config.modulo.enabled:
             lim = limits(self, job.velocity)
             return modulo_target(self, job.position, job.direction, math.copysign(1.0, job.extra.get("sign", 1.0)),
                                  p, v, a, lim, self.motion.planner)
@@ -701,7 +705,7 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
         """When a new command takes effect: at once, or on a PTO at the next segment boundary."""
         if not self.pto or PULSE_SLICE_TIME not in self.ctl.rules:
             return t
-        period = self.eff["Actor.PTOSliceTime"] / 1000.0
+        period = self.config.pulse_output.slice_time
         if period <= self.ctl.servo_cycle * (1 + 1e-9):
             return t
         k = math.ceil(t / period - 1e-9)

@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any, Callable
 
+from ..drives.spec import EncoderInterface, SetpointInterface
 from . import faults as F
 from .faults import Reaction
 
@@ -98,17 +99,18 @@ class FaultInjectionMixin:
             return [(kind, detail)]
         if detail:
             raise ValueError(f"fault kind {kind!r} takes no detail (got {detail!r})")
-        on_bus = self.eff["Sensor[1].Interface.Type"] in (0, 2)    # PROFIdrive encoder / encoder on the drive
+        encoder = self.config.drive.encoder.interface
+        on_bus = encoder in (EncoderInterface.PROFIDRIVE, EncoderInterface.DRIVE_TELEGRAM)
         if kind == "encoder_loss":
             if not self.servo:
                 raise ValueError(f"axis {self.name}: encoder_loss needs an axis with an encoder "
                                  "(PROFIdrive or analog drive, Simulation.Mode = 0)")
             return [("encoder", "station" if on_bus else "hardware")]
-        if not self.servo or self.eff["Actor.Type"] != 1:
+        if not self.servo or self.config.drive.interface is not SetpointInterface.PROFIDRIVE:
             raise ValueError(f"axis {self.name}: communication_loss needs a PROFIdrive axis (Actor.Type = 1, "
                              "Simulation.Mode = 0); an analog drive or a pulse output has no bus")
         lost = [("drive", "station")]
-        if self.eff["Sensor[1].Interface.Type"] == 2:
+        if encoder is EncoderInterface.DRIVE_TELEGRAM:
             lost.append(("encoder", "station"))      # the encoder travels in the drive's telegram
         return lost
 

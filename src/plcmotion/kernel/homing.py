@@ -18,6 +18,7 @@ import math
 from typing import TYPE_CHECKING
 
 from . import faults as F
+from ..drives.spec import EncoderInterface
 from .family import DIRECT_HOMING_WHEN_DISABLED
 from .faults import Reaction
 from .jobs import Job, JobKind, JobState
@@ -26,6 +27,8 @@ from .profiles import Limits
 if TYPE_CHECKING:  # pragma: no cover
     from .axis import PositioningAxis
 
+#: encoders whose zero marks travel on the bus (an encoder of its own on the bus, the drive's encoder)
+_BUS_ENCODERS = (EncoderInterface.PROFIDRIVE, EncoderInterface.DRIVE_TELEGRAM)
 _MAX_REPOSITIONS = 4            # attempts to get onto the switch before giving up (16#8009)
 
 
@@ -38,17 +41,19 @@ class HomingMixin:
 
     # --- configuration --------------------------------------------------------------------------------
     def _homing_inputs(self: "PositioningAxis") -> dict[str, str]:
-        return {"active": self.eff["Sensor[1].ActiveHoming.DigitalInputAddress"],
-                "passive": self.eff["Sensor[1].PassiveHoming.DigitalInputAddress"]}
+        h = self.config.homing
+        return {"active": h.active.input, "passive": h.passive.input}
 
     def homing_configured(self: "PositioningAxis", mode: int) -> bool:
         """Is the homing method for MC_Home ``mode`` (2 passive, 3 active) configured (§12.8 16#8404/16#0015)?"""
         if self.sim:
             return True                               # simulation homes at once (§5.4.3.1)
-        kind = "Active" if mode == 3 else "Passive"
-        method = self.eff[f"Sensor[1].{kind}Homing.Mode"]
-        has_input = bool(self.eff[f"Sensor[1].{kind}Homing.DigitalInputAddress"])
-        zero_marks = self.servo and self.eff["Sensor[1].Interface.Type"] in (0, 2)
+        c = self.config
+        homing = c.homing.active if mode == 3 else c.homing.passive
+        method = homing.mode
+        has_input = bool(homing.input)
+        # zero marks come with an encoder on the bus (its own telegram or the drive's)
+        zero_marks = self.servo and c.drive.encoder.interface in _BUS_ENCODERS
         if method == 2:
             return has_input
         if method == 0:
@@ -56,7 +61,7 @@ class HomingMixin:
         return zero_marks and has_input
 
     def absolute_encoder(self: "PositioningAxis") -> bool:
-        return (not self.pto) and self.eff["Sensor[1].Type"] in (1, 2)
+        return (not self.pto) and self.config.drive.encoder.absolute
 
     def _absolute_raw(self: "PositioningAxis") -> float:
         """Position the absolute encoder reports without adjustment: the machine position in whole increments."""
@@ -65,10 +70,11 @@ class HomingMixin:
 
     def _cam(self: "PositioningAxis", kind: str) -> bool:
         """Homing switch actuated (filtered input compared with the configured level)."""
-        address = self.eff[f"Sensor[1].{kind}Homing.DigitalInputAddress"]
+        homing = self.config.homing.active if kind == "Active" else self.config.homing.passive
+        address = homing.input
         if not address:
             return False
-        return self.ctl.inputs[address] == self.eff[f"Sensor[1].{kind}Homing.SwitchLevel"]
+        return self.ctl.inputs[address] == homing.active_high
 
     # --- direct homing and absolute encoder adjustment ---------------------------------------------------
     def home_direct(self: "PositioningAxis", job: Job) -> None:
@@ -180,12 +186,14 @@ class HomingMixin:
     def _homing_velocity_fault(self: "PositioningAxis") -> F.Fault | None:
         """Approach/referencing velocity: 0 is an operating error (16#8011/16#8012), outside the
         start/stop..maximum velocity a configuration error (16#8610/16#8611) (§5.4.4.5, §12.8)."""
-        vmax, vmin = self.eff["DynamicLimits.MaxVelocity"], self.eff["DynamicLimits.MinVelocity"]
-        for path, zero_kind in (("Homing.ApproachVelocity", F.HOMING_APPROACH_ZERO),
-                                ("Homing.ReferencingVelocity", F.HOMING_REFERENCING_ZERO)):
-            v = self.eff[path]
-            if self.eff["Sensor[1].ActiveHoming.Mode"] == 0 and path == "Homing.ApproachVelocity":
+        c = self.config
+        vmax, vmin = c.limits.max_velocity, c.limits.start_stop_velocity
+        for field, v, zero_kind in (("homing.approach_velocity", c.homing.approach_velocity, F.HOMING_APPROACH_ZERO),
+                                    ("homing.referencing_velocity", c.homing.referencing_velocity,
+                                     F.HOMING_REFERENCING_ZERO)):
+            if c.homing.active.mode == 0 and field == "homing.approach_velocity":
                 continue                                     # the zero mark search uses only the homing velocity
+            path = c.tag_name(field)                         # a configuration fault names the family's tag
             if v <= 0.0:
                 return F.alarm(zero_kind, "", Reaction.REMOVE_ENABLE)
             if v > vmax * (1 + 1e-12):
@@ -203,21 +211,21 @@ class HomingMixin:
             # submit); a simulated axis has no switch to search: brake to standstill, then home there
             self._homing_phase(job, "simulated", 0.0, t)
             return
-        e = self.eff
-        d = 1.0 if e["Homing.ApproachDirection"] else -1.0
-        upper = e["Sensor[1].ActiveHoming.SideInput"]
-        method = e["Sensor[1].ActiveHoming.Mode"]
+        h = self.config.homing
+        d = 1.0 if h.approach_positive else -1.0
+        upper = h.active.upper_side
+        method = h.active.mode
         job.extra.update(d=d, method=method, repositions=0, reversed=False,
                          edge="exit" if upper == (d > 0) else "entry")
         if method == 0:                                     # zero mark only
-            self._homing_phase(job, "zero_mark", d * e["Homing.ReferencingVelocity"], t)
+            self._homing_phase(job, "zero_mark", d * h.referencing_velocity, t)
             self.drive.arm_zero_mark(d)
             return
         if self._cam("Active"):
             self._homing_phase(job, "brake", 0.0, t)        # on the switch already: stop there first
             job.extra["last_dir"] = d
         else:
-            self._homing_phase(job, "search", d * e["Homing.ApproachVelocity"], t)
+            self._homing_phase(job, "search", d * h.approach_velocity, t)
             job.extra["last_dir"] = d
 
     def _homing_phase(self: "PositioningAxis", job: Job, phase: str, velocity: float, t: float) -> None:
@@ -245,13 +253,13 @@ class HomingMixin:
             job.reference_position = self.reference_mark
             self._finish_job(job, JobState.DONE, t)
             return
-        e = self.eff
+        h = self.config.homing
         d = job.extra["d"]
-        v_ref = e["Homing.ReferencingVelocity"]
+        v_ref = h.referencing_velocity
         if phase in ("search", "zero_mark", "final", "leave", "return", "through"):
             return                                          # constant velocity reached: keep going
         if phase == "reverse":
-            self._homing_phase(job, "search", -job.extra["search_dir"] * e["Homing.ApproachVelocity"], t)
+            self._homing_phase(job, "search", -job.extra["search_dir"] * h.approach_velocity, t)
             job.extra["search_dir"] = -job.extra["search_dir"]
             return
         if phase == "brake":
@@ -324,7 +332,7 @@ class HomingMixin:
         phase = x.get("phase")
         if phase in ("search", "return") and rising:
             if x["last_dir"] == d:
-                self._homing_phase(job, "through", d * self.eff["Homing.ReferencingVelocity"], t)
+                self._homing_phase(job, "through", d * self.config.homing.referencing_velocity, t)
             else:
                 x["phase"] = "cross_back"                   # found from the wrong side: pass it first
         elif phase == "cross_back" and falling:
@@ -335,7 +343,7 @@ class HomingMixin:
 
     def _homing_proximity_next(self: "PositioningAxis", job: Job, t: float) -> None:
         d = job.extra["d"]
-        v_ref = self.eff["Homing.ReferencingVelocity"]
+        v_ref = self.config.homing.referencing_velocity
         if self._cam("Active"):
             self._homing_phase(job, "through", d * v_ref, t)
         else:
@@ -348,7 +356,7 @@ class HomingMixin:
             return False
         x = job.extra
         toward = (side == "max") == (x.get("last_dir", x["d"]) > 0)
-        if not toward or not self.eff["Homing.AutoReversal"] or x.get("phase") not in ("search", "return"):
+        if not toward or not self.config.homing.auto_reversal or x.get("phase") not in ("search", "return"):
             return False
         if x.get("reversed"):
             # the switch was not found between the limit switches
@@ -363,8 +371,8 @@ class HomingMixin:
         return float(self.ctl.bank.act_p[self.index])
 
     def _homing_event(self: "PositioningAxis", job: Job, latched: float, t: float) -> None:
-        e = self.eff
-        offset = e["Sensor[1].ActiveHoming.HomePositionOffset"]
+        h = self.config.homing
+        offset = h.active.home_offset
         target = self._wrap(job.position)
         self.drive.disarm_zero_mark()
         self._set_home(latched, target - offset)
@@ -372,7 +380,7 @@ class HomingMixin:
         p, v, a = self._state_now()
         if offset != 0.0:
             from .motion import limits
-            lim = limits(self, e["Homing.ReferencingVelocity"])
+            lim = limits(self, h.referencing_velocity)
             job.extra["phase"] = "offset"
             job.target = target
             self._start_profile(self.motion.planner.position(t, p, v, a, target, lim))
@@ -383,10 +391,10 @@ class HomingMixin:
 
     # --- passive homing ------------------------------------------------------------------------------------
     def _arm_passive(self: "PositioningAxis", job: Job) -> None:
-        e = self.eff
-        d = 1.0 if e["Homing.ApproachDirection"] else -1.0
-        upper = e["Sensor[1].PassiveHoming.SideInput"]
-        method = e["Sensor[1].PassiveHoming.Mode"]
+        h = self.config.homing
+        d = 1.0 if h.approach_positive else -1.0
+        upper = h.passive.upper_side
+        method = h.passive.mode
         job.extra.update(d=d, method=method, edge="exit" if upper == (d > 0) else "entry",
                          cam=self._cam("Passive"), left=False)
         self.passive_home = job
@@ -419,7 +427,7 @@ class HomingMixin:
     def _moving_direction(self: "PositioningAxis") -> float:
         b, i = self.ctl.bank, self.index
         v = float(b.act_v[i]) if self.servo else float(b.sp_v[i])
-        tol = max(self.eff["StandstillSignal.VelocityThreshold"] if self.servo else 0.0, 1e-9)
+        tol = max(self.config.standstill.velocity_threshold if self.servo else 0.0, 1e-9)
         return 1.0 if v > tol else -1.0 if v < -tol else 0.0
 
     def _passive_event(self: "PositioningAxis", job: Job, latched: float, t: float) -> None:

@@ -39,13 +39,8 @@ class DirectionFault(Exception):
 
 
 def jerk_limit(axis: "PositioningAxis") -> float:
-    """Jerk used for planning, INF when the jerk limit is disabled (S7-1200 V6 §5.4.4.4)."""
-    jerk = axis.eff["DynamicDefaults.Jerk"]
-    if axis.pto:
-        from .parameters import PTO_JERK_ENABLE, pulse_length
-        return jerk if jerk >= PTO_JERK_ENABLE * pulse_length(axis.eff) else INF
-    from .parameters import SERVO_JERK_ENABLE
-    return jerk if jerk > SERVO_JERK_ENABLE else INF
+    """Jerk used for planning, INF when the jerk limit is disabled (the configuration says which)."""
+    return axis.config.defaults.jerk
 
 
 def limits(axis: "PositioningAxis", velocity: float | None = None, *, emergency: bool = False,
@@ -54,13 +49,15 @@ def limits(axis: "PositioningAxis", velocity: float | None = None, *, emergency:
 
     ``velocity``: the commanded speed (None: the maximum velocity).  ``job``: a job with dynamics of its
     own (S7-1500 instructions give Acceleration, Deceleration and Jerk per job); without them the axis's
-    dynamic defaults apply.  Values above the S7-1500 dynamic limits (``DynamicLimits.Velocity``,
-    ``MaxAcceleration``, ``MaxDeceleration``, ``MaxJerk``) are limited and named in ``Limits.limited``.
+    dynamic defaults apply.  Values above the axis's own dynamic limits (``DynamicLimits.velocity``,
+    ``max_acceleration``, ``max_deceleration``, ``max_jerk``, where it has them: the S7-1500) are limited
+    and named in ``Limits.limited``.
     """
-    e = axis.eff
+    c = axis.config
+    dl, dd = c.limits, c.defaults
     limited: list[str] = []
-    vmax = e["DynamicLimits.MaxVelocity"]
-    vcur = e.get("DynamicLimits.Velocity")
+    vmax = dl.max_velocity
+    vcur = dl.velocity
     if vcur is not None:
         vmax = min(vmax, vcur)
     if velocity is None:
@@ -71,25 +68,25 @@ def limits(axis: "PositioningAxis", velocity: float | None = None, *, emergency:
             v = vmax
             if vcur is not None:
                 limited.append("velocity")
-    acc = e["DynamicDefaults.Acceleration"] if job is None or job.acceleration is None else job.acceleration
+    acc = dd.acceleration if job is None or job.acceleration is None else job.acceleration
     if emergency:
-        dec = e["DynamicDefaults.EmergencyDeceleration"]
+        dec = dd.emergency_deceleration
     else:
-        dec = e["DynamicDefaults.Deceleration"] if job is None or job.deceleration is None else job.deceleration
-    j = jerk_limit(axis) if job is None or job.jerk is None else job.jerk
-    amax_lim, dmax_lim = e.get("DynamicLimits.MaxAcceleration"), e.get("DynamicLimits.MaxDeceleration")
+        dec = dd.deceleration if job is None or job.deceleration is None else job.deceleration
+    j = dd.jerk if job is None or job.jerk is None else job.jerk
+    amax_lim, dmax_lim = dl.max_acceleration, dl.max_deceleration
     if amax_lim is not None and acc > amax_lim * (1 + 1e-12):
         acc = amax_lim
         limited.append("acceleration")
     if dmax_lim is not None and not emergency and dec > dmax_lim * (1 + 1e-12):
         dec = dmax_lim
         limited.append("deceleration")
-    jmax_lim = e.get("DynamicLimits.MaxJerk")
+    jmax_lim = dl.max_jerk
     if jmax_lim and j != INF and j > jmax_lim * (1 + 1e-12):
         j = jmax_lim
         limited.append("jerk")
     return Limits(velocity=v, acceleration=acc, deceleration=dec, jerk=j if jerk else INF,
-                  start_stop=e["DynamicLimits.MinVelocity"] if axis.pto else 0.0, limited=tuple(limited),
+                  start_stop=dl.start_stop_velocity if axis.pto else 0.0, limited=tuple(limited),
                   max_velocity=vmax)
 
 
@@ -99,11 +96,11 @@ def _strict(lim: Limits, on: bool, reach: tuple[float, float] | None = None) -> 
 
 def max_dynamics(axis: "PositioningAxis") -> Limits:
     """Stop with the maximum dynamic values (S7-1500: MaxDeceleration and MaxJerk)."""
-    e = axis.eff
-    dec = e.get("DynamicLimits.MaxDeceleration", e["DynamicDefaults.Deceleration"])
-    acc = e.get("DynamicLimits.MaxAcceleration", e["DynamicDefaults.Acceleration"])
-    j = e.get("DynamicLimits.MaxJerk", 0.0) or INF
-    return Limits(velocity=e["DynamicLimits.MaxVelocity"], acceleration=acc, deceleration=dec, jerk=j)
+    dl, dd = axis.config.limits, axis.config.defaults
+    dec = dd.deceleration if dl.max_deceleration is None else dl.max_deceleration
+    acc = dd.acceleration if dl.max_acceleration is None else dl.max_acceleration
+    j = dl.max_jerk or INF
+    return Limits(velocity=dl.max_velocity, acceleration=acc, deceleration=dec, jerk=j)
 
 
 def wrap(value: float, start: float, length: float) -> float:
@@ -124,7 +121,7 @@ def modulo_target(axis: "PositioningAxis", position: float, direction: int, velo
     already moves in the requested direction the target is never placed behind its stop point, so that
     it is approached without reversing.
     """
-    start, length = axis.eff["Modulo.StartValue"], axis.eff["Modulo.Length"]
+    start, length = axis.config.modulo.start, axis.config.modulo.length
     goal = wrap(position, start, length)
     here = wrap(p, start, length)
     ahead = math.fmod(goal - here, length)
@@ -162,9 +159,9 @@ class MotionPlanner:
         self.planner = Planner()
         self.last_limits: Limits | None = None     # dynamics of the last job plan (limited values)
 
-    # --- direction permitted by Actor.DirectionMode (PTO, §5.4.4.1) -------------------------------------
+    # --- direction permitted to a stepper (PulseOutput.direction_mode, S7-1200 V6 §5.4.4.1) -------------
     def _permitted(self, sign: float) -> bool:
-        mode = self.axis.eff["Actor.DirectionMode"] if self.axis.pto else 0
+        mode = self.axis.config.pulse_output.direction_mode if self.axis.pto else 0
         return mode == 0 or (mode == 1 and sign > 0) or (mode == 2 and sign < 0)
 
     def _check_direction(self, profile: Profile, p: float) -> None:
@@ -227,8 +224,8 @@ class MotionPlanner:
         """Internal stop (error reaction, disabling)."""
         ax = self.axis
         if emergency and not jerk:
-            dec = ax.eff["DynamicDefaults.EmergencyDeceleration"]
-            vss = ax.eff["DynamicLimits.MinVelocity"] if ax.pto else 0.0
+            dec = ax.config.defaults.emergency_deceleration
+            vss = ax.config.limits.start_stop_velocity if ax.pto else 0.0
             profile = _ramp_stop(t, p, v, dec, vss)
             lim = limits(ax, None, emergency=True, jerk=False)
         else:
@@ -247,7 +244,7 @@ class MotionPlanner:
         try:
             return self.planner.stop(t, p, v, a, lim)
         except PlanningError:
-            return _ramp_stop(t, p, v, self.axis.eff["DynamicDefaults.EmergencyDeceleration"], lim.start_stop)
+            return _ramp_stop(t, p, v, self.axis.config.defaults.emergency_deceleration, lim.start_stop)
 
     def ramp_out(self, t: float, p: float, v: float, duration: float) -> Plan:
         """Linear velocity ramp to zero in ``duration`` (PTO immediate stop, §11.1.1)."""
@@ -263,8 +260,8 @@ class MotionPlanner:
         ax = self.axis
         if not ax.sw_limits_effective():
             return plan
-        lo_lim = ax.eff["PositionLimits_SW.MinPosition"]
-        hi_lim = ax.eff["PositionLimits_SW.MaxPosition"]
+        lo_lim = ax.config.software_limits.minimum
+        hi_lim = ax.config.software_limits.maximum
         profile = plan.profile
         # a stop point within half a position increment of the limit counts as at the limit: plans made
         # from different states of the same braking differ in the last digits
@@ -290,7 +287,7 @@ class MotionPlanner:
         pl = self.planner
         # already at or beyond the limit and the motion heads further
         if (p - limit) * sign > _TOL:
-            return Plan(_ramp_stop(t, p, v if v * sign > 0 else 0.0, ax.eff["DynamicDefaults.EmergencyDeceleration"],
+            return Plan(_ramp_stop(t, p, v if v * sign > 0 else 0.0, ax.config.defaults.emergency_deceleration,
                                    lim.start_stop), side, "exceeded", cross_time=t)
         moving_out = v * sign > 1e-12
         if moving_out:
@@ -298,7 +295,7 @@ class MotionPlanner:
         else:
             stop = p
         if (stop - limit) * sign <= _TOL:
-            speed = max(min(cruise, ax.eff["DynamicLimits.MaxVelocity"]), lim.start_stop, 1e-12)
+            speed = max(min(cruise, ax.config.limits.max_velocity), lim.start_stop, 1e-12)
             lim2 = limits(ax, speed)
             try:
                 profile = pl.position(t, p, v, a, limit, lim2)
@@ -307,7 +304,7 @@ class MotionPlanner:
             reach = first_time_at_velocity(profile, sign * speed) if plan.reach_time is not None else None
             return Plan(profile, side, "reached", reach_time=reach)
         # the configured deceleration is not enough any more (§12.4): emergency deceleration without jerk
-        emerg = ax.eff["DynamicDefaults.EmergencyDeceleration"]
+        emerg = ax.config.defaults.emergency_deceleration
         need = v * v / (2 * emerg)
         if need <= abs(limit - p) + _TOL:
             return Plan(Planner.ramp_stop_at(t, p, v, emerg, limit), side, "reached_emergency")

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from ..drives.spec import EncoderKind
 from . import faults as F
 from .faults import Reaction
 from .jobs import JobKind
@@ -32,18 +33,17 @@ class SwitchesMixin:
     """Mixed into PositioningAxis."""
 
     def _setup_io(self: "PositioningAxis") -> None:
-        c = self.eff
+        c = self.config
         self.hw_approached = {"min": False, "max": False}
-        self._hw_input = {"min": c["PositionLimits_HW.MinSwitchAddress"],
-                          "max": c["PositionLimits_HW.MaxSwitchAddress"]}
-        self._ready_input = c["Actor.Interface.DriveReadyInput"]
-        self._enable_output = c["Actor.Interface.EnableDriveOutput"]
+        self._hw_input = {"min": c.hardware_limits.min_input, "max": c.hardware_limits.max_input}
+        self._ready_input = c.signals.ready_input
+        self._enable_output = c.signals.enable_output
         if self._enable_output:
             self.ctl.outputs[self._enable_output] = False
         # in simulation (Simulation.Mode = 1) switches and drive feedback have no effect (§5.4.3.1)
         uses_inputs = any(self._hw_input.values()) or self._ready_input or any(self._homing_inputs().values())
         # actual value range checks (§12.8 16#800B): absolute encoders and modulo axes
-        self._range_check = self.servo and (self.eff["Sensor[1].Type"] == 1 or self.eff["Modulo.Enable"])
+        self._range_check = self.servo and (c.drive.encoder.kind is EncoderKind.ABSOLUTE or c.modulo.enabled)
         self._last_mech = self.drive.mechanical_position()
         if (uses_inputs or self._range_check) and not self.sim and self not in self.ctl._input_axes:
             self.ctl._input_axes.append(self)
@@ -53,7 +53,8 @@ class SwitchesMixin:
         address = self._hw_input[side]
         if not address or self.sim:
             return False
-        level = self.eff["PositionLimits_HW.MinSwitchLevel" if side == "min" else "PositionLimits_HW.MaxSwitchLevel"]
+        hw = self.config.hardware_limits
+        level = hw.min_active_high if side == "min" else hw.max_active_high
         return self.ctl.inputs[address] == level
 
     def drive_ready_signal(self: "PositioningAxis") -> bool:
@@ -70,7 +71,7 @@ class SwitchesMixin:
     def _check_inputs(self: "PositioningAxis", t: float) -> None:
         if self._ready_input and self.state in ("enabled", "disabling") and not self.drive_ready_signal():
             self.raise_alarm(F.alarm(F.DRIVE_NOT_READY, "", Reaction.REMOVE_ENABLE))
-        active = self.eff["PositionLimits_HW.Active"]
+        active = self.config.hardware_limits.enabled
         before = dict(self.hw_approached)
         for side in _SIDES:
             self.hw_approached[side] = active and self._switch_actuated(side)
@@ -91,11 +92,13 @@ class SwitchesMixin:
         self._last_mech = mech
         if self.alarms and any(a.kind == F.POSITION_RANGE for a in self.alarms):
             return
-        if self.eff["Modulo.Enable"] and jump > self.eff["Modulo.Length"]:
+        c = self.config
+        if c.modulo.enabled and jump > c.modulo.length:
             self.raise_alarm(F.alarm(F.POSITION_RANGE, "modulo_jump", Reaction.REMOVE_ENABLE))
             return
-        if self.eff["Sensor[1].Type"] == 1:
-            span = self.eff["Sensor[1].Parameter.DeterminableRevolutions"] * self._encoder_revolution()
+        encoder = c.drive.encoder
+        if encoder.kind is EncoderKind.ABSOLUTE:
+            span = encoder.determinable_revolutions * self._encoder_revolution()
             raw = self.drive.mechanical_position()
             if raw >= span:
                 self.raise_alarm(F.alarm(F.POSITION_RANGE, "positive", Reaction.REMOVE_ENABLE))
@@ -104,10 +107,10 @@ class SwitchesMixin:
 
     def _encoder_revolution(self: "PositioningAxis") -> float:
         """Load distance of one encoder revolution (rotary) or the whole range of a linear encoder."""
-        e = self.eff
-        if e["Sensor[1].System"] == 0:
+        encoder = self.config.drive.encoder
+        if not encoder.rotary:
             return float("inf")
-        return e["Mechanics.LeadScrew"] if e["Sensor[1].MountingMode"] == 0 else e["Sensor[1].Parameter.DistancePerRevolution"]
+        return encoder.distance_per_revolution
 
     def _on_hw_limit(self: "PositioningAxis", side: str, t: float) -> None:
         if self.state not in ("enabled", "disabling"):

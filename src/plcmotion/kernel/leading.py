@@ -72,7 +72,7 @@ class Extrapolator:
 
     def step(self, t: float, dt: float) -> tuple[float, float, float]:
         src = self.source
-        e = src.eff
+        x = src.config.extrapolation
         if not src.actual_values_valid():
             return self._without_actual_values(dt)
         p, v = src.actual_values()
@@ -84,13 +84,13 @@ class Extrapolator:
             self.direction = 0
             self._prev = None
             self.ready = True
-        tp1, tp2 = e["Extrapolation.PositionFilter.T1"], e["Extrapolation.PositionFilter.T2"]
-        tv1, tv2 = e["Extrapolation.VelocityFilter.T1"], e["Extrapolation.VelocityFilter.T2"]
+        tp1, tp2 = x.position_filter_t1, x.position_filter_t2
+        tv1, tv2 = x.velocity_filter_t1, x.velocity_filter_t2
         self.pf1 = _pt1(self.pf1, p, dt, tp1)
         self.pf2 = _pt1(self.pf2, self.pf1, dt, tp2)
         self.vf1 = _pt1(self.vf1, v, dt, tv1)
         self.vf2 = _pt1(self.vf2, self.vf1, dt, tv2)
-        half = e["Extrapolation.VelocityTolerance.Range"] / 2.0
+        half = x.velocity_tolerance / 2.0
         band = self.band
         self.band = min(max(band, self.vf2 - half), self.vf2 + half)
         # acceleration: the velocity's change per cycle, smoothed like the velocity (a constant one passes)
@@ -101,18 +101,18 @@ class Extrapolator:
         tp = tp1 + tp2
         # PT2 on a parabola (discrete, backward difference form): p(t - Tp) + a*((tp1^2 + tp2^2)/2 + Tp*dt/2)
         c_p = 0.5 * (tp1 * tp1 + tp2 * tp2 + tp * dt)
-        x = self.pf2 + T * self.band
+        xp = self.pf2 + T * self.band
         if acc != 0.0:
-            x += acc * (T * (tv1 + tv2 + src.velocity_lag(dt) - tp + 0.5 * T) - c_p)
-        y = self._hysteresis(x, e["Extrapolation.Hysteresis.Value"])
+            xp += acc * (T * (tv1 + tv2 + src.velocity_lag(dt) - tp + 0.5 * T) - c_p)
+        y = self._hysteresis(xp, x.hysteresis)
         prev = self._prev
         self.position = y
-        if e["Extrapolation.Settings.ExtrapolatedVelocityMode"] == 1 and prev is not None:
+        if x.differentiated_velocity and prev is not None:
             self.velocity = (y - prev) / dt
         else:
             self.velocity = self.band
         # the extrapolated acceleration; none while the hysteresis holds the leading value back
-        self.acceleration = acc if y == x else 0.0
+        self.acceleration = acc if y == xp else 0.0
         self._prev = y
         return self.position, self.velocity, self.acceleration
 
@@ -257,8 +257,8 @@ class LeadingValueMixin:
         return self.state in ("enabled", "disabling") and self.position_controlled
 
     def lv_modulo(self: "PositioningAxis") -> tuple[float, float] | None:
-        e = self.eff
-        return (e["Modulo.StartValue"], e["Modulo.Length"]) if e["Modulo.Enable"] else None
+        m = self.config.modulo
+        return (m.start, m.length) if m.enabled else None
 
     def lv_value(self: "PositioningAxis", mode: str, t: float) -> tuple[float, float, float]:
         """The leading value this TO provides with coupling type ``mode`` at time ``t``."""
@@ -311,16 +311,17 @@ class LeadingValueMixin:
         return self._delay
 
     def local_delay_time(self: "PositioningAxis") -> float:
-        return self.eff.get("CrossPlcSynchronousOperation.LocalLeadingValueDelayTime", 0.0)
+        return self.config.leading_value_output.local_delay_time
 
     def provide_leading_value(self: "PositioningAxis", sink) -> None:
         """Send this TO's leading value to another controller every servo cycle (cross-PLC, §8):
-        needs ``CrossPlcSynchronousOperation.Interface[1].EnableLeadingValueOutput`` = TRUE.
+        needs the leading value output configured (``LeadingValueOutput.enabled``; S7-1500:
+        ``CrossPlcSynchronousOperation.Interface[1].EnableLeadingValueOutput`` = TRUE).
 
         Each telegram carries the delay of the local delayed followers, so that a leading axis proxy
         provides the value these followers use at the same time (§8.1.3) without being told the delay.
         """
-        if not self.eff.get("CrossPlcSynchronousOperation.Interface[1].EnableLeadingValueOutput"):
+        if not self.config.leading_value_output.enabled:
             raise ValueError(f"{self.name}: set CrossPlcSynchronousOperation.Interface[1].EnableLeadingValueOutput "
                              f"to provide a cross-PLC leading value")
         from .leading_value import LeadingValueSample
@@ -330,27 +331,27 @@ class LeadingValueMixin:
         self._ensure_delay()                # StatusProvidedLeadingValue.DelayedLeadingValue (§8.1.4)
 
         def send(t: float) -> None:
-            e = self.eff
+            m = self.config.modulo
             counter[0] += 1
             valid, tracking = self.provided_value_valid()
             sink.send(LeadingValueSample(
                 t, *provided(), valid=valid, tracking=tracking,
-                modulo_length=e["Modulo.Length"] if e["Modulo.Enable"] else 0.0,
-                modulo_start=e["Modulo.StartValue"], sequence=counter[0], delay=self.local_delay_time()))
+                modulo_length=m.length if m.enabled else 0.0,
+                modulo_start=m.start, sequence=counter[0], delay=self.local_delay_time()))
         ctl.sync.register_post(send)
 
     # --- tags -------------------------------------------------------------------------------------------
     def leading_axis_dependent_time(self: "PositioningAxis") -> float:
         """T_i + T_Ipo + position filter T1 + T2 (§3.3.6); T_i is one servo cycle for a real encoder."""
-        e = self.eff
+        x = self.config.extrapolation
         ti = 0.0 if self.sim else self.ctl.servo_cycle
-        return ti + self.ctl.servo_cycle + e["Extrapolation.PositionFilter.T1"] + e["Extrapolation.PositionFilter.T2"]
+        return ti + self.ctl.servo_cycle + x.position_filter_t1 + x.position_filter_t2
 
     def extrapolation_time(self: "PositioningAxis") -> float:
         """Effective extrapolation time: leading-axis part (if included) + following-axis part + delay."""
-        e = self.eff
-        t = e["Extrapolation.FollowingAxisDependentTime"] + self.local_delay_time()
-        if e["Extrapolation.Settings.SystemDefinedExtrapolation"] == 1:
+        x = self.config.extrapolation
+        t = x.following_axis_time + self.local_delay_time()
+        if x.include_leading_axis_time:
             t += self.leading_axis_dependent_time()
         return t
 

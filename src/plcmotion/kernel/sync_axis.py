@@ -131,7 +131,7 @@ class SynchronousMixin(RevolutionsMixin, SyncModifiersMixin):
 
     def provides_cross_plc(self: "Axis") -> bool:
         """Configured to provide its leading value to other controllers (§6.1.4)."""
-        return bool(self.eff.get("CrossPlcSynchronousOperation.Interface[1].EnableLeadingValueOutput"))
+        return self.config.leading_value_output.enabled
 
     def _lv_now(self: "Axis", source: Any, mode: str, t: float) -> tuple[float, float, float]:
         """Effective leading value (source value plus additive value) at time ``t``."""
@@ -710,9 +710,9 @@ class SynchronousMixin(RevolutionsMixin, SyncModifiersMixin):
         c = self.coupling
         watch = self.ctl.sync.sw_limits
         if c is not None and not c.simulated and self.sw_limits_effective():
-            e = self.eff
-            watch.set(self, e["PositionLimits_SW.MinPosition"], e["PositionLimits_SW.MaxPosition"],
-                      e["DynamicLimits.MaxDeceleration"], e["DynamicLimits.MaxJerk"] or INF)
+            cfg = self.config
+            watch.set(self, cfg.software_limits.minimum, cfg.software_limits.maximum,
+                      cfg.limits.max_deceleration, cfg.limits.max_jerk or INF)
         else:
             watch.clear(self)
 
@@ -727,8 +727,8 @@ class SynchronousMixin(RevolutionsMixin, SyncModifiersMixin):
         if c is None or c.simulated:
             self._watch_sw_limits()
             return
-        e = self.eff
-        limit = e["PositionLimits_SW.MaxPosition" if side == "max" else "PositionLimits_SW.MinPosition"]
+        sw = self.config.software_limits
+        limit = sw.maximum if side == "max" else sw.minimum
         fault = F.alarm(F.SW_LIMIT_MAX if side == "max" else F.SW_LIMIT_MIN, "reached")
         if self.sup_job is not None and self.sup_job.busy:
             self._finish_job(self.sup_job, JobState.ERROR, t, fault)
@@ -740,9 +740,9 @@ class SynchronousMixin(RevolutionsMixin, SyncModifiersMixin):
     def _stop_at(self: "Axis", t: float, p: float, v: float, a: float, limit: float) -> Profile:
         """Braking to a standstill at ``limit`` without reversing; harder than the limits only where the
         remaining distance needs it, and without a jerk limit before overshooting."""
-        e = self.eff
-        dec = e["DynamicLimits.MaxDeceleration"]
-        jerk = e["DynamicLimits.MaxJerk"] or INF
+        dl = self.config.limits
+        dec = dl.max_deceleration
+        jerk = dl.max_jerk or INF
         dist = limit - p
         lo, hi = min(v, 0.0), max(v, 0.0)
         planner = self.motion.planner

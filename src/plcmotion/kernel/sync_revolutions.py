@@ -43,7 +43,8 @@ class RevolutionsMixin:
         return turns != 0 and abs(stroke - turns * length) <= 1e-9 * max(1.0, abs(stroke))
 
     def _modulo_length(self: "Axis") -> float:
-        return self.eff["Modulo.Length"] if self.eff["Modulo.Enable"] else 0.0
+        m = self.config.modulo
+        return m.length if m.enabled else 0.0
 
     def _revolutions(self: "Axis", c: Coupling, e0: float, law_delta: float) -> list[int]:
         """Candidate revolutions k (the following axis's synchronous position shifted by k modulo

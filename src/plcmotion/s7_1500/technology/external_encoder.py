@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING, Any, Callable, Mapping
 import numpy as np
 
 from ...kernel import faults as F
+from ...kernel.axis_config import source_config
 from ...kernel.config import TagAccessError
 from ...kernel.fault_injection import checked_real
 from ...kernel.faults import Fault, Reaction
@@ -117,6 +118,7 @@ class ExternalEncoder(LeadingValueMixin, AxisTagsMixin):
         self.cfg = dict(cfg)
         self.load_cfg = dict(cfg)
         self.eff = self.cfg
+        self.config = source_config(self.cfg)     # what the kernel reads of a leading value source
         self.state = "disabled"
         self.power_owner: Any = None
         self.homed = cfg["Sensor[1].Type"] in (1, 2)
@@ -234,6 +236,7 @@ class ExternalEncoder(LeadingValueMixin, AxisTagsMixin):
         self.power_owner = None
         self.cfg = dict(self.load_cfg)
         self.eff = self.cfg
+        self.config = source_config(self.cfg)
         self.alarms.clear()
         self.homed = self.cfg["Sensor[1].Type"] in (1, 2)
         pos = self.plant_position
@@ -292,6 +295,7 @@ class ExternalEncoder(LeadingValueMixin, AxisTagsMixin):
         if reason is not None:
             raise ValueError(f"{self.name}.{path} = {value!r}: allowed {param.allowed()}")
         self.cfg[path] = norm
+        self.config = source_config(self.cfg)     # an encoder's tags take effect at once
 
     def _wrap(self, value: float) -> float:
         e = self.eff

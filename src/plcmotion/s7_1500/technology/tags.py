@@ -108,7 +108,8 @@ def _fe_warning(ax: "Axis") -> bool:
     b, i = _b(ax), ax.index
     if not b.fe_on[i]:
         return False
-    level = ax.eff.get("FollowingError.WarningLevel", 100.0) / 100.0
+    warning = ax.config.following_error.warning_level
+    level = (100.0 if warning is None else warning) / 100.0
     return abs(float(b.fe[i])) > level * _fe_limit(ax)
 
 
@@ -178,13 +179,13 @@ def warning_word(ax: "Axis") -> int:
 def sync_status_word(ax: "Axis") -> int:
     b, i = _b(ax), ax.index
     c = getattr(ax, "coupling", None)
-    e = ax.eff
+    lim = ax.config.limits
     exceeded = {}
     if c is not None and c.applied:
         v, a = float(b.sp_v[i]), float(b.sp_a[i])
-        exceeded = {0: abs(v) > e["DynamicLimits.MaxVelocity"] * (1 + 1e-9),
-                    1: a * v > 0 and abs(a) > e["DynamicLimits.MaxAcceleration"] * (1 + 1e-9),
-                    2: a * v < 0 and abs(a) > e["DynamicLimits.MaxDeceleration"] * (1 + 1e-9)}
+        exceeded = {0: abs(v) > lim.max_velocity * (1 + 1e-9),
+                    1: a * v > 0 and abs(a) > lim.max_acceleration * (1 + 1e-9),
+                    2: a * v < 0 and abs(a) > lim.max_deceleration * (1 + 1e-9)}
     bits = dict(exceeded)
     bits[3] = c is not None and c.simulated
     job = getattr(ax, "lv_additive_job", None)
@@ -214,9 +215,10 @@ def _distance(ax: "Axis") -> float:
 
 
 def _modulo_cycle(ax: "Axis", value: float) -> int:
-    if not ax.eff["Modulo.Enable"]:
+    m = ax.config.modulo
+    if not m.enabled:
         return 0
-    return int(np.floor((value - ax.eff["Modulo.StartValue"]) / ax.eff["Modulo.Length"]))
+    return int(np.floor((value - m.start) / m.length))
 
 
 def _setpoint_execution_time(ax: "Axis") -> float:
@@ -236,7 +238,7 @@ DYNAMIC: dict[str, Callable[["Axis"], Any]] = {
     "ActualPosition": _DYN1200["ActualPosition"],
     "ActualVelocity": _DYN1200["ActualVelocity"],
     "ActualAcceleration": lambda ax: float(_b(ax).sp_a[ax.index]) if not ax.servo else ax.actual_acceleration(),
-    "ActualSpeed": lambda ax: float(_b(ax).act_v[ax.index]) / ax.eff["Mechanics.LeadScrew"] * 60.0
+    "ActualSpeed": lambda ax: float(_b(ax).act_v[ax.index]) / ax.config.drive.length_per_revolution * 60.0
     if ax.servo else 0.0,
     "VelocitySetpoint": lambda ax: float(_b(ax).cmd_v[ax.index]) if ax.servo else float(_b(ax).sp_v[ax.index]),
     "OperativeSensor": lambda ax: 1,

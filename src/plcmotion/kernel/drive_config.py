@@ -7,8 +7,9 @@ simulated machine.  The kernel's parameters are still named like the S7-1200 tec
 :class:`~plcmotion.drives.spec.DriveSpec` that drive models take, so that a drive never reads a tag path;
 a family with its own schema will produce the spec directly later.
 
-An axis builds its spec when it is created and again whenever configuration changes become effective
-(``PositioningAxis._apply_bank_config``), and hands it to ``DriveChannel.reconfigure``.
+The spec is part of the axis's typed configuration: ``kernel.axis_config.axis_config`` builds it whenever
+configuration changes become effective (``axis.config.drive``), and the axis hands it to
+``DriveChannel.reconfigure``.
 """
 from __future__ import annotations
 

@@ -66,7 +66,7 @@ class AxisQueueOwner:
             return job.position
         if job.kind == JobKind.ABSOLUTE:
             ax = self.axis
-            if ax.eff["Modulo.Enable"]:
+            if ax.config.modulo.enabled:
                 sign = self._heading(running)
                 lim = limits(ax, job.velocity)
                 goal = modulo_target(ax, job.position, job.direction, sign, running.target, 0.0, 0.0, lim,

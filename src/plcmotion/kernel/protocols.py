@@ -4,13 +4,15 @@ Planning and queueing take an axis as an argument; annotating it with the axis c
 modules import each other in a circle (the axis uses them).  These protocols name only what is used."""
 from __future__ import annotations
 
-from typing import Any, Mapping, Protocol
+from typing import Protocol
+
+from .axis_config import AxisConfig
 
 
 class PlannedAxis(Protocol):
     """An axis as the motion planner sees it (``kernel.motion``)."""
 
-    eff: Mapping[str, Any]          # kernel parameters in effect
+    config: AxisConfig              # the axis configuration in effect
     pto: bool                       # pulse output: start/stop velocity, no jerk limit on every version
 
     def commanded_velocity(self, velocity: float) -> float: ...

@@ -94,21 +94,6 @@ def _leading_list(name: str, leading_values: Any) -> list[tuple[str, str]]:
     return out
 
 
-def _cam_values(name: str, points: Any, segments: Any) -> tuple[list, list]:
-    """Points and segments of a new cam as lists; an int beyond the LREAL range becomes +-inf, an invalid
-    value that MC_InterpolateCam reports with its ErrorID (the cam TO stores what the program wrote)."""
-    def lreal(v: Any) -> Any:
-        if isinstance(v, numbers.Integral) and not isinstance(v, bool) and abs(v) > 1.0e308:
-            return math.inf if v > 0 else -math.inf
-        return v
-    for what, value in (("points", points), ("segments", segments)):
-        if isinstance(value, (str, bytes, Mapping)) or not hasattr(value, "__iter__"):
-            raise TypeError(f"cam {name}: {what} must be a list, got {_short(value)}")
-    pts = [tuple(lreal(v) for v in p) if isinstance(p, (list, tuple)) else p for p in points]
-    segs = [{k: lreal(v) for k, v in sg.items()} if isinstance(sg, Mapping) else sg for sg in segments]
-    return pts, segs
-
-
 def _short(value: Any, limit: int = 60) -> str:
     text = repr(value)
     return text if len(text) <= limit else text[:limit - 3] + "..."

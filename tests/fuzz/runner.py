@@ -397,7 +397,7 @@ class Run:
             b = self.ctl.bank
             # exactly frozen setpoints: a job crawling at 1e-300 is slow, not stuck
             still = all(b.sp_v[a.index] == 0.0 and b.sp_a[a.index] == 0.0 and abs(b.act_v[a.index]) < 1e-6
-                        for a in axes)
+                        and self._basic_velocity(a.index) == 0.0 for a in axes)
             override = all(_num(a.cfg.get("Override.Velocity", 100.0)) not in (None, 0.0) for a in axes)
             # a phase shift goes on while synchronous operation is simulated (S7-1500T V5 §9.1.6.1: the
             # follower's synchronous setpoint is zero then): its progress output moving is not standstill
@@ -412,6 +412,13 @@ class Run:
                                "", (cls,))
                 return
         self._busy_still.pop(name, None)
+
+    def _basic_velocity(self, i: int) -> float:
+        """Velocity of the basic motion alone: a superimposed motion (S7-1500 MC_MoveSuperimposed) can cancel
+        it exactly, so that the axis stands while both jobs progress (fuzz seed 516188)."""
+        b = self.ctl.bank
+        tau = self.ctl._bank_time - b.seg_t[i]
+        return float(b.seg_v[i] + tau * (b.seg_a[i] + 0.5 * tau * b.seg_j[i]))
 
     def _check_cycle(self, coupled_before: list[bool]) -> None:
         ctl = self.ctl
@@ -450,8 +457,13 @@ class Run:
             return
         v, a, j = self._peak_v[k], self._peak_a[k], self._peak_j[k]
         vlim = w.vlim * (1 + REL_TOL) + ABS_TOL
-        if w.grace:                    # braking from a synchronous motion: until back within the limit
-            if abs(self.ctl.bank.sp_v[ax.index]) <= vlim:
+        if w.grace:
+            # after synchronous operation or a superimposed motion the overriding job takes the total motion
+            # back to the configured limits (S7-1500T V5 §4.4.1 "transitioned (smoothed)"): velocity and
+            # acceleration are out of scope until both are within them again (fuzz seed 547578)
+            b = self.ctl.bank
+            if (abs(b.sp_v[ax.index]) <= vlim
+                    and abs(b.sp_a[ax.index]) <= w.alim * (1 + REL_TOL) + ABS_TOL):
                 w.grace = False
             return
         kind = f"actor {ax.cfg.get('Actor.Type')}" + (" virtual" if ax.cfg.get("VirtualAxis.Mode") else "") \

@@ -22,7 +22,7 @@ from ..drives.plant import Plant
 from ..drives.simulated import new_drive_group
 from . import retain
 from . import family as families
-from . import parameters as P
+from . import schema as P
 from .axis import ConfigurationError, PositioningAxis
 from .bank import AxisBank
 from .servo_cycle import STAGE_NAMES, failed_stage, run_servo_cycle

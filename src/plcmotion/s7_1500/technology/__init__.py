@@ -15,7 +15,7 @@ from typing import Any, Mapping
 from ...kernel import family as K
 from ...kernel.axis import ConfigurationError
 from ...kernel.jobs import JobKind
-from ...kernel.parameters import Issue
+from ...kernel.schema import Issue
 from .axes import PositioningAxis1500, SynchronousAxis
 from .cam_to import CamTO
 from .external_encoder import ENCODER_SCHEMA, ExternalEncoder

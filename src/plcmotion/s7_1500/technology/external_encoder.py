@@ -24,7 +24,7 @@ from ...kernel.fault_injection import checked_real
 from ...kernel.faults import Fault, Reaction
 from ...kernel.jobs import Job, JobState
 from ...kernel.leading import LeadingValueMixin
-from ...kernel.parameters import E12, P, R, REAL, AxisSchema, Param
+from ...kernel.schema import E12, P, R, REAL, AxisSchema, Param
 from .parameters import _PARAMS_1500, canonical
 from ...kernel.tags import AxisTagsMixin
 from .tags import ALARM_NUMBERS, REACTION_CODES, ErrorWord, WarningWord

@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from typing import Any, Mapping
 
-from ...kernel.parameters import ADDR, BOOL, E12, INT, P, R, REAL, RW, AxisSchema, Issue, Param
+from ...kernel.schema import ADDR, BOOL, E12, INT, P, R, REAL, RW, AxisSchema, Issue, Param
 from ...kernel.parameters import _PARAMS as _KERNEL_PARAMS
 
 #: effectiveness codes of §A.1.1: DIR (next MC-Servo), CAL (next MC-Servo after an instruction call),

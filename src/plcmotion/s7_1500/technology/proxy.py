@@ -28,7 +28,7 @@ from ...kernel import faults as F
 from ...kernel.config import TagAccessError
 from ...kernel.faults import Fault, Reaction
 from ...kernel.leading_value import LeadingValueSample, LeadingValueSource
-from ...kernel.parameters import E12, REAL, RW, AxisSchema, Param
+from ...kernel.schema import E12, REAL, RW, AxisSchema, Param
 from ...kernel.tags import AxisTagsMixin
 from ...kernel.words import pack, word_type
 

@@ -215,6 +215,7 @@ ALLOWED = {
     "tags.py": "the S7-1200 tag views (StatusBits, ErrorBits, dynamic tags), a family's presentation",
     "config.py": "tag writes and their effectiveness (a tag-access layer of the S7-1200 schema)",
     "command_table.py": "the S7-1200 command table, still in the kernel until the family move",
+    "plant_schema.py": "the simulated machine's parameters (Plant.*): no family's tags, every family's schema has them",
 }
 
 

@@ -13,7 +13,6 @@ from typing import TYPE_CHECKING, Any, Mapping
 
 from . import faults as F
 from . import parameters as P
-from .axis_config import axis_config
 from .faults import Fault, Reaction
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -33,11 +32,10 @@ class ConfigMixin:
     """Runtime configuration of the positioning axis (mixed into PositioningAxis)."""
 
     def _make_effective(self: "PositioningAxis", values: dict[str, Any]) -> None:
-        """Tag values ``values`` are in effect from now on: the kernel parameters and the typed axis
-        configuration (``axis.config``) follow them together, here and nowhere else."""
-        self.ueff = values
-        self.eff = self.schema.to_kernel(values)
-        self.config = axis_config(self.eff)
+        """Tag values ``values`` are in effect from now on: the typed axis configuration (``axis.config``,
+        built by the family's schema) follows them, here and nowhere else."""
+        self.ueff = self.eff = values
+        self.config = self.schema.build(values)
 
     def _moment_codes(self: "PositioningAxis", moment: str) -> set[int]:
         if not self.pto:

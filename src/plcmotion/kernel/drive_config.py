@@ -13,11 +13,11 @@ configuration changes become effective (``axis.config.drive``), and the axis han
 """
 from __future__ import annotations
 
-import math
 from typing import Any, Mapping
 
 from ..drives.spec import (ActuatorKind, DriveSpec, EncoderInterface, EncoderKind, EncoderSpec, PlantSpec,
-                           SetpointInterface, SwitchSpec)
+                           SetpointInterface)
+from .plant_schema import plant_spec
 
 _S = "Sensor[1]"
 
@@ -76,31 +76,8 @@ def _encoder(p: Mapping[str, Any]) -> EncoderSpec:
 
 
 def _plant(p: Mapping[str, Any]) -> PlantSpec:
-    switches: list[SwitchSpec] = []
-    lo = p["Plant.HWLimitMinPosition"]
-    if lo is not None and p["PositionLimits_HW.MinSwitchAddress"]:
-        switches.append(SwitchSpec(p["PositionLimits_HW.MinSwitchAddress"], -math.inf, lo,
-                                   p["PositionLimits_HW.MinSwitchLevel"], "low hardware limit switch"))
-    hi = p["Plant.HWLimitMaxPosition"]
-    if hi is not None and p["PositionLimits_HW.MaxSwitchAddress"]:
-        switches.append(SwitchSpec(p["PositionLimits_HW.MaxSwitchAddress"], hi, math.inf,
-                                   p["PositionLimits_HW.MaxSwitchLevel"], "high hardware limit switch"))
-    cam = p["Plant.HomingSwitchPosition"]
-    if cam is not None:
-        # one reference cam, wired to every homing input that names an address (once per input)
-        length = p["Plant.HomingSwitchLength"]
-        seen: set[str] = set()
-        for kind in ("ActiveHoming", "PassiveHoming"):
-            address = p[f"{_S}.{kind}.DigitalInputAddress"]
-            if address and address not in seen:
-                seen.add(address)
-                switches.append(SwitchSpec(address, cam, cam + length, p[f"{_S}.{kind}.SwitchLevel"],
-                                           "homing switch", p["Plant.HomingSwitchPeriod"]))
-    return PlantSpec(
-        initial_position=p["Plant.InitialPosition"],
-        speed_time_constant=p["Plant.SpeedTimeConstant"],
-        zero_mark_distance=p["Plant.ZeroMarkDistance"],
-        zero_mark_offset=p["Plant.ZeroMarkOffset"],
-        switches=tuple(switches),
-        ready_input=p["Actor.Interface.DriveReadyInput"] or "",
-    )
+    return plant_spec(p, hw_min=(p["PositionLimits_HW.MinSwitchAddress"], p["PositionLimits_HW.MinSwitchLevel"]),
+                      hw_max=(p["PositionLimits_HW.MaxSwitchAddress"], p["PositionLimits_HW.MaxSwitchLevel"]),
+                      homing_inputs=[(p[f"{_S}.{kind}.DigitalInputAddress"], p[f"{_S}.{kind}.SwitchLevel"])
+                                     for kind in ("ActiveHoming", "PassiveHoming")],
+                      ready_input=p["Actor.Interface.DriveReadyInput"] or "")

@@ -13,6 +13,8 @@ from __future__ import annotations
 
 from typing import Any, Mapping
 
+from .axis_config import axis_config
+from .plant_schema import PLANT_PARAMS
 from .schema import (ADDR, BOOL, E12, INT, MAX_DEPTH, P, R, REAL, RW, WP, AxisSchema, Issue, Param,  # noqa: F401
                      _brief, _check, flatten, flatten_checked, groups)
 
@@ -125,32 +127,8 @@ _PARAMS: list[Param] = [
     # PROFIdrive/analog axes change it only through the load memory (WRIT_DBL) and a restart, which
     # plcmotion does not have: read-only for them (PTO_ONLY_WP, docs/decisions.md)
     Param("Simulation.Mode", INT, 0, WP, (2, 9), choices=(0, 1)),
-    # --- Simulated plant (not tags of the technology object) ----------------------------------------
-    Param("Plant.SpeedTimeConstant", REAL, 0.002, P, (), 0.0, 10.0,
-          doc="first-order time constant [s] of the simulated drive's closed speed loop"),
-    Param("Plant.ReadyDelay", REAL, 0.0, P, (), 0.0, 60.0,
-          doc="time [s] the simulated drive needs from enable until it reports 'Drive ready'"),
-    Param("Plant.OffRampTime", REAL, 0.1, P, (), 0.0, 600.0,
-          doc="time [s] the simulated drive ramps from maximum speed to zero when its enable is removed"),
-    Param("Plant.PTOLimitFrequency", REAL, 100000.0, P, (), choices=(20000.0, 100000.0, 200000.0, 1000000.0),
-          doc="limit frequency [Hz] of the pulse output (§2.1.1: 20 kHz, 100 kHz, 200 kHz or 1 MHz)"),
-    Param("Plant.InitialPosition", REAL, 0.0, P, (), -E12, E12,
-          doc="load position [user unit] of the simulated mechanics at controller start"),
-    Param("Plant.HWLimitMinPosition", REAL, None, P, (), -E12, E12, optional=True,
-          doc="machine position at and below which the low hardware limit switch is actuated"),
-    Param("Plant.HWLimitMaxPosition", REAL, None, P, (), -E12, E12, optional=True,
-          doc="machine position at and above which the high hardware limit switch is actuated"),
-    Param("Plant.HomingSwitchPosition", REAL, None, P, (), -E12, E12, optional=True,
-          doc="machine position of the lower end of the homing switch (reference cam)"),
-    Param("Plant.HomingSwitchLength", REAL, 10.0, P, (), 0.0, E12, lo_open=True,
-          doc="length of the homing switch [user unit]"),
-    Param("Plant.HomingSwitchPeriod", REAL, None, P, (), 0.0, E12, lo_open=True, optional=True,
-          doc="the homing switch repeats with this period (e.g. 360 on a rotating spindle)"),
-    Param("Plant.ZeroMarkDistance", REAL, None, P, (), 0.0, E12, lo_open=True, optional=True,
-          doc="distance between encoder zero marks (default: one encoder revolution)"),
-    Param("Plant.ZeroMarkOffset", REAL, 0.0, P, (), -E12, E12,
-          doc="machine position of one encoder zero mark"),
 ]
+_PARAMS += PLANT_PARAMS
 # fmt: on
 
 SCHEMA: dict[str, Param] = {p.path: p for p in _PARAMS}
@@ -364,4 +342,5 @@ class _S71200Schema(AxisSchema):
         return check_values(values)
 
 
-S7_1200 = _S71200Schema("positioning axis", _PARAMS, rules=rule_issues, canonical=canonical, int_types=_INT_TYPES)
+S7_1200 = _S71200Schema("positioning axis", _PARAMS, rules=rule_issues, canonical=canonical, int_types=_INT_TYPES,
+                         build=axis_config)

@@ -248,8 +248,7 @@ class AxisSchema:
     def __init__(self, title: str, params: Iterable[Param], *, rules=None, canonical=None, build=None,
                  int_types: Mapping[str, str] | None = None, real_type: str = "LReal",
                  pulse_moments: Mapping[str, Iterable[int]] | None = None,
-                 pulse_only_write_param: Iterable[str] = (), to_kernel=None):
-        self._to_kernel = to_kernel
+                 pulse_only_write_param: Iterable[str] = ()):
         self.title = title
         self.params: dict[str, Param] = {p.path: p for p in params}
         self._rules = rules or _no_rules
@@ -318,6 +317,3 @@ class AxisSchema:
         access = self.params[path].access
         return R if access == WP and path in self.pulse_only_write_param and not pulse else access
 
-    def to_kernel(self, cfg: dict[str, Any]) -> dict[str, Any]:
-        """The kernel's parameters for the family's tag values (the same dict when they coincide)."""
-        return cfg if self._to_kernel is None else self._to_kernel(cfg)

@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING, Any, Callable, Mapping
 import numpy as np
 
 from ...kernel import faults as F
-from ...kernel.axis_config import source_config
+from .builder import source_config
 from ...kernel.config import TagAccessError
 from ...kernel.fault_injection import checked_real
 from ...kernel.faults import Fault, Reaction

@@ -1,18 +1,18 @@
 """Configuration tags of the S7-1500 positioning and synchronous axis (S7-1500T V5 §6.1, §A.1).
 
 The tags are declared with the names, ranges and effectiveness of the appendix (DIR and CAL tags may be
-written by the user program, RES and RON tags are configuration), and mapped onto the kernel's own
-parameters in :func:`to_kernel`: the kernel runs the same motion, monitoring and drive models for both
-families.  Start values: the manual gives ranges only (catalog §11.2 item 12); the values chosen here are
-documented in docs/decisions_s7_1500.md.
+written by the user program, RES and RON tags are configuration), and turned into the neutral
+typed configuration the kernel reads by ``builder.axis_config``: the kernel runs the same motion,
+monitoring and drive models for every family.  Start values: the manual gives ranges only (catalog §11.2
+item 12); the values chosen here are documented in docs/decisions_s7_1500.md.
 """
 from __future__ import annotations
 
-import math
 from typing import Any, Mapping
 
 from ...kernel.schema import ADDR, BOOL, E12, INT, P, R, REAL, RW, AxisSchema, Issue, Param
-from ...kernel.parameters import _PARAMS as _KERNEL_PARAMS
+from ...kernel.plant_schema import PLANT_PARAMS
+from .builder import axis_config, distance_per_motor_revolution, load_revolution  # noqa: F401
 
 #: effectiveness codes of §A.1.1: DIR (next MC-Servo), CAL (next MC-Servo after an instruction call),
 #: RES (start value, after a restart), RON (read only)
@@ -145,8 +145,8 @@ _PARAMS_1500: list[Param] = [
 ]
 # fmt: on
 
-#: the simulated machine (same parameters as for every axis of the kernel)
-_PLANT = [p for p in _KERNEL_PARAMS if p.access == P]
+#: the simulated machine (the same parameters for every family's axes)
+_PLANT = PLANT_PARAMS
 
 _INT_TYPES = {"VirtualAxis.Mode": "UDInt", "Simulation.Mode": "UDInt", "Units.LengthUnit": "UDInt",
               "Units.VelocityUnit": "UDInt", "Units.TimeUnit": "UDInt", "LoadGear.Numerator": "UDInt",
@@ -158,84 +158,12 @@ _ALIASES = (("PositionLimitsSW.", "PositionLimits_SW."), ("PositionLimitsHW.", "
             ("Sensor.Sensor[1].", "Sensor[1]."), ("CrossPlcSynchronousOperation.Interface.",
                                                   "CrossPlcSynchronousOperation.Interface[1]."))
 
-_KERNEL_DEFAULTS = {p.path: p.start for p in _KERNEL_PARAMS}
-
-
 def canonical(path: str) -> str:
     for old, new in _ALIASES:
         if path.startswith(old):
             return new + path[len(old):]
     return path
 
-
-def load_revolution(cfg: Mapping[str, Any]) -> float:
-    """Load travel of one load revolution [user unit]: the leadscrew pitch (linear) or 360° / 2π rad."""
-    if cfg["Properties.MotionType"] == 0:
-        return cfg["Mechanics.LeadScrew"]
-    return 2.0 * math.pi if cfg["Units.LengthUnit"] == 1004 else 360.0
-
-
-def distance_per_motor_revolution(cfg: Mapping[str, Any]) -> float:
-    """Load travel per motor revolution: load revolution x LoadGear (motor revolutions : load revolutions)."""
-    return load_revolution(cfg) * cfg["LoadGear.Denominator"] / cfg["LoadGear.Numerator"]
-
-
-def to_kernel(cfg: Mapping[str, Any]) -> dict[str, Any]:
-    """The kernel parameters of an S7-1500 axis configuration."""
-    k = dict(_KERNEL_DEFAULTS)
-    for path, value in cfg.items():
-        if path.startswith("Plant.") or path in _SHARED:
-            k[path] = value
-    k["Units.LengthUnit"] = 1005 if cfg["Properties.MotionType"] == 1 else 1013
-    k["Simulation.Mode"] = 1 if cfg["Simulation.Mode"] == 1 or cfg["VirtualAxis.Mode"] == 1 else 0
-    k["Actor.Interface.EnableDriveOutput"] = (cfg["Actor.Interface.EnableDriveOutputAddress"]
-                                              if cfg["Actor.Interface.EnableDriveOutput"] else "")
-    k["Actor.Interface.DriveReadyInput"] = (cfg["Actor.Interface.DriveReadyInputAddress"]
-                                            if cfg["Actor.Interface.DriveReadyInput"] else "")
-    k["Mechanics.LeadScrew"] = distance_per_motor_revolution(cfg)
-    mounting = cfg[f"{_S}.MountingMode"]
-    k[f"{_S}.MountingMode"] = 0 if mounting == 0 else 2
-    if mounting == 1:
-        k[f"{_S}.Parameter.DistancePerRevolution"] = load_revolution(cfg)
-    k[f"{_S}.Interface.Type"] = 2 if cfg["Actor.Type"] == 1 else 0
-    k["Homing.ApproachDirection"] = not cfg["Homing.ApproachDirection"]      # S7-1500: FALSE = positive
-    k["DynamicLimits.MinVelocity"] = 0.0
-    for path in _KERNEL_ONLY:
-        k[path] = cfg[path]
-    return k
-
-
-#: tags whose name and meaning are the same in the kernel
-_SHARED = frozenset({
-    "Actor.Type", "Actor.InverseDirection", "Actor.DataAdaption", "Actor.Interface.Telegram",
-    "Actor.DriveParameter.ReferenceSpeed", "Actor.DriveParameter.MaxSpeed",
-    f"{_S}.Type", f"{_S}.InverseDirection", f"{_S}.System", f"{_S}.DataAdaption", f"{_S}.Interface.Number",
-    f"{_S}.Parameter.Resolution", f"{_S}.Parameter.StepsPerRevolution", f"{_S}.Parameter.FineResolutionXist1",
-    f"{_S}.Parameter.FineResolutionXist2", f"{_S}.Parameter.DeterminableRevolutions",
-    f"{_S}.Parameter.DistancePerRevolution", f"{_S}.Parameter.BehaviorGx_XIST1",
-    f"{_S}.ActiveHoming.Mode", f"{_S}.ActiveHoming.SideInput", f"{_S}.ActiveHoming.DigitalInputAddress",
-    f"{_S}.ActiveHoming.HomePositionOffset", f"{_S}.ActiveHoming.SwitchLevel", f"{_S}.PassiveHoming.Mode",
-    f"{_S}.PassiveHoming.SideInput", f"{_S}.PassiveHoming.DigitalInputAddress", f"{_S}.PassiveHoming.SwitchLevel",
-    "Modulo.Enable", "Modulo.Length", "Modulo.StartValue", "DynamicLimits.MaxVelocity",
-    "DynamicDefaults.Acceleration", "DynamicDefaults.Deceleration", "DynamicDefaults.Jerk",
-    "DynamicDefaults.EmergencyDeceleration", "PositionLimits_SW.Active", "PositionLimits_SW.MinPosition",
-    "PositionLimits_SW.MaxPosition", "PositionLimits_HW.Active", "PositionLimits_HW.MinSwitchLevel",
-    "PositionLimits_HW.MaxSwitchLevel", "PositionLimits_HW.MinSwitchAddress", "PositionLimits_HW.MaxSwitchAddress",
-    "Homing.AutoReversal", "Homing.ApproachVelocity", "Homing.ReferencingVelocity", "PositionControl.Kv",
-    "PositionControl.Kpc", "FollowingError.EnableMonitoring", "FollowingError.MinValue", "FollowingError.MaxValue",
-    "FollowingError.MinVelocity", "PositioningMonitoring.ToleranceTime", "PositioningMonitoring.MinDwellTime",
-    "PositioningMonitoring.Window", "StandstillSignal.VelocityThreshold", "StandstillSignal.MinDwellTime",
-})
-#: S7-1500 tags the kernel reads under their own name although the S7-1200 axis has no such tag
-_KERNEL_ONLY = ("DynamicLimits.Velocity", "DynamicLimits.MaxAcceleration", "DynamicLimits.MaxDeceleration",
-                "DynamicLimits.MaxJerk", "DynamicDefaults.Velocity", "Override.Velocity", "Homing.HomePosition",
-                f"{_S}.ActiveHoming.Direction", f"{_S}.PassiveHoming.Direction", "FollowingError.WarningLevel",
-                "DynamicAxisModel.VelocityTimeConstant", "Extrapolation.FollowingAxisDependentTime",
-                "Extrapolation.Settings.SystemDefinedExtrapolation", "Extrapolation.Settings.ExtrapolatedVelocityMode",
-                "Extrapolation.PositionFilter.T1", "Extrapolation.PositionFilter.T2", "Extrapolation.VelocityFilter.T1",
-                "Extrapolation.VelocityFilter.T2", "Extrapolation.VelocityTolerance.Range",
-                "Extrapolation.Hysteresis.Value", "CrossPlcSynchronousOperation.LocalLeadingValueDelayTime",
-                "CrossPlcSynchronousOperation.Interface[1].EnableLeadingValueOutput", "VirtualAxis.Mode")
 
 PROFIDRIVE_OVERDRIVE, ANALOG_OVERDRIVE = 2.0, 1.17      # §A.1.5: MaxSpeed <= 2 (PROFIdrive) / 1.17 (analog) x ref
 
@@ -282,4 +210,4 @@ def rule_issues(cfg: Mapping[str, Any]) -> list[Issue]:
 
 
 S7_1500 = AxisSchema("S7-1500 axis", _PARAMS_1500 + _PLANT, rules=rule_issues, canonical=canonical,
-                     to_kernel=to_kernel, int_types=_INT_TYPES)
+                     build=axis_config, int_types=_INT_TYPES)

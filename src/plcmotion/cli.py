@@ -17,6 +17,7 @@ from pathlib import Path
 from typing import Sequence
 
 from . import CycleOverrunWarning, ProgramErrorWarning, __version__
+from .drives.spec import SetpointInterface
 
 #: longest ``--duration`` [s of virtual time] (116 days): beyond it a run does not end in practice
 MAX_DURATION = 1e7
@@ -174,9 +175,11 @@ def cmd_check(args: argparse.Namespace) -> int:
 
 def _describe(ax) -> str:
     kind = "synchronous axis, " if hasattr(ax, "possible_leading_values") else ""
-    if ax.eff.get("VirtualAxis.Mode"):
+    if ax.parameters.effective.get("VirtualAxis.Mode"):         # an S7-1500 tag: a virtual axis has no drive
         return kind + "virtual"
-    drive = "PTO" if ax.pto else "simulated" if ax.sim else "PROFIdrive" if ax.eff["Actor.Type"] == 1 else "analog"
+    interface = ax.config.drive.interface
+    drive = "PTO" if ax.pto else "simulated" if ax.sim else "PROFIdrive" if interface is SetpointInterface.PROFIDRIVE \
+        else "analog"
     return kind + drive
 
 

@@ -64,7 +64,7 @@ axis tables then use the S7-1500 tag names (``plcmotion.s7_1500.technology.param
     boundary_conditions = 1
 
 Axis names are identifiers (letters, digits, underscore; not starting with a digit).  Inside an axis
-table the keys are the tag paths of the positioning axis (``plcmotion.kernel.parameters.SCHEMA``,
+table the keys are the tag paths of the positioning axis (``plcmotion.s7_1200.technology.parameters.SCHEMA``,
 S7-1200 Motion Control V6 §12.9, plus the ``Plant.*`` parameters of the simulated machine); the
 alternative spellings of the manuals (``Sensor.Sensor[1].``, ``PositionLimitsSW.``, ...) are accepted.
 Tags the file does not set keep their start values.  A trace signal is ``"<axis>.<tag>"`` with any tag
@@ -105,7 +105,7 @@ from .toml_text import leaves as _leaves
 from .toml_text import near as _near
 from .toml_text import quoted as _quoted
 from .toml_text import toml_value
-from .kernel import parameters as P
+from .kernel import schema as P
 from .kernel.axis import ConfigurationError
 from .kernel.family import CAM
 from .kernel.runtime import APP_CYCLE_MAX, SERVO_CYCLE_MAX, SERVO_CYCLE_MIN, Controller
@@ -495,7 +495,8 @@ class _Loader:
 
     def _schema(self, ctl: Controller, kind: str) -> Any:
         if ctl.family == "S7-1200":
-            return P.S7_1200
+            from .s7_1200.technology.parameters import S7_1200
+            return S7_1200
         if kind == "external_encoder":
             from .s7_1500.technology.external_encoder import ENCODER_SCHEMA
             return ENCODER_SCHEMA

@@ -25,8 +25,8 @@ from typing import IO, TYPE_CHECKING, Any, Callable, Iterable, Iterator, Mapping
 
 import numpy as np
 
-from .kernel.axis import PositioningAxis
-from .kernel.tags import DYNAMIC_V7
+from .s7_1200.technology.axis import PositioningAxis as _Axis1200
+from .s7_1200.technology.tags import DYNAMIC_V7
 
 if TYPE_CHECKING:  # pragma: no cover
     from .kernel.runtime import Controller
@@ -415,7 +415,7 @@ def plot_csv(csv_path: PathLike, png_path: PathLike, title: str | None = None, *
 
 
 # --- plotting -------------------------------------------------------------------------------------------
-_AXIS_TAGS = frozenset(PositioningAxis.tag_paths()) | frozenset(DYNAMIC_V7)   # V7 axes have a few more
+_AXIS_TAGS = frozenset(_Axis1200.tag_paths()) | frozenset(DYNAMIC_V7)   # V7 axes have a few more
 _MOTION_PANELS = (("Position", "ActualPosition"), ("Velocity", "ActualVelocity"), ("Acceleration",))
 _FOLLOWING_ERROR = "StatusPositioning.FollowingError"
 

@@ -20,7 +20,7 @@ import numpy as np
 import plcmotion.s7_1200 as S12
 import plcmotion.s7_1500 as S15
 from plcmotion import Controller
-from plcmotion.kernel.config import TagAccessError
+from plcmotion.kernel.tag_views import TagAccessError
 from plcmotion.s7_1200 import variables
 
 from .gen import Episode, Op

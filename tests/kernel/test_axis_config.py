@@ -15,8 +15,11 @@ import pytest
 
 from plcmotion.drives.spec import ActuatorKind, EncoderInterface, EncoderKind
 from plcmotion.kernel import Controller
-from plcmotion.kernel import parameters as P
-from plcmotion.kernel.axis_config import AxisConfig, axis_config, source_config
+from plcmotion.kernel.axis_config import AxisConfig
+from plcmotion.s7_1200.technology import parameters as P
+from plcmotion.s7_1200.technology.builder import axis_config
+from plcmotion.s7_1500.technology import builder as B1500
+from plcmotion.s7_1500.technology.parameters import S7_1500
 
 KERNEL = pathlib.Path(__file__).resolve().parents[2] / "src" / "plcmotion" / "kernel"
 
@@ -116,7 +119,8 @@ def test_jerk_limit_of_a_pulse_axis_s5_4_4_4(jerk, limited):
 
 
 def test_extended_limits_extrapolation_and_leading_value_output():
-    p = params(**PROFIDRIVE)
+    """The S7-1500 axis has them (S7-1500T V5 §A.1.9, §A.1.10, §A.1.16, §A.1.17, §A.1.24)."""
+    p = S7_1500.defaults()
     p.update({"DynamicLimits.Velocity": 80.0, "DynamicLimits.MaxAcceleration": 900.0,
               "DynamicLimits.MaxDeceleration": 800.0, "DynamicLimits.MaxJerk": 0.0, "Override.Velocity": 50.0,
               "FollowingError.WarningLevel": 90.0,
@@ -128,7 +132,7 @@ def test_extended_limits_extrapolation_and_leading_value_output():
               "Extrapolation.Settings.ExtrapolatedVelocityMode": 0,
               "CrossPlcSynchronousOperation.Interface[1].EnableLeadingValueOutput": True,
               "CrossPlcSynchronousOperation.LocalLeadingValueDelayTime": 0.01})
-    c = axis_config(p)
+    c = B1500.axis_config(p)
     assert (c.limits.velocity, c.limits.max_acceleration, c.limits.max_deceleration) == (80.0, 900.0, 800.0)
     assert c.limits.max_jerk == 0.0
     assert c.defaults.velocity_override == 50.0 and c.following_error.warning_level == 90.0
@@ -138,7 +142,7 @@ def test_extended_limits_extrapolation_and_leading_value_output():
     assert (x.velocity_tolerance, x.hysteresis, x.following_axis_time) == (2.0, 0.5, 0.006)
     assert x.include_leading_axis_time and not x.differentiated_velocity
     assert c.leading_value_output.enabled and c.leading_value_output.local_delay_time == 0.01
-    s = source_config(p)                          # the same leading value part for an encoder
+    s = B1500.source_config(p)                    # the same leading value part for an encoder
     assert (s.modulo, s.extrapolation, s.leading_value_output) == (c.modulo, c.extrapolation, c.leading_value_output)
 
 
@@ -209,11 +213,6 @@ TAG_PATH = re.compile(r"^[A-Z][A-Za-z0-9_]*(\[\d+\])?(\.[A-Z][A-Za-z0-9_]*(\[\d+
 
 #: kernel modules that may still name tags, and why
 ALLOWED = {
-    "axis_config.py": "the builder of AxisConfig: the one place that maps tags to the typed configuration",
-    "drive_config.py": "the builder of DriveSpec from the same parameters",
-    "parameters.py": "the S7-1200 configuration schema, still in the kernel until the family move",
-    "tags.py": "the S7-1200 tag views (StatusBits, ErrorBits, dynamic tags), a family's presentation",
-    "config.py": "tag writes and their effectiveness (a tag-access layer of the S7-1200 schema)",
     "command_table.py": "the S7-1200 command table, still in the kernel until the family move",
     "plant_schema.py": "the simulated machine's parameters (Plant.*): no family's tags, every family's schema has them",
 }

@@ -1,5 +1,5 @@
 """Drives behind the neutral interface: drive groups built from hand-written specs (no tag dict) follow their
-commands as ``drives.spec`` / ``drives.base`` document, and the kernel's spec builder maps the axis
+commands as ``drives.spec`` / ``drives.base`` document, and the S7-1200 spec builder maps the axis
 parameters (S7-1200 V6 §12.9 names, values derived by hand from the parameter docs) to the right spec."""
 from __future__ import annotations
 
@@ -11,7 +11,7 @@ from plcmotion.drives import (ActuatorKind, DriveSpec, EncoderInterface, Encoder
                               SetpointInterface, SwitchSpec, new_drive_group)
 from plcmotion.drives.plant import Plant
 from plcmotion.kernel.bank import AxisBank
-from plcmotion.kernel.drive_config import drive_spec
+from plcmotion.s7_1200.technology.builder import drive_spec
 from plcmotion.kernel.io import DigitalInputs
 
 DT = 0.001

@@ -7,7 +7,7 @@ or degree), speeds of the motor in revolutions per minute, times in seconds.
 
 The specs are frozen values built once when the axis is created (and again when the axis configuration
 changes at run time): drive models read them at creation or on change, never per servo cycle.  Who
-builds them is the family's business; the kernel's builder is ``kernel.drive_config.drive_spec``.
+builds them is the family's business; the builders are ``s7_1200.technology.builder.drive_spec`` and ``s7_1500.technology.builder.drive_spec``.
 """
 from __future__ import annotations
 

@@ -4,7 +4,7 @@ The kernel knows no dialect, file format or network; dialects (``plcmotion.s7_12
 instructions onto its jobs and its faults onto their ErrorIDs.
 """
 from .axis import ConfigurationError, PositioningAxis
-from .config import TagAccessError
+from .tag_views import TagAccessError
 from .faults import Fault, Reaction
 from .jobs import Job, JobKind, JobState
 from .runtime import RUN, STOP, Controller, ControllerStopped, ProgramErrorWarning, RunTimeout

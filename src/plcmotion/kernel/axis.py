@@ -10,21 +10,21 @@ import math
 from typing import TYPE_CHECKING, Any, Mapping
 
 from . import faults as F
-from . import parameters as P
+from . import schema as P
 from .family import PULSE_SLICE_TIME
 from .faults import Fault, Reaction
 from .jobs import MOTION_KINDS, POSITIONING_KINDS, Job, JobKind, JobState
 from .axis_queue import BufferMode, axis_queue
 from .motion import DirectionFault, MotionPlanner, Plan, limits, modulo_target, wrap
 from .profiles import Planner, PlanningError, Profile, velocity_reach
-from .config import ConfigMixin
+from .parameter_store import ParameterStore
 from .axis_config import AxisConfig
 from ..drives.spec import ActuatorKind
 from .fault_injection import FaultInjectionMixin
 from .homing import HomingMixin
 from .switches import SwitchesMixin
 from .table_run import TableMixin
-from .tags import AxisTagsMixin
+from .tag_views import TagViews
 
 if TYPE_CHECKING:  # pragma: no cover
     from .runtime import Controller
@@ -47,22 +47,18 @@ class ConfigurationError(ValueError):
         super().__init__("\n".join(lines))
 
 
-class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMixin, TableMixin, AxisTagsMixin):
+class PositioningAxis(FaultInjectionMixin, HomingMixin, SwitchesMixin, TableMixin, TagViews):
     """Positioning axis technology object (TO_PositioningAxis)."""
 
-    #: how this kind of technology object names and checks its configuration tags
-    schema: P.AxisSchema = P.S7_1200
+    #: how this kind of technology object names and checks its configuration tags (the family's class says)
+    schema: P.AxisSchema
 
     def __init__(self, ctl: "Controller", name: str, cfg: Mapping[str, Any], *, db_number: int | None = None):
         self.ctl = ctl
         self.name = name
         self.db_number = db_number if db_number is not None else ctl._next_db_number()
-        self.cfg: dict[str, Any] = dict(cfg)          # tag values (work memory)
-        self.load_cfg: dict[str, Any] = dict(cfg)     # start values (load memory), used by a restart
-        self.ueff: dict[str, Any]                     # tag values in effect
-        self.eff: dict[str, Any]                      # kernel parameters in effect
-        self.config: AxisConfig                       # the same, typed: what the kernel reads
-        self._make_effective(dict(cfg))
+        self.config: AxisConfig                       # the tag values in effect, typed: what the kernel reads
+        self.parameters = ParameterStore(self, self.schema, cfg)     # the family's tags: written, in effect
         spec = self.config.drive
         self.pto = spec.actuator is ActuatorKind.PULSE
         self.sim = spec.actuator is ActuatorKind.IDEAL
@@ -84,7 +80,6 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
         self.stop_mode = 0
         self.busy_commands: set[int] = set()          # id() of instructions with Busy = TRUE
         self.max_commands = MAX_COMMANDS_PTO if self.pto else MAX_COMMANDS_SERVO
-        self._dirty: set[str] = set()
         self._after_stop: str | None = None           # "disable" while a disabling stop runs
         self._pm_job: Job | None = None               # job waiting for positioning monitoring
         self._plan: Plan | None = None
@@ -117,6 +112,37 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
         if not self.sim:
             ctl.plant.wire_axis(spec.plant, self.drive, t)
         self._start_profile(Planner.hold(t, float(b.sp_p[i])))
+
+    # ------------------------------------------------------------------------------------------------
+    # configuration tags: the parameter store (``self.parameters``) under the names the instructions use
+    @property
+    def cfg(self) -> dict[str, Any]:
+        """Tag values as written (work memory)."""
+        return self.parameters.values
+
+    @property
+    def load_cfg(self) -> dict[str, Any]:
+        """Start values (load memory), used by a restart."""
+        return self.parameters.start
+
+    @property
+    def eff(self) -> dict[str, Any]:
+        """Tag values in effect (the family's names)."""
+        return self.parameters.effective
+
+    ueff = eff
+
+    def _apply_dirty(self, moment: str) -> Fault | None:
+        return self.parameters.apply(moment)
+
+    def _config_fault(self, apply: bool = False) -> Fault | None:
+        return self.parameters.config_fault(apply)
+
+    def tag_access(self, path: str) -> str:
+        return self.parameters.access(path)
+
+    def write_tag(self, path: str, value: Any, *, via_write_param: bool = False) -> None:
+        self.parameters.write(path, value, via_write_param=via_write_param)
 
     # ------------------------------------------------------------------------------------------------
     # small helpers
@@ -563,9 +589,7 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
         if self.state != DISABLED:
             self._remove_enable(t, by_power=True)
         self.power_owner = None
-        self.cfg = dict(self.load_cfg)
-        self._make_effective(dict(self.load_cfg))
-        self._dirty.clear()
+        self.parameters.restart()
         self.alarms.clear()
         self.busy_commands.clear()
         absolute = self.absolute_encoder()

@@ -12,20 +12,16 @@ configuration becomes effective (creation, the moment a written tag takes effect
 constant until the next such moment: an axis keeps it in ``axis.config`` beside the kernel parameters it
 was built from.
 
-:func:`axis_config` is the one place that knows which tags of the kernel's parameter set (named like the
-S7-1200 technology data block, S7-1200 Motion Control V6 §12.9, with the S7-1500 extensions the S7-1500
-schema maps onto it) give which value; a family with its own schema will produce an ``AxisConfig``
-directly later.
+Each family builds it from its own tags (its schema's builder, e.g. ``s7_1200.technology.builder``):
+the kernel knows no tag path.
 """
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from types import MappingProxyType
 from typing import Any, Mapping
 
 from ..drives.spec import DriveSpec
-from .drive_config import drive_spec
 
 
 @dataclass(frozen=True, slots=True)
@@ -221,127 +217,3 @@ class AxisConfig:
 
     def tag_name(self, field: str) -> str:
         return self.tag_names.get(field, field)
-
-
-# ----------------------------------------------------------------------------------------------------------
-# the builder: the one place that knows the kernel parameters' tag names
-
-_S = "Sensor[1]"
-#: Units.LengthUnit (S7-1200 V6 §12.9.7): unit codes
-_LENGTH_UNITS = {-1: "pulse", 1005: "°", 1010: "m", 1013: "mm", 1018: "ft", 1019: "in"}
-#: S7-1200 V6 §5.4.4.4: a pulse drive plans without jerk limit below 0.004 pulses/s^3, a drive with
-#: position control at and below 1e-9
-_PTO_JERK_ENABLE = 4.0e-3
-_SERVO_JERK_ENABLE = 1.0e-9
-
-_TAG_NAMES = MappingProxyType({
-    "homing.approach_velocity": "Homing.ApproachVelocity",
-    "homing.referencing_velocity": "Homing.ReferencingVelocity",
-})
-
-
-def _jerk(p: Mapping[str, Any], drive: DriveSpec) -> float:
-    jerk = p["DynamicDefaults.Jerk"]
-    if p["Actor.Type"] == 2:
-        return jerk if jerk >= _PTO_JERK_ENABLE * drive.pulse_length else math.inf
-    return jerk if jerk > _SERVO_JERK_ENABLE else math.inf
-
-
-def _homing_method(p: Mapping[str, Any], kind: str) -> HomingMethod:
-    k = f"{_S}.{kind}Homing"
-    return HomingMethod(mode=p[f"{k}.Mode"], input=p[f"{k}.DigitalInputAddress"], active_high=p[f"{k}.SwitchLevel"],
-                        upper_side=p[f"{k}.SideInput"], home_offset=p.get(f"{k}.HomePositionOffset", 0.0))
-
-
-def modulo_config(p: Mapping[str, Any]) -> Modulo:
-    return Modulo(enabled=p["Modulo.Enable"], start=p["Modulo.StartValue"], length=p["Modulo.Length"])
-
-
-def extrapolation_config(p: Mapping[str, Any]) -> Extrapolation | None:
-    """The leading value extrapolation (S7-1500T V5 §3.3.6), None for a source without one."""
-    if "Extrapolation.PositionFilter.T1" not in p:
-        return None
-    return Extrapolation(
-        position_filter_t1=p["Extrapolation.PositionFilter.T1"],
-        position_filter_t2=p["Extrapolation.PositionFilter.T2"],
-        velocity_filter_t1=p["Extrapolation.VelocityFilter.T1"],
-        velocity_filter_t2=p["Extrapolation.VelocityFilter.T2"],
-        velocity_tolerance=p["Extrapolation.VelocityTolerance.Range"],
-        hysteresis=p["Extrapolation.Hysteresis.Value"],
-        following_axis_time=p["Extrapolation.FollowingAxisDependentTime"],
-        include_leading_axis_time=p["Extrapolation.Settings.SystemDefinedExtrapolation"] == 1,
-        differentiated_velocity=p["Extrapolation.Settings.ExtrapolatedVelocityMode"] == 1,
-    )
-
-
-def leading_value_output_config(p: Mapping[str, Any]) -> LeadingValueOutput:
-    return LeadingValueOutput(
-        enabled=bool(p.get("CrossPlcSynchronousOperation.Interface[1].EnableLeadingValueOutput")),
-        local_delay_time=p.get("CrossPlcSynchronousOperation.LocalLeadingValueDelayTime", 0.0))
-
-
-def source_config(p: Mapping[str, Any]) -> LeadingValueSourceConfig:
-    """The leading value part of a configuration (an encoder that is a leading value source)."""
-    return LeadingValueSourceConfig(modulo=modulo_config(p), extrapolation=extrapolation_config(p),
-                                    leading_value_output=leading_value_output_config(p))
-
-
-def axis_config(p: Mapping[str, Any]) -> AxisConfig:
-    """The configuration of an axis with kernel parameters ``p`` (valid values)."""
-    drive = drive_spec(p)
-    return AxisConfig(
-        units=Units(length=_LENGTH_UNITS.get(p["Units.LengthUnit"], str(p["Units.LengthUnit"]))),
-        modulo=modulo_config(p),
-        limits=DynamicLimits(
-            max_velocity=p["DynamicLimits.MaxVelocity"],
-            start_stop_velocity=p["DynamicLimits.MinVelocity"],
-            velocity=p.get("DynamicLimits.Velocity"),
-            max_acceleration=p.get("DynamicLimits.MaxAcceleration"),
-            max_deceleration=p.get("DynamicLimits.MaxDeceleration"),
-            max_jerk=p.get("DynamicLimits.MaxJerk")),
-        defaults=DynamicDefaults(
-            acceleration=p["DynamicDefaults.Acceleration"],
-            deceleration=p["DynamicDefaults.Deceleration"],
-            emergency_deceleration=p["DynamicDefaults.EmergencyDeceleration"],
-            jerk=_jerk(p, drive),
-            velocity_override=p.get("Override.Velocity")),
-        software_limits=SoftwareLimits(
-            enabled=p["PositionLimits_SW.Active"],
-            minimum=p["PositionLimits_SW.MinPosition"],
-            maximum=p["PositionLimits_SW.MaxPosition"]),
-        hardware_limits=HardwareLimits(
-            enabled=p["PositionLimits_HW.Active"],
-            min_input=p["PositionLimits_HW.MinSwitchAddress"],
-            max_input=p["PositionLimits_HW.MaxSwitchAddress"],
-            min_active_high=p["PositionLimits_HW.MinSwitchLevel"],
-            max_active_high=p["PositionLimits_HW.MaxSwitchLevel"]),
-        homing=Homing(
-            approach_positive=p["Homing.ApproachDirection"],
-            approach_velocity=p["Homing.ApproachVelocity"],
-            referencing_velocity=p["Homing.ReferencingVelocity"],
-            auto_reversal=p["Homing.AutoReversal"],
-            active=_homing_method(p, "Active"),
-            passive=_homing_method(p, "Passive")),
-        position_control=PositionControl(kv=p["PositionControl.Kv"], precontrol=p["PositionControl.Kpc"]),
-        following_error=FollowingErrorMonitoring(
-            enabled=p["FollowingError.EnableMonitoring"],
-            min_value=p["FollowingError.MinValue"],
-            max_value=p["FollowingError.MaxValue"],
-            min_velocity=p["FollowingError.MinVelocity"],
-            warning_level=p.get("FollowingError.WarningLevel")),
-        positioning=PositioningMonitoring(
-            tolerance_time=p["PositioningMonitoring.ToleranceTime"],
-            min_dwell_time=p["PositioningMonitoring.MinDwellTime"],
-            window=p["PositioningMonitoring.Window"]),
-        standstill=StandstillMonitoring(
-            velocity_threshold=p["StandstillSignal.VelocityThreshold"],
-            min_dwell_time=p["StandstillSignal.MinDwellTime"]),
-        signals=DriveSignals(enable_output=p["Actor.Interface.EnableDriveOutput"] or "",
-                             ready_input=p["Actor.Interface.DriveReadyInput"] or ""),
-        pulse_output=PulseOutput(generator=p["Actor.Interface.PTO"], direction_mode=p["Actor.DirectionMode"],
-                                 slice_time=p["Actor.PTOSliceTime"] / 1000.0),
-        drive=drive,
-        extrapolation=extrapolation_config(p),
-        leading_value_output=leading_value_output_config(p),
-        tag_names=_TAG_NAMES,
-    )

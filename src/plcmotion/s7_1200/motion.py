@@ -25,11 +25,11 @@ def check_velocity(axis: PositioningAxis, value: Any, *, negative_ok: bool = Fal
     if v < 0 and not negative_ok:
         raise InstructionError(E.VELOCITY, E.BELOW_ZERO)
     speed = abs(v)
-    if speed > axis.eff["DynamicLimits.MaxVelocity"] * (1 + 1e-12):
+    if speed > axis.config.limits.max_velocity * (1 + 1e-12):
         raise InstructionError(E.VELOCITY, E.ABOVE_MAX_VELOCITY)
     if speed == 0.0 and zero_ok:
         return v
-    if speed < axis.eff["DynamicLimits.MinVelocity"] * (1 - 1e-12):
+    if speed < axis.config.limits.start_stop_velocity * (1 - 1e-12):
         raise InstructionError(E.VELOCITY, E.BELOW_START_STOP)
     if speed == 0.0:
         # a servo axis has start/stop velocity 0: a positioning at zero velocity would never arrive
@@ -56,7 +56,7 @@ class MC_MoveAbsolute(ExecuteInstruction):  # noqa: N801
 
     def _start(self, axis: PositioningAxis) -> Job:
         position = check_position(self.Position, E.POSITION)
-        modulo = axis.eff["Modulo.Enable"] and not axis.pto
+        modulo = axis.config.modulo.enabled and not axis.pto
         direction = as_int(self.Direction)
         if modulo and direction not in (0, 1, 2, 3):
             raise InstructionError(E.DIRECTION, E.INVALID_SELECTION)
@@ -147,7 +147,7 @@ class MC_MoveJog(_S71200, fb.JogInstruction):  # noqa: N801
                "ErrorInfo": 0}
 
     def _jog_velocity(self, axis: PositioningAxis) -> float:
-        return check_velocity(axis, self.Velocity, zero_ok=axis.eff["DynamicLimits.MinVelocity"] == 0.0)
+        return check_velocity(axis, self.Velocity, zero_ok=axis.config.limits.start_stop_velocity == 0.0)
 
     def _jog_both(self) -> tuple[int, int]:
         return E.JOG_BOTH, 0x0001

@@ -3,7 +3,7 @@
 VARIANT pointers
 ----------------
 ``Parameter`` is a reference to one tag of a positioning axis, ``axis.ref("StatusBits.Enable")`` (a
-:class:`~plcmotion.kernel.tags.TagRef`, what ``"Axis_1".StatusBits.Enable`` is at a VARIANT input in a
+:class:`~plcmotion.kernel.tag_views.TagRef`, what ``"Axis_1".StatusBits.Enable`` is at a VARIANT input in a
 PLC program).  ``Value`` stands for the user-program tag the other pointer designates: a typed variable
 of :mod:`plcmotion.s7_1200.variables` (``Bool``, ``Int``, ``DInt``, ``UDInt``, ``Real``); MC_WriteParam
 also takes a plain ``bool`` (Bool), ``int`` (DInt) or ``float`` (Real).
@@ -70,10 +70,9 @@ from typing import Any
 import numpy as np
 
 from ..kernel.axis import PositioningAxis
-from ..kernel.config import TagAccessError
 from ..kernel.jobs import Job, JobKind, JobState
-from ..kernel.parameters import E12
-from ..kernel.tags import TagRef
+from ..kernel.schema import E12
+from ..kernel.tag_views import TagAccessError, TagRef
 from . import errors as E
 from ..fb import ProgramError, as_number
 from .base import ExecuteInstruction, Instruction, InstructionError, as_bool

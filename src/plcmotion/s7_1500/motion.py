@@ -76,7 +76,7 @@ class MC_MoveAbsolute(ExecuteInstruction):  # noqa: N801
 
     def _start(self, axis: Any) -> Job:
         position = real("Position", self.Position)
-        direction = integer("Direction", self.Direction, (1, 2, 3)) if axis.eff["Modulo.Enable"] else 1
+        direction = integer("Direction", self.Direction, (1, 2, 3)) if axis.config.modulo.enabled else 1
         dyn = dynamics(axis, self)
         job = _job(JobKind.ABSOLUTE, self, dyn, position=position, direction=direction)
         axis.submit(job)

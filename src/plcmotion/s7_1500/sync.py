@@ -102,7 +102,7 @@ class _PositionedSync(_SyncInstruction):
         # not read
         master = getattr(self, "Master", None)
         lv_modulo = getattr(master, "lv_modulo", None)
-        modulo = bool(slave.eff["Modulo.Enable"]) or (callable(lv_modulo) and lv_modulo() is not None)
+        modulo = slave.config.modulo.enabled or (callable(lv_modulo) and lv_modulo() is not None)
         x["sync_direction"] = integer("SyncDirection", self.SyncDirection, (1, 2, 3)) if modulo else 3
         return x
 

@@ -1,16 +1,16 @@
 """S7-1200 Motion Control technology objects (V6/V7) and their registration as the family "S7-1200".
 
-The positioning axis and the command table are still the kernel's classes (their S7-1200 tag names and the
-command table runner move here as the axis is split into components); this package says how a controller of
-this family creates them and which version-dependent rules apply.  ``plcmotion`` imports it on import.
+The positioning axis is the kernel's axis with the S7-1200 schema and status tags (``axis``, ``parameters``,
+``builder``, ``tags``); the command table is still the kernel's class.  This package says how a controller
+of this family creates them and which version-dependent rules apply.  ``plcmotion`` imports it on import.
 """
 from __future__ import annotations
 
 from typing import Any, Mapping
 
 from ...kernel import family as K
-from ...kernel.axis import PositioningAxis
 from ...kernel.command_table import CommandTable
+from .axis import PositioningAxis
 
 
 def _rules(version: int) -> frozenset[str]:

@@ -29,6 +29,7 @@ _JERK_ENABLE = 1.0e-9
 _TAG_NAMES = MappingProxyType({
     "homing.approach_velocity": "Homing.ApproachVelocity",
     "homing.referencing_velocity": "Homing.ReferencingVelocity",
+    "software_limits.minimum": "PositionLimits_SW.MinPosition",
 })
 
 

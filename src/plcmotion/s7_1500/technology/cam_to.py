@@ -323,7 +323,7 @@ class CamTO:
             self._set_setting(path.split(".")[1], value)
             return
         if path in self._TAGS:
-            from ...kernel.config import TagAccessError
+            from ...kernel.tag_views import TagAccessError
             raise TagAccessError(f"{self.name}.{path} is read-only")
         self._resolve(path)(value)
 

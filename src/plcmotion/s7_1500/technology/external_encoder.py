@@ -19,14 +19,14 @@ import numpy as np
 
 from ...kernel import faults as F
 from .builder import source_config
-from ...kernel.config import TagAccessError
+from ...kernel.tag_views import TagAccessError
 from ...kernel.fault_injection import checked_real
 from ...kernel.faults import Fault, Reaction
 from ...kernel.jobs import Job, JobState
 from ...kernel.leading import LeadingValueMixin
 from ...kernel.schema import E12, P, R, REAL, AxisSchema, Param
 from .parameters import _PARAMS_1500, canonical
-from ...kernel.tags import AxisTagsMixin
+from ...kernel.tag_views import TagViews as AxisTagsMixin
 from .tags import ALARM_NUMBERS, REACTION_CODES, ErrorWord, WarningWord
 from ...kernel.words import pack, word_type
 

@@ -25,11 +25,11 @@ from collections import deque
 from typing import TYPE_CHECKING, Any, Callable, Mapping
 
 from ...kernel import faults as F
-from ...kernel.config import TagAccessError
+from ...kernel.tag_views import TagAccessError
 from ...kernel.faults import Fault, Reaction
 from ...kernel.leading_value import LeadingValueSample, LeadingValueSource
 from ...kernel.schema import E12, REAL, RW, AxisSchema, Param
-from ...kernel.tags import AxisTagsMixin
+from ...kernel.tag_views import TagViews as AxisTagsMixin
 from ...kernel.words import pack, word_type
 
 if TYPE_CHECKING:  # pragma: no cover

@@ -1,6 +1,6 @@
 """Status tags of the S7-1500 positioning and synchronous axis (S7-1500T V5 §A.1).
 
-Computed when read from the kernel state, like the S7-1200 tags (nothing is copied per cycle).  The
+Computed when read from the kernel state (``kernel.axis_status``, the jobs, the alarms) (nothing is copied per cycle).  The
 status words are DWORDs whose bits read as ``axis.StatusWord.X22`` or by name
 (``axis.StatusWord.Synchronous``).
 
@@ -17,8 +17,8 @@ import numpy as np
 from ...kernel import faults as F
 from ...kernel.faults import Fault, Reaction
 from ...kernel.jobs import JobKind
-from ...kernel.tags import DYNAMIC as _DYN1200
-from ...kernel.tags import communication_fault
+from ...kernel import axis_status as S
+from ...kernel.axis_status import communication_fault
 from ...kernel.words import pack, word_type
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -114,7 +114,6 @@ def _fe_warning(ax: "Axis") -> bool:
 
 
 def status_word(ax: "Axis") -> int:
-    d = _DYN1200
     kind = _kind(ax)
     sync = getattr(ax, "coupling", None)
     enabled = ax.state in ("enabled", "disabling")
@@ -123,13 +122,13 @@ def status_word(ax: "Axis") -> int:
     stop = ax.stop_job
     moving_job = kind is not None or ax.superimposed_active or sync is not None or (
         getattr(ax, "waiting", None) is not None) or (stop is not None and stop.busy)
-    accelerating, decelerating = d["StatusBits.Accelerating"](ax), d["StatusBits.Decelerating"](ax)
+    accelerating, decelerating = S.accelerating(ax), S.decelerating(ax)
     bits = {
         0: enabled,
         1: bool(ax.alarms),
         5: ax.homed,
         6: not moving_job,
-        7: d["StatusBits.StandStill"](ax),
+        7: S.standstill(ax),
         8: kind in (JobKind.ABSOLUTE, JobKind.RELATIVE),
         9: kind == JobKind.JOG,
         10: kind == JobKind.VELOCITY or ax.holding_zero_velocity,
@@ -138,8 +137,8 @@ def status_word(ax: "Axis") -> int:
         12: not (accelerating or decelerating),
         13: accelerating,
         14: decelerating,
-        15: d["StatusBits.SWLimitMinActive"](ax),
-        16: d["StatusBits.SWLimitMaxActive"](ax),
+        15: S.software_limit_active(ax, "min"),
+        16: S.software_limit_active(ax, "max"),
         17: ax.hw_approached["min"],
         18: ax.hw_approached["max"],
         21: bool(sync is not None and getattr(ax, "synchronizing", False)),
@@ -232,11 +231,11 @@ def _setpoint_execution_time(ax: "Axis") -> float:
 
 
 DYNAMIC: dict[str, Callable[["Axis"], Any]] = {
-    "Position": _DYN1200["Position"],
-    "Velocity": _DYN1200["Velocity"],
-    "Acceleration": _DYN1200["Acceleration"],
-    "ActualPosition": _DYN1200["ActualPosition"],
-    "ActualVelocity": _DYN1200["ActualVelocity"],
+    "Position": S.position,
+    "Velocity": S.velocity,
+    "Acceleration": S.acceleration,
+    "ActualPosition": S.actual_position,
+    "ActualVelocity": S.actual_velocity,
     "ActualAcceleration": lambda ax: float(_b(ax).sp_a[ax.index]) if not ax.servo else ax.actual_acceleration(),
     "ActualSpeed": lambda ax: float(_b(ax).act_v[ax.index]) / ax.config.drive.length_per_revolution * 60.0
     if ax.servo else 0.0,
@@ -255,20 +254,20 @@ DYNAMIC: dict[str, Callable[["Axis"], Any]] = {
     "StatusPositioning.TargetPositionModuloCycle": lambda ax: _modulo_cycle(ax, _target(ax)),
     "StatusPositioning.FollowingError": lambda ax: float(_b(ax).fe[ax.index]) if ax.servo else 0.0,
     "StatusPositioning.SetpointExecutionTime": _setpoint_execution_time,
-    "StatusDrive.InOperation": _DYN1200["StatusDrive.InOperation"],
-    "StatusDrive.CommunicationOK": _DYN1200["StatusDrive.CommunicationOK"],
+    "StatusDrive.InOperation": S.drive_in_operation,
+    "StatusDrive.CommunicationOK": S.drive_communication_ok,
     "StatusDrive.Disabled": lambda ax: ax.state == "disabled",
     "StatusDrive.Error": lambda ax: bool(_kinds(ax) & {F.DRIVE_ALARM, F.DRIVE_NOT_READY}),
     "StatusDrive.AdaptionState": lambda ax: 3,
     "StatusServo.BalancedPosition": lambda ax: float(_b(ax).sp_p[ax.index]),
     "StatusServo.ControlDifference": lambda ax: float(_b(ax).fe[ax.index]) if ax.servo else 0.0,
     "StatusSensor[1].State": lambda ax: 2 if (ax.sim or ax.sensor_valid) else 0,
-    "StatusSensor[1].CommunicationOK": _DYN1200["StatusSensor.CommunicationOK"],
+    "StatusSensor[1].CommunicationOK": S.encoder_communication_ok,
     "StatusSensor[1].Error": lambda ax: F.ENCODER in _kinds(ax),
     "StatusSensor[1].AbsEncoderOffset": lambda ax: ax.abs_offset,
     "StatusSensor[1].Control": lambda ax: True,
-    "StatusSensor[1].Position": _DYN1200["ActualPosition"],
-    "StatusSensor[1].Velocity": _DYN1200["ActualVelocity"],
+    "StatusSensor[1].Position": S.actual_position,
+    "StatusSensor[1].Velocity": S.actual_velocity,
     "StatusSensor[1].AdaptionState": lambda ax: 3,
     "StatusSensor[1].ModuloCycle": lambda ax: _modulo_cycle(ax, float(_b(ax).act_p[ax.index])),
 }

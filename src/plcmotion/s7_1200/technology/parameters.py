@@ -13,10 +13,9 @@ from __future__ import annotations
 
 from typing import Any, Mapping
 
-from .axis_config import axis_config
-from .plant_schema import PLANT_PARAMS
-from .schema import (ADDR, BOOL, E12, INT, MAX_DEPTH, P, R, REAL, RW, WP, AxisSchema, Issue, Param,  # noqa: F401
-                     _brief, _check, flatten, flatten_checked, groups)
+from ...kernel.plant_schema import PLANT_PARAMS
+from ...kernel.schema import ADDR, BOOL, E12, INT, P, R, REAL, RW, WP, AxisSchema, Issue, Param, _check
+from .builder import axis_config
 
 #: tags whose WP access the manual grants only to PTO axes (read-only on PROFIdrive/analog axes)
 PTO_ONLY_WP = frozenset({"Simulation.Mode"})
@@ -329,8 +328,15 @@ def validate(values: Mapping[str, Any], base: Mapping[str, Any] | None = None) -
     return cfg, issues
 
 
+#: §12.9 legends: when a written tag takes effect on a PTO axis (PROFIdrive/analog: every code at the next
+#: servo cycle): 1, 2 at enable (1 also at disable), 5 at the next command, 6 when a jog stops, 7 at the
+#: start of passive and 8 of active homing
+PTO_MOMENTS = {"enable": {1, 2}, "command": {5}, "jog_stop": {6}, "passive_homing": {7}, "active_homing": {8},
+               "disable": {1}}
+
+
 class _S71200Schema(AxisSchema):
-    """The kernel's own parameters: the S7-1200 positioning axis (validation with its PTO rules)."""
+    """The S7-1200 positioning axis (validation with its PTO rules, Real data types)."""
 
     def validate(self, values, base=None):
         return validate(values, base)
@@ -343,4 +349,5 @@ class _S71200Schema(AxisSchema):
 
 
 S7_1200 = _S71200Schema("positioning axis", _PARAMS, rules=rule_issues, canonical=canonical, int_types=_INT_TYPES,
-                         build=axis_config)
+                         real_type="Real", build=axis_config, pulse_moments=PTO_MOMENTS,
+                         pulse_only_write_param=PTO_ONLY_WP)

@@ -214,7 +214,6 @@ ALLOWED = {
     "parameters.py": "the S7-1200 configuration schema, still in the kernel until the family move",
     "tags.py": "the S7-1200 tag views (StatusBits, ErrorBits, dynamic tags), a family's presentation",
     "config.py": "tag writes and their effectiveness (a tag-access layer of the S7-1200 schema)",
-    "command_table.py": "the S7-1200 command table, still in the kernel until the family move",
 }
 
 

@@ -1,8 +1,9 @@
 """S7-1200 Motion Control technology objects (V6/V7) and their registration as the family "S7-1200".
 
-The positioning axis and the command table are still the kernel's classes (their S7-1200 tag names and the
-command table runner move here as the axis is split into components); this package says how a controller of
-this family creates them and which version-dependent rules apply.  ``plcmotion`` imports it on import.
+The positioning axis is still the kernel's class (its S7-1200 tag names move here as the axis is split
+into components); this package says how a controller of this family creates it and which version-dependent
+rules apply, and holds the family's own objects: the command table (``command_table``) and the component
+that runs it on an axis (``table_runner``; ``axis.table_runner``).  ``plcmotion`` imports it on import.
 """
 from __future__ import annotations
 
@@ -10,7 +11,8 @@ from typing import Any, Mapping
 
 from ...kernel import family as K
 from ...kernel.axis import PositioningAxis
-from ...kernel.command_table import CommandTable
+from .command_table import CommandTable
+from .table_runner import TableRunner
 
 
 def _rules(version: int) -> frozenset[str]:
@@ -21,6 +23,7 @@ def _rules(version: int) -> frozenset[str]:
 
 def _positioning_axis(ctl: Any, name: str, flat: Mapping[str, Any], where: str) -> PositioningAxis:
     axis = ctl.new_axis(PositioningAxis, name, flat, where)
+    axis.table_runner = axis.attach_runner(TableRunner(axis))     # MC_CommandTable (§11.1.9)
     if ctl.technology_version >= 7:
         axis._use_v7_tags()              # V7 status tags: StatusSensor[1], ErrorBits.AdaptionError
     return axis
@@ -34,4 +37,4 @@ S7_1200 = K.register(K.Family("S7-1200", versions=(6, 7), default_version=6,
                               factories={K.POSITIONING_AXIS: _positioning_axis, K.COMMAND_TABLE: _command_table},
                               rules=_rules))
 
-__all__ = ["S7_1200"]
+__all__ = ["S7_1200", "CommandTable", "TableRunner"]

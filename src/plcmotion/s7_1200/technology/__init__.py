@@ -37,4 +37,4 @@ S7_1200 = K.register(K.Family("S7-1200", versions=(6, 7), default_version=6,
                               factories={K.POSITIONING_AXIS: _positioning_axis, K.COMMAND_TABLE: _command_table},
                               rules=_rules))
 
-__all__ = ["S7_1200", "CommandTable", "TableRunner"]
+__all__ = ["S7_1200"]

@@ -443,7 +443,7 @@ class _Loader:
             if not isinstance(steps, list) or len(steps) > 32:
                 self.bad(f"{key}.Command", steps, "a list of at most 32 steps")
                 continue
-            from .kernel.command_table import step_problems
+            from .s7_1200.technology.command_table import step_problems
             rows = []
             ok = True
             for n, step in enumerate(steps, start=1):

@@ -213,7 +213,6 @@ TAG_PATH = re.compile(r"^[A-Z][A-Za-z0-9_]*(\[\d+\])?(\.[A-Z][A-Za-z0-9_]*(\[\d+
 
 #: kernel modules that may still name tags, and why
 ALLOWED = {
-    "command_table.py": "the S7-1200 command table, still in the kernel until the family move",
     "plant_schema.py": "the simulated machine's parameters (Plant.*): no family's tags, every family's schema has them",
 }
 

@@ -788,3 +788,17 @@ def test_11_1_1_power_disable_aborts_table():
     assert outs[-1]["CommandAborted"] and not outs[-1]["Busy"]
     b.scan_until(lambda: not b.power.Status and not b.axis.StatusBits.Enable, 200)
     assert b.axis.Velocity == 0.0 and not b.axis.StatusBits.CommandTableActive
+
+
+def test_command_table_field_beyond_lreal_gives_16_8701_not_overflow_s12_8():
+    """A Python int beyond the LREAL range in a command table REAL field is stored as an invalid value:
+    the step gives the manual's configuration error 16#8701 (ErrorInfo 16#0002), it never raises."""
+    ctl = Controller()
+    axis = ctl.add_positioning_axis("A", {"DynamicLimits": {"MaxVelocity": 100.0}})     # PTO (§11.1.9)
+    table = ctl.add_command_table("T", [{"Type": 5, "Position": 10**400, "Velocity": 10.0}])
+    table.Command[1].Velocity = -10**400             # a runtime write neither
+    power, ct = MC_Power(Axis=axis, Enable=True), MC_CommandTable()
+    ctl.run_until(lambda: power().Status, 1.0)
+    ct(Axis=axis, CommandTable=table, Execute=True, StartStep=1, EndStep=1)
+    ctl.run_until(lambda: ct().Error, 1.0)
+    assert (ct.ErrorID, ct.ErrorInfo) == (0x8701, 0x0002)

@@ -22,8 +22,8 @@ from .axis_config import AxisConfig
 from ..drives.spec import ActuatorKind
 from .fault_injection import FaultInjectionMixin
 from .homing import HomingMixin
+from .job_runner import JobRunner
 from .switches import SwitchesMixin
-from .table_run import TableMixin
 from .tag_views import TagViews
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -47,7 +47,7 @@ class ConfigurationError(ValueError):
         super().__init__("\n".join(lines))
 
 
-class PositioningAxis(FaultInjectionMixin, HomingMixin, SwitchesMixin, TableMixin, TagViews):
+class PositioningAxis(FaultInjectionMixin, HomingMixin, SwitchesMixin, TagViews):
     """Positioning axis technology object (TO_PositioningAxis)."""
 
     #: how this kind of technology object names and checks its configuration tags (the family's class says)
@@ -75,7 +75,7 @@ class PositioningAxis(FaultInjectionMixin, HomingMixin, SwitchesMixin, TableMixi
         self.job: Job | None = None                   # active motion job
         self.queue = axis_queue(self)                 # jobs waiting behind it (PLCopen BufferMode)
         self.passive_home: Job | None = None
-        self.table_job: Job | None = None             # MC_CommandTable job (also before it takes over)
+        self.runners: dict[JobKind, JobRunner] = {}   # components running kinds of jobs of a family
         self.power_owner: Any = None
         self.stop_mode = 0
         self.busy_commands: set[int] = set()          # id() of instructions with Busy = TRUE
@@ -287,9 +287,10 @@ class PositioningAxis(FaultInjectionMixin, HomingMixin, SwitchesMixin, TableMixi
         self._schedule()
 
     def _on_timer(self, name: str, t: float) -> None:
-        if name == "table":
-            self._table_timer(t)
-            return
+        for runner in self.runners.values():
+            if name == runner.timer:
+                runner.on_timer(t)
+                return
         if name == "ready" and self.state == ENABLING:
             if self.drive.ready(t) and self.drive_ready_signal():
                 self._become_enabled(t)
@@ -315,8 +316,9 @@ class PositioningAxis(FaultInjectionMixin, HomingMixin, SwitchesMixin, TableMixi
         if job is not None and job.busy and job.kind == JobKind.HOME_ACTIVE:
             self._homing_end(job, t)
             return
-        if job is not None and job.busy and job.kind == JobKind.TABLE and not (plan and plan.limit_side):
-            self._table_end(job, t)
+        runner = self.runners.get(job.kind) if job is not None and job.busy else None
+        if runner is not None and not (plan and plan.limit_side):
+            runner.on_profile_end(job, t)
             return
         if plan is not None and plan.override_hold:
             return                                 # positioning waits for the override to rise again
@@ -345,11 +347,24 @@ class PositioningAxis(FaultInjectionMixin, HomingMixin, SwitchesMixin, TableMixi
         job.finish(state, fault)
         if job is self.job:
             self.job = None
-        if job.kind == JobKind.TABLE:
-            self._table_release(job)
+        runner = self.runners.get(job.kind)
+        if runner is not None:
+            runner.release(job)
         if self._pm_job is job:
             self._stop_positioning_monitor()
         self.queue.finished(job)
+
+    def attach_runner(self, runner: JobRunner) -> JobRunner:
+        """A family's component runs the jobs of ``runner.kind`` on this axis (``kernel.job_runner``)."""
+        self.runners[runner.kind] = runner
+        return runner
+
+    def _end_runner_jobs(self, state: JobState, t: float, fault: Fault | None = None) -> None:
+        """End the runners' jobs, also those that have not taken the axis over yet."""
+        for runner in self.runners.values():
+            job = runner.job
+            if job is not None and job.busy:
+                self._finish_job(job, state, t, fault)
 
     # ------------------------------------------------------------------------------------------------
     # positioning monitoring (§5.4.4.6), following error, from the vectorised monitors
@@ -506,9 +521,10 @@ class PositioningAxis(FaultInjectionMixin, HomingMixin, SwitchesMixin, TableMixi
             self.homed = False                     # §2.5: disabling a PTO axis resets "homed"
 
     def _abort_all(self, t: float) -> None:
-        for job in (self.job, self.passive_home, self.table_job):
+        for job in (self.job, self.passive_home):
             if job is not None and job.busy:
                 self._finish_job(job, JobState.ABORTED, t)
+        self._end_runner_jobs(JobState.ABORTED, t)
         self.job = None
         self.passive_home = None
 
@@ -521,9 +537,8 @@ class PositioningAxis(FaultInjectionMixin, HomingMixin, SwitchesMixin, TableMixi
         victim = job if job is not None else self.job
         if victim is not None and victim.busy:
             self._finish_job(victim, JobState.ERROR, t, fault)
-        waiting = self.table_job
-        if waiting is not None and waiting.busy and fault.reaction != Reaction.NONE:
-            self._finish_job(waiting, JobState.ERROR, t, fault)
+        if fault.reaction != Reaction.NONE:
+            self._end_runner_jobs(JobState.ERROR, t, fault)
         if fault.reaction in (Reaction.REMOVE_ENABLE, Reaction.EMERGENCY) and self.passive_home is not None:
             self._finish_job(self.passive_home, JobState.ERROR, t, fault)
             self.passive_home = None
@@ -667,9 +682,7 @@ class PositioningAxis(FaultInjectionMixin, HomingMixin, SwitchesMixin, TableMixi
         previous = self.job
         if previous is not None and previous.busy:
             self._finish_job(previous, JobState.ABORTED, t)
-        waiting = self.table_job
-        if waiting is not None and waiting.busy:
-            self._finish_job(waiting, JobState.ABORTED, t)     # a table that had not taken over yet
+        self._end_runner_jobs(JobState.ABORTED, t)            # a program that had not taken over yet
         self.holding_zero_velocity = False
         if job.kind == JobKind.HOME_ACTIVE and self.passive_home is not None:
             self._finish_job(self.passive_home, JobState.ABORTED, t)
@@ -696,7 +709,7 @@ class PositioningAxis(FaultInjectionMixin, HomingMixin, SwitchesMixin, TableMixi
 
     def _plan_job(self, job: Job, t: float, spec: Job | None = None, *, new_command: bool = True,
                   replan: bool = False) -> bool:
-        """Plan and start the motion of ``job`` (or of ``spec``, a command table step run by ``job``).
+        """Plan and start the motion of ``job`` (or of ``spec``, a step of ``job`` planned by a runner).
 
         A new command on a PTO axis starts at the next segment boundary (V7 PTOSliceTime).  Faults found
         while planning end ``job``.  Returns whether the motion started.
@@ -745,8 +758,8 @@ class PositioningAxis(FaultInjectionMixin, HomingMixin, SwitchesMixin, TableMixi
         """Re-plan the running motion from the current state (parameter change, coordinate shift)."""
         job = self.job
         t = self.now
-        if job is not None and job.busy and job.kind in (JobKind.HOME_ACTIVE, JobKind.TABLE):
-            return                                          # homing and tables plan their own steps
+        if job is not None and job.busy and (job.kind == JobKind.HOME_ACTIVE or job.kind in self.runners):
+            return                                          # homing and runners plan their own steps
         if job is not None and job.busy and job.kind in MOTION_KINDS and self._interpolating:
             self._plan_job(job, t, replan=True)
         elif self.sw_limits_effective() and self.state in (ENABLED, DISABLING):

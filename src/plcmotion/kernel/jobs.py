@@ -28,7 +28,7 @@ class JobKind(Enum):
     HOME_DIRECT = "home_direct"      # modes 0/1 (and absolute encoder adjustment 6/7)
     HOME_PASSIVE = "home_passive"    # mode 2
     HOME_ACTIVE = "home_active"      # mode 3
-    TABLE = "table"
+    TABLE = "table"                  # a table of motion steps, run by a runner (kernel.job_runner)
     RESET = "reset"                  # acknowledgement / restart (never moves the axis)
     HOME_CANCEL = "home_cancel"      # S7-1500 MC_Home Mode 9: cancel passive homing
     STOP = "stop"                    # S7-1500 MC_Stop: brake and keep the axis locked while Execute is TRUE

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from ..kernel.command_table import STEPS, CommandTable
+from .technology.command_table import STEPS, CommandTable
 from ..kernel.jobs import Job, JobKind
 from . import errors as E
 from .base import ExecuteInstruction, InstructionError, as_int
@@ -25,7 +25,8 @@ class MC_CommandTable(ExecuteInstruction):  # noqa: N801
                "ErrorInfo": 0, "CurrentStep": 0, "StepCode": 0}
 
     def _start(self, axis: Any) -> Job:
-        if not axis.pto:
+        runner = getattr(axis, "table_runner", None)
+        if not axis.pto or runner is None:
             raise InstructionError(E.AXIS, 0x001B)          # the command table needs a PTO axis (§11.1.9)
         table = self.CommandTable
         if not isinstance(table, CommandTable):
@@ -42,7 +43,7 @@ class MC_CommandTable(ExecuteInstruction):  # noqa: N801
         if start > end:
             raise InstructionError(START_STEP, 0x001D)
         job = Job(JobKind.TABLE, owner=self, extra={"table": table, "start": start, "end": end})
-        axis.start_table(job)
+        runner.start(job)
         return job
 
     def _running(self, execute: bool) -> None:

@@ -1,16 +1,18 @@
 """S7-1200 Motion Control technology objects (V6/V7) and their registration as the family "S7-1200".
 
 The positioning axis is the kernel's axis with the S7-1200 schema and status tags (``axis``, ``parameters``,
-``builder``, ``tags``); the command table is still the kernel's class.  This package says how a controller
-of this family creates them and which version-dependent rules apply.  ``plcmotion`` imports it on import.
+``builder``, ``tags``); the family's own objects are the command table (``command_table``) and the component
+that runs it on an axis (``table_runner``; ``axis.table_runner``).  This package says how a controller of this
+family creates them and which version-dependent rules apply.  ``plcmotion`` imports it on import.
 """
 from __future__ import annotations
 
 from typing import Any, Mapping
 
 from ...kernel import family as K
-from ...kernel.command_table import CommandTable
 from .axis import PositioningAxis
+from .command_table import CommandTable
+from .table_runner import TableRunner
 
 
 def _rules(version: int) -> frozenset[str]:
@@ -21,6 +23,7 @@ def _rules(version: int) -> frozenset[str]:
 
 def _positioning_axis(ctl: Any, name: str, flat: Mapping[str, Any], where: str) -> PositioningAxis:
     axis = ctl.new_axis(PositioningAxis, name, flat, where)
+    axis.table_runner = axis.attach_runner(TableRunner(axis))     # MC_CommandTable (§11.1.9)
     if ctl.technology_version >= 7:
         axis._use_v7_tags()              # V7 status tags: StatusSensor[1], ErrorBits.AdaptionError
     return axis

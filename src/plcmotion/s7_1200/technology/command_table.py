@@ -10,14 +10,10 @@ from __future__ import annotations
 import math
 import numbers
 import re
-from typing import TYPE_CHECKING, Any, Iterable, Mapping
+from typing import Any, Iterable, Mapping, Protocol
 
-from . import faults as F
-from .faults import Fault
-
-if TYPE_CHECKING:  # pragma: no cover
-    from .axis import PositioningAxis
-    from .runtime import Controller
+from ...kernel import faults as F
+from ...kernel.faults import Fault
 
 STEPS = 32
 EMPTY, HALT, RELATIVE, ABSOLUTE, VELOCITY, WAIT = 0, 2, 5, 6, 7, 151
@@ -30,6 +26,12 @@ _PATH = re.compile(r"^Command\[(\d+)\]\.(\w+)$")
 LIMIT = 1.0e12
 TINY = 1.0e-12
 MIN_DURATION, MAX_DURATION = 0.001, 64800.0
+
+
+class StepAxis(Protocol):
+    """What the check of a step reads from the axis that runs it: the tag values in effect."""
+
+    eff: Mapping[str, Any]
 
 
 def table_fault(field: str, reason: str, step: int) -> Fault:
@@ -94,7 +96,7 @@ class _Commands:
 class CommandTable:
     """Command table technology object (TO_CommandTable)."""
 
-    def __init__(self, ctl: "Controller", name: str, commands: Iterable[Mapping[str, Any]] = ()):
+    def __init__(self, ctl: Any, name: str, commands: Iterable[Mapping[str, Any]] = ()):
         self.ctl, self.name = ctl, name
         self.Command = _Commands()
         rows = list(commands)
@@ -133,7 +135,7 @@ class CommandTable:
         return int(m.group(1)), m.group(2)
 
     # --- checks when a step runs (§6.4.3.2, §12.8 16#8700-16#8704) ---------------------------------------
-    def check_step(self, n: int, axis: "PositioningAxis") -> Fault | None:
+    def check_step(self, n: int, axis: StepAxis) -> Fault | None:
         step = self.Command[n]
         kind = step.Type
         if kind not in TYPES:
@@ -174,7 +176,7 @@ def _check_position(x: float) -> str:
     return ""
 
 
-def _check_velocity(v: float, axis: "PositioningAxis", positive: bool) -> str:
+def _check_velocity(v: float, axis: StepAxis, positive: bool) -> str:
     if not math.isfinite(v) or (0.0 < abs(v) < TINY):
         return "format"
     if abs(v) > axis.eff["DynamicLimits.MaxVelocity"] * (1 + 1e-12):

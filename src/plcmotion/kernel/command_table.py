@@ -17,7 +17,7 @@ from .faults import Fault
 
 if TYPE_CHECKING:  # pragma: no cover
     from .axis import PositioningAxis
-    from .runtime import Controller
+    from .protocols import ServoHost as Controller
 
 STEPS = 32
 EMPTY, HALT, RELATIVE, ABSOLUTE, VELOCITY, WAIT = 0, 2, 5, 6, 7, 151

@@ -179,7 +179,7 @@ def _action(loader: "_Loader", ctl: "Controller", key: str, entry: dict, action:
             loader.bad(f"{key}.persistent", persistent, "true or false")
             return None
         try:
-            axis._expand(value, detail)
+            axis.fault_injection.expand(value, detail)
         except ValueError as exc:
             loader.note(f"{key}: {exc}")
             return None

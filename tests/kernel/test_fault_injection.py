@@ -424,7 +424,7 @@ def test_defect11_a_simulated_axis_has_no_device_to_fail(family, kind):
     sim = ctl.add_positioning_axis("Sim", {"Actor.Type": 1, "Simulation.Mode": 1})
     with pytest.raises(ValueError, match="simulated axis"):
         sim.inject_fault(kind)
-    assert not sim.alarms and not sim.faults
+    assert not sim.alarms and not sim.fault_injection.faults
     if family == "S7-1500":
         virtual = ctl.add_positioning_axis("Virtual", {"VirtualAxis.Mode": 1})
         with pytest.raises(ValueError, match="simulated axis"):
@@ -548,6 +548,6 @@ def test_defect11_fault_api_rejects_bad_arguments_at_the_call(call):
     with pytest.raises((TypeError, ValueError)) as info:
         call(ctl, axis)
     assert len(str(info.value)) < 200, "the message must stay readable (no 400-digit number)"
-    assert axis.faults == {}
+    assert axis.fault_injection.faults == {}
     ctl.run(0.05)
     assert ctl.mode == "RUN"

@@ -7,7 +7,7 @@ instruction hands it a job.  Behaviour follows S7-1200 Motion Control V6 (sectio
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any, Mapping
+from typing import Any, Mapping
 
 from . import faults as F
 from . import schema as P
@@ -20,14 +20,14 @@ from .profiles import Planner, PlanningError, Profile, velocity_reach
 from .parameter_store import ParameterStore
 from .axis_config import AxisConfig
 from ..drives.spec import ActuatorKind
-from .fault_injection import FaultInjectionMixin
+from .drive_io import DriveIO
+from .errors import ConfigurationError  # noqa: F401 - kernel.axis.ConfigurationError is public
+from .fault_injection import FaultInjection
 from .homing import HomingMixin
 from .job_runner import JobRunner
-from .switches import SwitchesMixin
+from .limit_switches import LimitSwitches
+from .protocols import ServoHost
 from .tag_views import TagViews
-
-if TYPE_CHECKING:  # pragma: no cover
-    from .runtime import Controller
 
 DISABLED, ENABLING, ENABLED, DISABLING = "disabled", "enabling", "enabled", "disabling"
 _EPS_T = 1e-9
@@ -36,24 +36,13 @@ _EPS_T = 1e-9
 MAX_COMMANDS_PTO, MAX_COMMANDS_SERVO = 200, 100
 
 
-class ConfigurationError(ValueError):
-    """A technology object configuration with invalid values; ``issues`` lists every problem."""
-
-    def __init__(self, source: str, issues: list[P.Issue]):
-        self.source = source
-        self.issues = issues
-        lines = [f"{source}: {len(issues)} configuration problem{'s' if len(issues) != 1 else ''}"]
-        lines += ["  " + i.message() for i in issues]
-        super().__init__("\n".join(lines))
-
-
-class PositioningAxis(FaultInjectionMixin, HomingMixin, SwitchesMixin, TagViews):
+class PositioningAxis(HomingMixin, TagViews):
     """Positioning axis technology object (TO_PositioningAxis)."""
 
     #: how this kind of technology object names and checks its configuration tags (the family's class says)
     schema: P.AxisSchema
 
-    def __init__(self, ctl: "Controller", name: str, cfg: Mapping[str, Any], *, db_number: int | None = None):
+    def __init__(self, ctl: ServoHost, name: str, cfg: Mapping[str, Any], *, db_number: int | None = None):
         self.ctl = ctl
         self.name = name
         self.db_number = db_number if db_number is not None else ctl._next_db_number()
@@ -92,7 +81,7 @@ class PositioningAxis(FaultInjectionMixin, HomingMixin, SwitchesMixin, TagViews)
         self.last_internal_error: str | None = None
         self.holding_zero_velocity = False            # standstill reached by MC_MoveVelocity(Velocity=0)
         self.abs_offset = 0.0                         # StatusSensor.AbsEncoderOffset (retentive)
-        self.faults: dict[str, tuple[str, bool]] = {}  # injected device faults: kind -> (detail, persistent)
+        self.fault_injection = FaultInjection(self)   # injected faults of the simulated devices
 
         b = ctl.bank
         i = self.index
@@ -108,7 +97,9 @@ class PositioningAxis(FaultInjectionMixin, HomingMixin, SwitchesMixin, TagViews)
             self.homed = bool(kept.get("HomingDone", False))
             self.drive.set_actual(b, self._absolute_raw() + self.abs_offset)
             b.sp_p[i] = b.act_p[i]
-        self._setup_io()
+        self.drive_io = DriveIO(self)                 # enable output, ready input
+        self.limit_switches = LimitSwitches(self)     # hardware limit switches, actual value range
+        self._watch_inputs()
         if not self.sim:
             ctl.plant.wire_axis(spec.plant, self.drive, t)
         self._start_profile(Planner.hold(t, float(b.sp_p[i])))
@@ -292,7 +283,7 @@ class PositioningAxis(FaultInjectionMixin, HomingMixin, SwitchesMixin, TagViews)
                 runner.on_timer(t)
                 return
         if name == "ready" and self.state == ENABLING:
-            if self.drive.ready(t) and self.drive_ready_signal():
+            if self.drive.ready(t) and self.drive_io.ready():
                 self._become_enabled(t)
             else:
                 self._timers["ready"] = t + self.ctl.servo_cycle
@@ -407,6 +398,51 @@ class PositioningAxis(FaultInjectionMixin, HomingMixin, SwitchesMixin, TagViews)
         self.raise_alarm(F.alarm(F.FOLLOWING_ERROR, "", Reaction.REMOVE_ENABLE))
 
     # ------------------------------------------------------------------------------------------------
+    # inputs watched every servo cycle: drive ready, limit switches, homing inputs, actual value range
+    def _watch_inputs(self) -> None:
+        """Have the controller watch this axis's inputs every servo cycle if it has any to watch; in
+        simulation (Simulation.Mode = 1) switches and drive feedback have no effect (§5.4.3.1)."""
+        h = self.config.homing
+        uses_inputs = (self.limit_switches.wired or self.drive_io.ready_input
+                       or h.active.input or h.passive.input)
+        if (uses_inputs or self.limit_switches.range_check) and not self.sim and self not in self.ctl._input_axes:
+            self.ctl._input_axes.append(self)
+
+    def _check_inputs(self, t: float) -> None:
+        self.drive_io.check()
+        self.limit_switches.check(t)
+        self._homing_check_inputs(t)
+        if self.limit_switches.range_check:
+            self.limit_switches.check_range()
+
+    @property
+    def hw_approached(self) -> dict[str, bool]:
+        """Side ("min"/"max") -> its hardware limit switch is approached (StatusBits.HWLimit*Active)."""
+        return self.limit_switches.approached
+
+    # the public fault injection API (docs/fault_injection.md), kept by ``self.fault_injection``
+    def inject_fault(self, kind: str, detail: str = "", *, persistent: bool = False) -> None:
+        """Let a simulated device of the axis fail (see ``FaultInjection.inject``)."""
+        self.fault_injection.inject(kind, detail, persistent=persistent)
+
+    def clear_fault(self, kind: str | None = None) -> None:
+        """Remove the cause of an injected fault, or of all (see ``FaultInjection.clear``)."""
+        self.fault_injection.clear(kind)
+
+    def disturb_load(self, *, jump: float = 0.0, force: float | None = None, blocked: bool | None = None) -> None:
+        """Disturb the load of the simulated drive (see ``FaultInjection.disturb_load``)."""
+        self.fault_injection.disturb_load(jump=jump, force=force, blocked=blocked)
+
+    def communication_ok(self, device: str) -> bool:
+        """StatusDrive/StatusSensor.CommunicationOK of ``device`` ("drive" or "encoder")."""
+        return self.fault_injection.communication_ok(device)
+
+    @property
+    def sensor_valid(self) -> bool:
+        """StatusSensor.State = 2: actual values valid (no encoder fault pending)."""
+        return self.fault_injection.sensor_valid
+
+    # ------------------------------------------------------------------------------------------------
     # enable / disable (MC_Power, §11.1.1)
     def power(self, owner: Any, enable: bool, start_mode: int, stop_mode: int) -> Fault | None:
         """Called by the enabling instruction on every call; returns a rejection or None."""
@@ -446,13 +482,13 @@ class PositioningAxis(FaultInjectionMixin, HomingMixin, SwitchesMixin, TagViews)
             return
         self.position_controlled = start_mode == 1 or not self._has_start_mode()
         if self.servo and self.position_controlled and not self.sensor_valid:
-            detail = self.faults.get("encoder", ("", False))[0]
+            detail = self.fault_injection.faults.get("encoder", ("", False))[0]
             self.raise_alarm(F.alarm(F.ENCODER, detail, Reaction.REMOVE_ENABLE))
             return
         self.state = ENABLING
         self.drive.set_enable(True, t)
-        self._set_enable_output(True)
-        if self.sim or (not self.servo and self.drive_ready_signal()):
+        self.drive_io.set_enable_output(True)
+        if self.sim or (not self.servo and self.drive_io.ready()):
             self._become_enabled(t)          # no drive feedback to wait for (§11.1.1, §5.4.3.1)
         else:
             self._timers["ready"] = t
@@ -508,7 +544,7 @@ class PositioningAxis(FaultInjectionMixin, HomingMixin, SwitchesMixin, TagViews)
         self._after_stop = None
         self.holding_zero_velocity = False
         self.drive.set_enable(False, t)
-        self._set_enable_output(False)
+        self.drive_io.set_enable_output(False)
         self.state = DISABLED
         self._stop_positioning_monitor()
         self._timers.pop("ready", None)
@@ -559,17 +595,11 @@ class PositioningAxis(FaultInjectionMixin, HomingMixin, SwitchesMixin, TagViews)
 
     def acknowledge(self) -> Fault | None:
         """MC_Reset (Restart = FALSE): clear alarms whose cause is gone; returns one that persists."""
-        for kind, (detail, persistent) in list(self.faults.items()):
-            if not persistent:
-                del self.faults[kind]
-                if kind in ("drive", "drive_not_ready") and not {"drive", "drive_not_ready"} & set(self.faults):
-                    self.drive.set_fault(False)
+        injected = self.fault_injection
+        injected.acknowledge()
         remaining = []
         for fault in self.alarms:
-            device = {v: k for k, v in self._DEVICE_ALARMS.items()}.get(fault.kind)
-            if device is not None and device in self.faults and device != "encoder":
-                # a drive that is still faulty keeps its alarm; an encoder that stays invalid may be
-                # acknowledged to move the axis without position control (§12.7)
+            if injected.keeps_alarm(fault):            # a device that is still faulty (§12.7)
                 remaining.append(fault)
                 continue
             if fault.kind == F.CONFIG:
@@ -727,7 +757,7 @@ class PositioningAxis(FaultInjectionMixin, HomingMixin, SwitchesMixin, TagViews)
         except PlanningError as exc:
             self.raise_alarm(F.alarm(F.INTERNAL, "planning", Reaction.EMERGENCY, str(exc)), job=job)
             return False
-        fault = self._hw_direction_fault(plan.profile, p)
+        fault = self.limit_switches.direction_fault(plan.profile, p)
         if fault is not None:
             self.raise_alarm(fault, job=job)
             return False

@@ -6,19 +6,20 @@ invalid actual value, or by its own monitoring (following error, positioning mon
 the manual lists (S7-1200 V6 §12.8, S7-1500T V5 §7.1.1 / alarms 521, 541).  Switch faults are injected on
 the plant (``Controller.plant``, ``drives.plant.Switch``); ``FaultScenario`` plays faults at given times
 (the ``[[faults]]`` of a project file).  Guide: docs/fault_injection.md.
+
+``FaultInjection`` is a component of an axis (``axis.fault_injection``) that keeps the injected faults; the
+axis offers its public calls as its own (``axis.inject_fault`` ...).
 """
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any, Callable
+from typing import Any, Callable, Protocol
 
+from ..drives.base import DriveChannel
 from ..drives.spec import EncoderInterface, SetpointInterface
 from . import faults as F
+from .axis_config import AxisConfig
 from .faults import Reaction
-
-if TYPE_CHECKING:  # pragma: no cover
-    from .axis import PositioningAxis
-    from .runtime import Controller
 
 #: device fault kinds and the alarm each raises
 DEVICE_ALARMS = {"drive": F.DRIVE_ALARM, "encoder": F.ENCODER, "drive_not_ready": F.DRIVE_NOT_READY}
@@ -29,6 +30,7 @@ DETAILS = {"drive": ("", "control_requested", "shutdown", "station", "sign_of_li
 #: kinds named after what is lost; they stand for device faults (see ``_expand``)
 LOSS_KINDS = ("encoder_loss", "communication_loss")
 KINDS = tuple(DEVICE_ALARMS) + LOSS_KINDS
+_DEVICE_OF = {alarm: device for device, alarm in DEVICE_ALARMS.items()}
 _LIMIT = 1e12
 
 
@@ -46,14 +48,42 @@ def checked_real(name: str, value: Any) -> float:
     return x
 
 
-class FaultInjectionMixin:
-    """Mixed into PositioningAxis: ``inject_fault``, ``clear_fault``, ``disturb_load`` and the state they
-    leave (``faults``: kind -> (detail, persistent))."""
+class Retainer(Protocol):
+    """The controller keeps an axis's retentive data (the "homed" state of an absolute encoder)."""
 
-    _DEVICE_ALARMS = DEVICE_ALARMS
+    def _retain_axis(self, axis: Any) -> None: ...
+
+
+class FaultHost(Protocol):
+    """What fault injection needs from its axis."""
+
+    ctl: Retainer
+    name: str
+    config: AxisConfig
+    drive: DriveChannel
+    pto: bool
+    sim: bool
+    servo: bool
+    homed: bool
+
+    def raise_alarm(self, fault: F.Fault) -> None: ...
+
+
+class FaultInjection:
+    """The injected faults of one axis's simulated devices (``axis.fault_injection``).
+
+    ``faults``: device ("drive", "encoder", "drive_not_ready") -> (detail, persistent).  The axis offers
+    ``inject_fault``, ``clear_fault``, ``disturb_load``, ``communication_ok`` and ``sensor_valid`` as its
+    own (the public fault API, docs/fault_injection.md) and asks :meth:`acknowledge` / :meth:`keeps_alarm`
+    at MC_Reset.
+    """
+
+    def __init__(self, axis: FaultHost):
+        self.axis = axis
+        self.faults: dict[str, tuple[str, bool]] = {}
 
     # --- device faults ---------------------------------------------------------------------------------
-    def inject_fault(self: "PositioningAxis", kind: str, detail: str = "", *, persistent: bool = False) -> None:
+    def inject(self, kind: str, detail: str = "", *, persistent: bool = False) -> None:
         """Let a simulated device of the axis fail.
 
         ``kind``:
@@ -76,52 +106,54 @@ class FaultInjectionMixin:
             raise TypeError(f"fault detail must be a string, got {detail!r}")
         if not isinstance(persistent, bool):
             raise TypeError(f"persistent must be True or False, got {persistent!r}")
-        for device, device_detail in self._expand(kind, detail):
+        ax = self.axis
+        for device, device_detail in self.expand(kind, detail):
             self.faults[device] = (device_detail, bool(persistent))
             if device in ("drive", "drive_not_ready"):
-                self.drive.set_fault(True)
+                ax.drive.set_fault(True)
             if device == "encoder" or (device == "drive" and device_detail == "station"):
-                self.homed = False                     # §2.5: an encoder error resets "homed"
-                self.ctl._retain_axis(self)            # also for absolute encoders, across power cycles
-            self.raise_alarm(F.alarm(DEVICE_ALARMS[device], device_detail, Reaction.REMOVE_ENABLE))
+                ax.homed = False                       # §2.5: an encoder error resets "homed"
+                ax.ctl._retain_axis(ax)                # also for absolute encoders, across power cycles
+            ax.raise_alarm(F.alarm(DEVICE_ALARMS[device], device_detail, Reaction.REMOVE_ENABLE))
 
-    def _expand(self: "PositioningAxis", kind: str, detail: str) -> list[tuple[str, str]]:
+    def expand(self, kind: str, detail: str) -> list[tuple[str, str]]:
         """The device faults (device, detail) a fault kind stands for (ValueError when it cannot be)."""
+        ax = self.axis
         if kind in DEVICE_ALARMS:
-            if self.sim:
-                raise ValueError(f"axis {self.name}: a simulated axis (Simulation.Mode = 1 or a virtual axis) has "
+            if ax.sim:
+                raise ValueError(f"axis {ax.name}: a simulated axis (Simulation.Mode = 1 or a virtual axis) has "
                                  f"no drive or encoder that could fail ({kind!r})")
-            if kind == "encoder" and self.pto:
-                raise ValueError(f"axis {self.name}: a pulse output axis (Actor.Type = 2) has no encoder")
+            if kind == "encoder" and ax.pto:
+                raise ValueError(f"axis {ax.name}: a pulse output axis (Actor.Type = 2) has no encoder")
             if detail not in DETAILS[kind]:
                 raise ValueError(f"fault {kind!r}: detail {detail!r} is not one of "
                                  + ", ".join(repr(d) for d in DETAILS[kind]))
             return [(kind, detail)]
         if detail:
             raise ValueError(f"fault kind {kind!r} takes no detail (got {detail!r})")
-        encoder = self.config.drive.encoder.interface
+        encoder = ax.config.drive.encoder.interface
         on_bus = encoder in (EncoderInterface.PROFIDRIVE, EncoderInterface.DRIVE_TELEGRAM)
         if kind == "encoder_loss":
-            if not self.servo:
-                raise ValueError(f"axis {self.name}: encoder_loss needs an axis with an encoder "
+            if not ax.servo:
+                raise ValueError(f"axis {ax.name}: encoder_loss needs an axis with an encoder "
                                  "(PROFIdrive or analog drive, Simulation.Mode = 0)")
             return [("encoder", "station" if on_bus else "hardware")]
-        if not self.servo or self.config.drive.interface is not SetpointInterface.PROFIDRIVE:
-            raise ValueError(f"axis {self.name}: communication_loss needs a PROFIdrive axis (Actor.Type = 1, "
+        if not ax.servo or ax.config.drive.interface is not SetpointInterface.PROFIDRIVE:
+            raise ValueError(f"axis {ax.name}: communication_loss needs a PROFIdrive axis (Actor.Type = 1, "
                              "Simulation.Mode = 0); an analog drive or a pulse output has no bus")
         lost = [("drive", "station")]
         if encoder is EncoderInterface.DRIVE_TELEGRAM:
             lost.append(("encoder", "station"))      # the encoder travels in the drive's telegram
         return lost
 
-    def clear_fault(self: "PositioningAxis", kind: str | None = None) -> None:
+    def clear(self, kind: str | None = None) -> None:
         """Remove the cause of an injected fault, or of all with ``kind=None`` (an alarm it raised still
         has to be acknowledged with MC_Reset).  ``"load"`` removes an external force and a blocked load."""
         if kind is not None and kind not in KINDS and kind != "load":
             raise ValueError(f"fault kind {kind!r}: one of {', '.join(KINDS + ('load',))}")
         if kind is None or kind == "load":
-            if self.servo:
-                self.drive.disturb(force=0.0, blocked=False)
+            if self.axis.servo:
+                self.axis.drive.disturb(force=0.0, blocked=False)
             if kind == "load":
                 return
         if kind is None:
@@ -129,27 +161,40 @@ class FaultInjectionMixin:
         elif kind in DEVICE_ALARMS:
             devices = [kind]
         else:
-            devices = [d for d, _ in self._expand(kind, "")]
+            devices = [d for d, _ in self.expand(kind, "")]
         for device in devices:
             if device in self.faults:
                 self.faults[device] = (self.faults[device][0], False)
 
-    def communication_ok(self: "PositioningAxis", device: str) -> bool:
+    def acknowledge(self) -> None:
+        """MC_Reset: transient device faults are gone; a drive without a pending fault is ready again."""
+        for kind, (_detail, persistent) in list(self.faults.items()):
+            if not persistent:
+                del self.faults[kind]
+                if kind in ("drive", "drive_not_ready") and not {"drive", "drive_not_ready"} & set(self.faults):
+                    self.axis.drive.set_fault(False)
+
+    def keeps_alarm(self, fault: F.Fault) -> bool:
+        """The alarm of a device that is still faulty persists through MC_Reset; an encoder that stays
+        invalid may be acknowledged to move the axis without position control (S7-1200 V6 §12.7)."""
+        device = _DEVICE_OF.get(fault.kind)
+        return device is not None and device in self.faults and device != "encoder"
+
+    def communication_ok(self, device: str) -> bool:
         """StatusDrive/StatusSensor.CommunicationOK: cyclic bus communication with the drive / encoder
         (PROFIdrive and analog axes; FALSE after an injected station failure or sign-of-life fault)."""
-        if self.pto:
+        if self.axis.pto:
             return False
         detail = self.faults.get(device, ("", False))[0]
         return detail not in ("station", "sign_of_life")
 
     @property
-    def sensor_valid(self: "PositioningAxis") -> bool:
+    def sensor_valid(self) -> bool:
         """StatusSensor.State = 2: actual values valid (no encoder fault pending)."""
         return "encoder" not in self.faults
 
     # --- load disturbance -------------------------------------------------------------------------------
-    def disturb_load(self: "PositioningAxis", *, jump: float = 0.0, force: float | None = None,
-                     blocked: bool | None = None) -> None:
+    def disturb_load(self, *, jump: float = 0.0, force: float | None = None, blocked: bool | None = None) -> None:
         """Disturb the load of the simulated drive; the axis's monitoring decides what follows.
 
         * ``jump``: the load moves by this distance [user unit] at once (slip, collision); a stepper
@@ -163,11 +208,17 @@ class FaultInjectionMixin:
         (16#800F, alarm 541) trip when the deviation is beyond their limits.  ``clear_fault("load")``
         removes force and obstacle.
         """
-        j, f = check_load(self, jump, force, blocked)
-        self.drive.disturb(jump=j, force=f, blocked=blocked)
+        j, f = check_load(self.axis, jump, force, blocked)
+        self.axis.drive.disturb(jump=j, force=f, blocked=blocked)
 
 
-def check_load(axis: "PositioningAxis", jump: Any = 0.0, force: Any = None, blocked: Any = None
+class LoadHost(Protocol):
+    name: str
+    pto: bool
+    sim: bool
+
+
+def check_load(axis: LoadHost, jump: Any = 0.0, force: Any = None, blocked: Any = None
                ) -> tuple[float, float | None]:
     """The checked (jump, force) of a load disturbance of ``axis``; TypeError/ValueError naming the problem."""
     j = checked_real("jump", jump)
@@ -183,6 +234,12 @@ def check_load(axis: "PositioningAxis", jump: Any = 0.0, force: Any = None, bloc
     return j, f
 
 
+class ServoClock(Protocol):
+    """The controller as a scenario sees it: it calls hooks before each servo cycle."""
+
+    def on_pre_servo(self, fn: Callable[[float], Any]) -> Any: ...
+
+
 class FaultScenario:
     """Faults injected at given controller times (virtual commissioning runs, ``[[faults]]`` of a project).
 
@@ -191,7 +248,7 @@ class FaultScenario:
     inputs and monitoring.  Actions are the public fault injection calls; check them before the run.
     """
 
-    def __init__(self, ctl: "Controller"):
+    def __init__(self, ctl: ServoClock):
         self.ctl = ctl
         self.pending: list[tuple[float, int, Callable[[], Any], str]] = []
         self.done: list[tuple[float, str]] = []          # (time, what) of the actions that ran

@@ -23,7 +23,8 @@ from ..drives.simulated import new_drive_group
 from . import retain
 from . import family as families
 from . import schema as P
-from .axis import ConfigurationError, PositioningAxis
+from .axis import PositioningAxis
+from .errors import ConfigurationError
 from .bank import AxisBank
 from .servo_cycle import STAGE_NAMES, failed_stage, run_servo_cycle
 from .sync import SyncStage

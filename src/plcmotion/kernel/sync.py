@@ -23,15 +23,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, Callable
+from typing import Any, Callable
 
 import numpy as np
 
 from .cam import CamCurve
+from .protocols import ServoHost
 from .sync_limits import SwLimitWatch
 
-if TYPE_CHECKING:  # pragma: no cover
-    from .runtime import Controller
 
 GEAR, CAM = 0, 1
 #: an effective leading value whose |position| + |velocity| + |acceleration| exceeds this (or is not a
@@ -252,7 +251,7 @@ class _Level:
 class SyncStage:
     """All leading value couplings of a controller."""
 
-    def __init__(self, ctl: "Controller"):
+    def __init__(self, ctl: ServoHost):
         self.ctl = ctl
         self.couplings: list[Coupling] = []
         self.levels: list[_Level] = []

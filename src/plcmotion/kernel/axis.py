@@ -23,7 +23,7 @@ from ..drives.spec import ActuatorKind
 from .drive_io import DriveIO
 from .errors import ConfigurationError  # noqa: F401 - kernel.axis.ConfigurationError is public
 from .fault_injection import FaultInjection
-from .homing import HomingMixin
+from .homing import Homing
 from .job_runner import JobRunner
 from .limit_switches import LimitSwitches
 from .protocols import ServoHost
@@ -36,8 +36,11 @@ _EPS_T = 1e-9
 MAX_COMMANDS_PTO, MAX_COMMANDS_SERVO = 200, 100
 
 
-class PositioningAxis(HomingMixin, TagViews):
+class PositioningAxis(TagViews):
     """Positioning axis technology object (TO_PositioningAxis)."""
+
+    #: a simulated axis executes active homing at once, without motion (S7-1200 V6 §5.4.3.1)
+    _sim_homing_at_once = True
 
     #: how this kind of technology object names and checks its configuration tags (the family's class says)
     schema: P.AxisSchema
@@ -56,6 +59,7 @@ class PositioningAxis(HomingMixin, TagViews):
         t = ctl.time
         self.drive = ctl._drive_group(spec.actuator.value).add(self.index, spec, ctl.servo_cycle, t)
         self.motion = MotionPlanner(self)
+        self.homing = Homing(self, at_once_in_simulation=self._sim_homing_at_once)
 
         self.state = DISABLED
         self.homed = False
@@ -63,7 +67,6 @@ class PositioningAxis(HomingMixin, TagViews):
         self.alarms: list[Fault] = []
         self.job: Job | None = None                   # active motion job
         self.queue = axis_queue(self)                 # jobs waiting behind it (PLCopen BufferMode)
-        self.passive_home: Job | None = None
         self.runners: dict[JobKind, JobRunner] = {}   # components running kinds of jobs of a family
         self.power_owner: Any = None
         self.stop_mode = 0
@@ -77,7 +80,6 @@ class PositioningAxis(HomingMixin, TagViews):
         self._seg = 0
         self._pending: dict[str, float] = {}
         self._timers: dict[str, float] = {}
-        self.reference_mark = 0.0
         self.last_internal_error: str | None = None
         self.holding_zero_velocity = False            # standstill reached by MC_MoveVelocity(Velocity=0)
         self.abs_offset = 0.0                         # StatusSensor.AbsEncoderOffset (retentive)
@@ -95,7 +97,7 @@ class PositioningAxis(HomingMixin, TagViews):
             kept = ctl.retain.get(name, {})
             self.abs_offset = float(kept.get("AbsEncoderOffset", 0.0))
             self.homed = bool(kept.get("HomingDone", False))
-            self.drive.set_actual(b, self._absolute_raw() + self.abs_offset)
+            self.drive.set_actual(b, self.homing.absolute_raw() + self.abs_offset)
             b.sp_p[i] = b.act_p[i]
         self.drive_io = DriveIO(self)                 # enable output, ready input
         self.limit_switches = LimitSwitches(self)     # hardware limit switches, actual value range
@@ -305,7 +307,7 @@ class PositioningAxis(HomingMixin, TagViews):
         if name != "end":
             return
         if job is not None and job.busy and job.kind == JobKind.HOME_ACTIVE:
-            self._homing_end(job, t)
+            self.homing.on_profile_end(job, t)
             return
         runner = self.runners.get(job.kind) if job is not None and job.busy else None
         if runner is not None and not (plan and plan.limit_side):
@@ -557,12 +559,44 @@ class PositioningAxis(HomingMixin, TagViews):
             self.homed = False                     # §2.5: disabling a PTO axis resets "homed"
 
     def _abort_all(self, t: float) -> None:
-        for job in (self.job, self.passive_home):
+        for job in (self.job, self.homing.passive):
             if job is not None and job.busy:
                 self._finish_job(job, JobState.ABORTED, t)
         self._end_runner_jobs(JobState.ABORTED, t)
         self.job = None
-        self.passive_home = None
+        self.homing.passive = None
+
+    # ------------------------------------------------------------------------------------------------
+    # homing (kernel/homing.py, ``self.homing``): delegations for the instructions, the runtime, the tag
+    # views and the command table (public names) and for the limit switches (``_homing_*``)
+    def home(self, job: Job) -> None:
+        self.homing.home(job)
+
+    def home_direct(self, job: Job) -> None:
+        self.homing.home_direct(job)
+
+    def homing_configured(self, mode: int) -> bool:
+        return self.homing.configured(mode)
+
+    def absolute_encoder(self) -> bool:
+        return self.homing.absolute_encoder()
+
+    @property
+    def passive_home(self) -> Job | None:
+        return self.homing.passive
+
+    @passive_home.setter
+    def passive_home(self, job: Job | None) -> None:
+        self.homing.passive = job
+
+    def _homing_inputs(self) -> dict[str, str]:
+        return self.homing.inputs()
+
+    def _homing_check_inputs(self, t: float) -> None:
+        self.homing.check_inputs(t)
+
+    def _homing_hw_limit(self, side: str, t: float) -> bool:
+        return self.homing.hw_limit(side, t)
 
     # ------------------------------------------------------------------------------------------------
     # alarms (§9.6, §12.8)
@@ -575,9 +609,8 @@ class PositioningAxis(HomingMixin, TagViews):
             self._finish_job(victim, JobState.ERROR, t, fault)
         if fault.reaction != Reaction.NONE:
             self._end_runner_jobs(JobState.ERROR, t, fault)
-        if fault.reaction in (Reaction.REMOVE_ENABLE, Reaction.EMERGENCY) and self.passive_home is not None:
-            self._finish_job(self.passive_home, JobState.ERROR, t, fault)
-            self.passive_home = None
+        if fault.reaction in (Reaction.REMOVE_ENABLE, Reaction.EMERGENCY):
+            self.homing.end_passive(JobState.ERROR, fault)
         if self.state not in (ENABLED, DISABLING, ENABLING):
             return
         if fault.reaction == Reaction.REMOVE_ENABLE:
@@ -647,7 +680,7 @@ class PositioningAxis(HomingMixin, TagViews):
         b, i = self.ctl.bank, self.index
         if reason == "power":
             # the actual values start anew: pulse and incremental counters at 0, absolute encoders as is
-            self.drive.set_actual(b, self._absolute_raw() + self.abs_offset if absolute else 0.0)
+            self.drive.set_actual(b, self.homing.absolute_raw() + self.abs_offset if absolute else 0.0)
             b.sp_p[i] = b.act_p[i]
             b.sp_v[i] = b.sp_a[i] = 0.0
             self._start_profile(Planner.hold(t, float(b.sp_p[i])))
@@ -714,9 +747,8 @@ class PositioningAxis(HomingMixin, TagViews):
             self._finish_job(previous, JobState.ABORTED, t)
         self._end_runner_jobs(JobState.ABORTED, t)            # a program that had not taken over yet
         self.holding_zero_velocity = False
-        if job.kind == JobKind.HOME_ACTIVE and self.passive_home is not None:
-            self._finish_job(self.passive_home, JobState.ABORTED, t)
-            self.passive_home = None
+        if job.kind == JobKind.HOME_ACTIVE:
+            self.homing.end_passive(JobState.ABORTED)
         self._stop_positioning_monitor()
         self.job = job
         if job.kind in POSITIONING_KINDS or job.kind == JobKind.HOME_ACTIVE:
@@ -724,9 +756,7 @@ class PositioningAxis(HomingMixin, TagViews):
         elif job.kind in (JobKind.VELOCITY, JobKind.JOG):
             self._set_position_control(job.position_controlled)
         if job.kind == JobKind.HOME_ACTIVE:
-            if self not in self.ctl._input_axes:
-                self.ctl._input_axes.append(self)
-            self._homing_start(job, t)
+            self.homing.start_active(job, t)
             return
         self._plan_job(job, t)
 

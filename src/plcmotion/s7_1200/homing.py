@@ -51,8 +51,8 @@ class MC_Home(fb.ReferenceMarkOutput, ExecuteInstruction):  # noqa: N801
         if mode in (2, 3):
             if absolute_encoder:
                 raise InstructionError(E.MODE, 0x0056)
-            homing = getattr(axis, "homing_configured", None)
-            if homing is None or not homing(mode):
+            homing = getattr(axis, "homing", None)                     # an axis kind without homing: None
+            if homing is None or not homing.configured(mode):
                 raise InstructionError(E.MODE, 0x0015)                  # no homing switch configured
             if mode == 3 and axis.eff["Homing.AutoReversal"] and not axis.eff["PositionLimits_HW.Active"]:
                 raise InstructionError(E.MODE, 0x0017)                  # reversal needs the HW limit switches

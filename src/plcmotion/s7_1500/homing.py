@@ -43,10 +43,7 @@ class MC_Home(fb.ReferenceMarkOutput, ExecuteInstruction):  # noqa: N801
                 raise InstructionError(E.parameter("Mode"))
         if mode == 9:
             job = Job(JobKind.HOME_CANCEL, mode=mode, owner=self)
-            passive = axis.passive_home
-            if passive is not None and passive.busy:
-                axis._finish_job(passive, JobState.ABORTED, axis.now)
-                axis.passive_home = None
+            axis.homing.end_passive(JobState.ABORTED)
             job.finish(JobState.DONE)
             return job
         if mode in (0, 1, 6, 7):

@@ -171,9 +171,7 @@ class PositioningAxis1500(SuperimposedMixin, LeadingValueMixin, PositioningAxis)
         elif job.kind in (JobKind.VELOCITY, JobKind.JOG):
             self._set_position_control(job.position_controlled)
         if job.kind == JobKind.HOME_ACTIVE:
-            if not self.sim and self not in self.ctl._input_axes:
-                self.ctl._input_axes.append(self)
-            self._homing_start(job, t)
+            self.homing.start_active(job, t)
             return
         if self._plan_job(job, t):
             self._note_limits(self.motion.last_limits, job)

@@ -13,6 +13,13 @@ hysteresis output after a reversal (catalog §11.2 item 5); plcmotion's reading 
 row 28): the extrapolation is exact for a constant velocity and a constant acceleration (the two cases
 §3.3.4 promises to compensate), the band starts at the first filtered velocity, and the hysteresis holds
 the leading value during a reversal smaller than ``Hysteresis.Value`` and is transparent otherwise.
+
+Every TO that can lead owns a :class:`LeadingValueProvider` (``to.lv_provider``): an axis an
+:class:`AxisLeadingValue`, an external encoder its own subclass.  Followers call the TO (``lv_value``,
+``lv_slot``, ``lv_position_controlled``, ``lv_modulo``, ``leading_value_invalid``, the ``provides_*``
+flags), which hands the call to its provider; a leading axis proxy answers them itself.  Per servo cycle
+a provider costs only what a follower asked for: one extrapolation step (actual value coupling) and one
+recorded sample (delayed coupling, cross-PLC output) in the synchronous operation stage.
 """
 from __future__ import annotations
 

@@ -220,8 +220,8 @@ class SyncStage(Protocol):
     def register_post(self, fn: Callable[[float], None]) -> None: ...
 
 
-class LeadingValueClock(Protocol):
-    """What a provider needs of the controller: its clock, the synchronous operation stage and (for an
+class LeadingValueController(Protocol):
+    """What a provider needs of the controller: the clock, the synchronous operation stage and (for an
     axis) the array bank with the setpoints and actual values of the last servo cycle."""
 
     time: float
@@ -251,7 +251,7 @@ class LeadingValueHost(Protocol):
     def name(self) -> str: ...
 
     @property
-    def ctl(self) -> LeadingValueClock: ...
+    def ctl(self) -> LeadingValueController: ...
 
     @property
     def config(self) -> LeadingValueConfig: ...

@@ -26,7 +26,7 @@ _EPS_T = 1e-9
 TIMER = "superimposed"
 
 
-class SuperimposedClock(Protocol):
+class SuperimposedController(Protocol):
     """What the component needs of the controller: the bank and the count of axes with a part."""
 
     bank: Any
@@ -37,7 +37,7 @@ class SuperimposedHost(Protocol):
     """What :class:`SuperimposedMotion` needs of its axis."""
 
     @property
-    def ctl(self) -> SuperimposedClock: ...
+    def ctl(self) -> SuperimposedController: ...
 
     @property
     def index(self) -> int: ...

@@ -80,7 +80,8 @@ class PositioningAxis1500(PositioningAxis):
     def provide_leading_value(self, sink: Any) -> None:
         self.lv_provider.provide_leading_value(sink)
 
-    # --- the superimposed motion (kernel.superimposed): what the synchronous operation reads -----------
+    # --- the superimposed motion (kernel.superimposed): what submit, the override and the synchronous
+    # operation call; one-line hand-overs to ``self.superimposed``
     @property
     def superimposed_active(self) -> bool:
         return self.superimposed.active
@@ -88,6 +89,16 @@ class PositioningAxis1500(PositioningAxis):
     @property
     def sup_job(self) -> Job | None:
         return self.superimposed.job
+
+    @property
+    def sup_profile(self) -> Profile | None:
+        return self.superimposed.profile
+
+    def start_superimposed(self, job: Job, lim: Any) -> None:
+        self.superimposed.start(job, lim)
+
+    def _sup_take_over(self, t: float) -> None:
+        self.superimposed.take_over(t)
 
     @property
     def _sup_carry(self) -> tuple[float, float, float] | None:
@@ -172,7 +183,7 @@ class PositioningAxis1500(PositioningAxis):
         if job.kind == JobKind.SUPERIMPOSED:
             lim = limits(self, job.velocity, job=job)
             self._note_limits(lim)
-            self.superimposed.start(job, lim)
+            self.start_superimposed(job, lim)
             return
         cls = O.job_class(job)
         if job.kind == JobKind.HOME_ACTIVE and self._sync_blocks_homing():
@@ -269,8 +280,8 @@ class PositioningAxis1500(PositioningAxis):
             self._finish_job(passive, JobState.ABORTED, t)
             self.passive_home = None
         self._override_sync(new, t, new_job)
-        if self.superimposed.profile is not None and O.aborts(new, O.SUPERIMPOSED):
-            self.superimposed.take_over(t)
+        if self.sup_profile is not None and O.aborts(new, O.SUPERIMPOSED):
+            self._sup_take_over(t)
 
     def _plan_stop(self, job: Job, t: float) -> None:
         if job.mode == 0:

@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import pytest
 
+from ._schema_axis import with_schema
+
 from plcmotion import Controller
 from plcmotion.kernel import family as families
 from plcmotion.kernel import faults as F
@@ -73,8 +75,7 @@ class Moves:
 def axis():
     # the kernel axis takes its schema from a family's axis class: borrow the default family's, without its
     # factory (so no runner of that family is attached)
-    axis_class = type(Controller().add_positioning_axis("probe", PARAMS))
-    assert issubclass(axis_class, PositioningAxis)
+    axis_class = with_schema(PositioningAxis, PARAMS)
 
     def factory(ctl, name, flat, where):
         return ctl.new_axis(axis_class, name, flat, where)

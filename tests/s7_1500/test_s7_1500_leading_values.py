@@ -384,7 +384,7 @@ def test_constant_acceleration_is_extrapolated_exactly_s3_3_4():
         ctl.run_until(lambda g=gears[0]: g.InGear, timeout=2.0)
         ctl.run(0.3)
         e = enc.eff
-        lead = enc.extrapolation_time() - e["Extrapolation.PositionFilter.T1"] - e["Extrapolation.PositionFilter.T2"]
+        lead = enc.lv_provider.extrapolation_time() - e["Extrapolation.PositionFilter.T1"] - e["Extrapolation.PositionFilter.T2"]
         for _ in range(5):
             ctl.run(0.05)
             # the encoder value of a servo cycle was measured one cycle earlier (T_i)
@@ -395,7 +395,7 @@ def test_constant_acceleration_is_extrapolated_exactly_s3_3_4():
     ctl.run_until(lambda: gears[0].InGear, timeout=2.0)
     ctl.run(0.3)
     se = enc.StatusExtrapolation
-    assert se.ExtrapolatedPosition == pytest.approx(se.FilteredPosition + se.FilteredVelocity * enc.extrapolation_time(),
+    assert se.ExtrapolatedPosition == pytest.approx(se.FilteredPosition + se.FilteredVelocity * enc.lv_provider.extrapolation_time(),
                                                     abs=1e-6)
 
 

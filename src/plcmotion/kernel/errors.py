@@ -5,7 +5,7 @@ from typing import Any, Protocol, Sequence
 
 
 class ConfigIssue(Protocol):
-    """One configuration problem (``kernel.parameters.Issue`` or a family's own)."""
+    """One configuration problem (``kernel.schema.Issue`` or a family's own)."""
 
     path: str                       # the tag
     reason: str                     # type | format | too_low | too_high | selection | unknown | rule:<name>

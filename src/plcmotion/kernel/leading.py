@@ -13,14 +13,21 @@ hysteresis output after a reversal (catalog §11.2 item 5); plcmotion's reading 
 row 28): the extrapolation is exact for a constant velocity and a constant acceleration (the two cases
 §3.3.4 promises to compensate), the band starts at the first filtered velocity, and the hysteresis holds
 the leading value during a reversal smaller than ``Hysteresis.Value`` and is transparent otherwise.
+
+Every TO that can lead owns a :class:`LeadingValueProvider` (``to.lv_provider``): an axis an
+:class:`AxisLeadingValue`, an external encoder its own subclass.  Followers call the TO (``lv_value``,
+``lv_slot``, ``lv_position_controlled``, ``lv_modulo``, ``leading_value_invalid``, the ``provides_*``
+flags), which hands the call to its provider; a leading axis proxy answers them itself.  Per servo cycle
+a provider costs only what a follower asked for: one extrapolation step (actual value coupling) and one
+recorded sample (delayed coupling, cross-PLC output) in the synchronous operation stage.
 """
 from __future__ import annotations
 
 from collections import deque
-from typing import TYPE_CHECKING, Any
+from typing import Any, Callable, Protocol
 
-if TYPE_CHECKING:  # pragma: no cover
-    from .axis import PositioningAxis
+from .axis_config import Extrapolation, LeadingValueOutput, Modulo
+from .leading_value import LeadingValueSample, LeadingValueSink
 
 
 def _pt1(y: float, x: float, dt: float, T: float) -> float:
@@ -58,8 +65,9 @@ class Extrapolator:
       it (the input's next Hysteresis.Value of travel), so it never jumps and has no lasting offset.
     """
 
-    def __init__(self, source: Any):
+    def __init__(self, source: "LeadingValueProvider"):
         self.source = source
+        self.host = source.host            # read every cycle: its configuration (one hop, as before)
         self.ready = False
         self.pf1 = self.pf2 = self.vf1 = self.vf2 = self.af1 = self.af2 = 0.0
         self.band = 0.0
@@ -72,7 +80,7 @@ class Extrapolator:
 
     def step(self, t: float, dt: float) -> tuple[float, float, float]:
         src = self.source
-        x = src.config.extrapolation
+        x = self.host.config.extrapolation
         if not src.actual_values_valid():
             return self._without_actual_values(dt)
         p, v = src.actual_values()
@@ -156,7 +164,7 @@ class Extrapolator:
 class DelayLine:
     """A leading value delayed by a (changeable) time: samples of the last cycles, interpolated."""
 
-    def __init__(self, source: Any):
+    def __init__(self, source: "LeadingValueProvider"):
         self.source = source
         self.samples: deque[tuple[float, float, float, float]] = deque()
 
@@ -203,165 +211,286 @@ def setpoint_at(axis: Any, t: float) -> tuple[float, float, float]:
     return p, v, a
 
 
-class LeadingValueMixin:
-    """What a leading TO offers its followers: mixed into the S7-1500 axes and the external encoder.
+# --- the component ---------------------------------------------------------------------------------------
+class SyncStage(Protocol):
+    """The controller's synchronous operation stage, as far as a provider uses it."""
 
-    What an axis delays for its delayed followers and sends to other controllers is its setpoint; an
-    external encoder has no setpoint and uses its extrapolated actual value instead (§3.3.3, §8.1.3:
-    "a positioning axis, external encoder or synchronous axis" can be the leading axis on CPU 1).
+    def register_ext(self, provider: Callable[[float], tuple[float, float, float]]) -> int: ...
+
+    def register_post(self, fn: Callable[[float], None]) -> None: ...
+
+
+class LeadingValueController(Protocol):
+    """What a provider needs of the controller: the clock, the synchronous operation stage and (for an
+    axis) the array bank with the setpoints and actual values of the last servo cycle."""
+
+    time: float
+    servo_cycle: float
+    _bank_time: float                  # servo time of the values in the bank
+    sync: SyncStage
+    bank: Any
+
+
+class LeadingValueConfig(Protocol):
+    """The part of a TO's configuration a provider reads (``AxisConfig``, ``LeadingValueSourceConfig``)."""
+
+    @property
+    def modulo(self) -> Modulo: ...
+
+    @property
+    def extrapolation(self) -> Extrapolation: ...
+
+    @property
+    def leading_value_output(self) -> LeadingValueOutput: ...
+
+
+class LeadingValueHost(Protocol):
+    """What a provider needs of the technology object that owns it."""
+
+    @property
+    def name(self) -> str: ...
+
+    @property
+    def ctl(self) -> LeadingValueController: ...
+
+    @property
+    def config(self) -> LeadingValueConfig: ...
+
+    @property
+    def sim(self) -> bool: ...
+
+
+class LeadingAxisHost(LeadingValueHost, Protocol):
+    """What :class:`AxisLeadingValue` needs of an axis in addition: its row in the bank and its state."""
+
+    @property
+    def index(self) -> int: ...
+
+    @property
+    def servo(self) -> bool: ...
+
+    @property
+    def state(self) -> str: ...
+
+    @property
+    def position_controlled(self) -> bool: ...
+
+    def _blocking_alarm(self) -> object | None: ...
+
+
+class LeadingValueProvider:
+    """The leading value a technology object provides to its followers (S7-1500T V5 §3.3, §8.1.3).
+
+    The owner is the leading TO (an axis, an external encoder); its followers keep calling the TO
+    (``lv_value``, ``lv_slot``, ...), which hands the call on.  This class holds what every kind of
+    leading TO shares: the actual value processing (:class:`Extrapolator`, created with the first
+    follower that couples to the actual value), the delay line of the delayed value (created with the
+    first delayed follower or the cross-PLC output), the slots of both in the synchronous operation stage
+    and the cross-PLC output.  What the owner measures and provides - its actual values, the value it
+    delays and sends - is given by the subclass for its kind of TO (:class:`AxisLeadingValue` here, the
+    external encoder's in its own module).
     """
 
-    provides_setpoints = True
-    provides_delayed_values = True
-    #: any axis has actual values; a virtual one's equal its setpoints (§3.3.2, decision 29)
-    provides_actual_values = True
+    def __init__(self, host: LeadingValueHost):
+        self.host = host
+        self.ctl = host.ctl
+        self.extrapolator: Extrapolator | None = None
+        self.delay_line: DelayLine | None = None
+        self.slots: dict[str, int] = {}       # coupling type -> slot in the sync stage
 
-    def _lv_init(self: "PositioningAxis") -> None:
-        self._extrapolator: Extrapolator | None = None
-        self._delay: DelayLine | None = None
-        self._lv_slots: dict[str, int] = {}
+    def __repr__(self) -> str:
+        return f"<{type(self).__name__} of {self.host.name}>"
 
-    def actual_values(self: "PositioningAxis") -> tuple[float, float]:
-        b, i = self.ctl.bank, self.index
-        return float(b.act_p[i]), float(b.act_v[i])
+    # --- what the owner measures and provides (given by the subclass) ----------------------------------
+    def actual_values(self) -> tuple[float, float]:
+        """The actual position and velocity of this servo cycle."""
+        raise NotImplementedError
 
-    def leading_value_invalid(self: "PositioningAxis", mode: str) -> str | None:
-        """An axis always provides a leading value: setpoint coupling waits for position control (§3.3.5),
-        and the actual values stay valid."""
-        return None
-
-    def actual_values_valid(self: "PositioningAxis") -> bool:
-        """Are the actual values valid (no encoder fault)?  An axis's are as long as it has them."""
+    def actual_values_valid(self) -> bool:
+        """Are the actual values valid (no encoder fault)?"""
         return True
 
-    def velocity_lag(self: "PositioningAxis", dt: float) -> float:
-        """Age of the actual velocity relative to the actual position: half a cycle for a velocity that
-        is the difference of two encoder values, none for the exact velocity of a simulated drive."""
-        return 0.5 * dt if self.servo else 0.0
+    def velocity_lag(self, dt: float) -> float:
+        """Age of the actual velocity relative to the actual position."""
+        raise NotImplementedError
 
-    def provided_value(self: "PositioningAxis") -> tuple[float, float, float]:
-        """This servo cycle's value for delayed followers and other controllers: the setpoint."""
-        b, i = self.ctl.bank, self.index
-        return float(b.sp_p[i]), float(b.sp_v[i]), float(b.sp_a[i])
+    def provided_value(self) -> tuple[float, float, float]:
+        """This servo cycle's value for delayed followers and other controllers."""
+        raise NotImplementedError
 
-    def provided_value_at(self: "PositioningAxis", t: float) -> tuple[float, float, float]:
-        return setpoint_at(self, t)
+    def provided_value_at(self, t: float) -> tuple[float, float, float]:
+        """The provided value at ``t`` (between servo cycles: carried forward)."""
+        raise NotImplementedError
 
-    def provided_value_valid(self: "PositioningAxis") -> tuple[bool, bool]:
+    def provided_value_valid(self) -> tuple[bool, bool]:
         """(valid, tracking) of the provided value (telegram flags, §8.1.4)."""
-        return (self.state in ("enabled", "disabling") and self._blocking_alarm() is None,
-                bool(self.servo and not self.ctl.bank.closed_loop[self.index]))
+        raise NotImplementedError
 
-    def lv_position_controlled(self: "PositioningAxis") -> bool:
-        """Setpoint coupling needs a position-controlled leading axis (§3.3.5)."""
-        return self.state in ("enabled", "disabling") and self.position_controlled
+    def lv_position_controlled(self) -> bool:
+        """May a follower with setpoint coupling start following now (§3.3.5)?"""
+        raise NotImplementedError
 
-    def lv_modulo(self: "PositioningAxis") -> tuple[float, float] | None:
-        m = self.config.modulo
+    def leading_value_invalid(self, mode: str) -> str | None:
+        """Why a new coupling of type ``mode`` cannot use this leading value now (None: it can)."""
+        return None
+
+    # --- what followers read ---------------------------------------------------------------------------
+    def lv_modulo(self) -> tuple[float, float] | None:
+        """(start, length) of the modulo range of the leading value, None without modulo."""
+        m = self.host.config.modulo
         return (m.start, m.length) if m.enabled else None
 
-    def lv_value(self: "PositioningAxis", mode: str, t: float) -> tuple[float, float, float]:
+    def lv_value(self, mode: str, t: float) -> tuple[float, float, float]:
         """The leading value this TO provides with coupling type ``mode`` at time ``t``."""
         if mode == "setpoint":
             return self.provided_value_at(t)
         if mode == "actual":
-            ex = self._ensure_extrapolator()
+            ex = self.ensure_extrapolator()
             p, v, a = ex.position, ex.velocity, ex.acceleration
             dt = t - self.ctl._bank_time
             if dt > 0.0:                    # between servo cycles: carried forward
                 p, v = p + dt * (v + 0.5 * dt * a), v + dt * a
             return p, v, a
-        return self._ensure_delay().at(t - self.local_delay_time())
+        return self.ensure_delay_line().at(t - self.local_delay_time())
 
-    def lv_slot(self: "PositioningAxis", mode: str) -> int:
+    def lv_slot(self, mode: str) -> int:
         """Slot of this source's actual or delayed leading value in the sync stage (created on first use)."""
-        slot = self._lv_slots.get(mode)
+        slot = self.slots.get(mode)
         if slot is None:
             if mode == "actual":
-                ex = self._ensure_extrapolator()
+                ex = self.ensure_extrapolator()
                 slot = self.ctl.sync.register_ext(lambda t, ex=ex: (ex.position, ex.velocity, ex.acceleration))
             else:
-                line = self._ensure_delay()
-                slot = self.ctl.sync.register_ext(lambda t, line=line: line.at(t - self.local_delay_time()))
-            self._lv_slots[mode] = slot
+                line = self.ensure_delay_line()
+                host = self.host            # bound here: the delay is read every cycle
+                slot = self.ctl.sync.register_ext(
+                    lambda t, line=line: line.at(t - host.config.leading_value_output.local_delay_time))
+            self.slots[mode] = slot
         return slot
 
-    def _ensure_extrapolator(self: "PositioningAxis") -> Extrapolator:
-        if self._extrapolator is None:
-            ex = Extrapolator(self)
-            ex.step(self.ctl.time, self.ctl.servo_cycle)
-            self._extrapolator = ex
-            dt = self.ctl.servo_cycle
-            # the filters run before the couplings of each servo cycle
-            self.ctl.sync.register_ext(lambda t, ex=ex: ex.step(t, dt))
-        return self._extrapolator
-
-    def _ensure_delay(self: "PositioningAxis") -> DelayLine:
-        if self._delay is None:
-            line = DelayLine(self)
-            self._delay = line
+    def ensure_extrapolator(self) -> Extrapolator:
+        """The actual value processing; the first call starts it in the sync stage (before the couplings
+        of each servo cycle)."""
+        if self.extrapolator is None:
             ctl = self.ctl
+            ex = Extrapolator(self)
+            ex.step(ctl.time, ctl.servo_cycle)
+            self.extrapolator = ex
+            dt = ctl.servo_cycle
+            ctl.sync.register_ext(lambda t, ex=ex: ex.step(t, dt))
+        return self.extrapolator
+
+    def ensure_delay_line(self) -> DelayLine:
+        """The delay line of the provided value; the first call starts recording it after each servo cycle
+        (the delay plus four cycles are kept)."""
+        if self.delay_line is None:
+            line = DelayLine(self)
+            self.delay_line = line
+            ctl = self.ctl
+            host = self.host
             provided = self.provided_value
 
             def record(t: float) -> None:
-                line.record(t, *provided(), self.local_delay_time() + 4 * ctl.servo_cycle)
+                line.record(t, *provided(), host.config.leading_value_output.local_delay_time + 4 * ctl.servo_cycle)
 
             record(ctl._bank_time)
             ctl.sync.register_post(record)
-        return self._delay
+        return self.delay_line
 
-    def local_delay_time(self: "PositioningAxis") -> float:
-        return self.config.leading_value_output.local_delay_time
+    def local_delay_time(self) -> float:
+        """CrossPlcSynchronousOperation.LocalLeadingValueDelayTime: the delay of delayed followers (§3.3.3)."""
+        return self.host.config.leading_value_output.local_delay_time
 
-    def provide_leading_value(self: "PositioningAxis", sink) -> None:
-        """Send this TO's leading value to another controller every servo cycle (cross-PLC, §8):
-        needs the leading value output configured (``LeadingValueOutput.enabled``; S7-1500:
+    def provide_leading_value(self, sink: LeadingValueSink) -> None:
+        """Send the provided value to another controller every servo cycle (cross-PLC, §8): needs the
+        leading value output configured (``LeadingValueOutput.enabled``; S7-1500:
         ``CrossPlcSynchronousOperation.Interface[1].EnableLeadingValueOutput`` = TRUE).
 
         Each telegram carries the delay of the local delayed followers, so that a leading axis proxy
         provides the value these followers use at the same time (§8.1.3) without being told the delay.
         """
-        if not self.config.leading_value_output.enabled:
-            raise ValueError(f"{self.name}: set CrossPlcSynchronousOperation.Interface[1].EnableLeadingValueOutput "
+        host = self.host
+        if not host.config.leading_value_output.enabled:
+            raise ValueError(f"{host.name}: set CrossPlcSynchronousOperation.Interface[1].EnableLeadingValueOutput "
                              f"to provide a cross-PLC leading value")
-        from .leading_value import LeadingValueSample
-        ctl = self.ctl
         counter = [0]
         provided = self.provided_value
-        self._ensure_delay()                # StatusProvidedLeadingValue.DelayedLeadingValue (§8.1.4)
+        valid_now = self.provided_value_valid
+        self.ensure_delay_line()            # StatusProvidedLeadingValue.DelayedLeadingValue (§8.1.4)
 
         def send(t: float) -> None:
-            m = self.config.modulo
+            config = host.config
+            m = config.modulo
             counter[0] += 1
-            valid, tracking = self.provided_value_valid()
+            valid, tracking = valid_now()
             sink.send(LeadingValueSample(
                 t, *provided(), valid=valid, tracking=tracking,
                 modulo_length=m.length if m.enabled else 0.0,
-                modulo_start=m.start, sequence=counter[0], delay=self.local_delay_time()))
-        ctl.sync.register_post(send)
+                modulo_start=m.start, sequence=counter[0], delay=config.leading_value_output.local_delay_time))
+        self.ctl.sync.register_post(send)
 
-    # --- tags -------------------------------------------------------------------------------------------
-    def leading_axis_dependent_time(self: "PositioningAxis") -> float:
+    # --- status (tags) ---------------------------------------------------------------------------------
+    def leading_axis_dependent_time(self) -> float:
         """T_i + T_Ipo + position filter T1 + T2 (§3.3.6); T_i is one servo cycle for a real encoder."""
-        x = self.config.extrapolation
-        ti = 0.0 if self.sim else self.ctl.servo_cycle
-        return ti + self.ctl.servo_cycle + x.position_filter_t1 + x.position_filter_t2
+        x = self.host.config.extrapolation
+        cycle = self.ctl.servo_cycle
+        ti = 0.0 if self.host.sim else cycle
+        return ti + cycle + x.position_filter_t1 + x.position_filter_t2
 
-    def extrapolation_time(self: "PositioningAxis") -> float:
+    def extrapolation_time(self) -> float:
         """Effective extrapolation time: leading-axis part (if included) + following-axis part + delay."""
-        x = self.config.extrapolation
+        x = self.host.config.extrapolation
         t = x.following_axis_time + self.local_delay_time()
         if x.include_leading_axis_time:
             t += self.leading_axis_dependent_time()
         return t
 
-    def extrapolation_status(self: "PositioningAxis") -> tuple[float, float, float, float]:
-        ex = self._extrapolator
+    def extrapolation_status(self) -> tuple[float, float, float, float]:
+        """StatusExtrapolation: filtered position and velocity, extrapolated position and velocity."""
+        ex = self.extrapolator
         if ex is None:
             return 0.0, 0.0, 0.0, 0.0
         return ex.filtered_position, ex.filtered_velocity, ex.position, ex.velocity
 
-    def delayed_leading_value(self: "PositioningAxis") -> tuple[float, float, float]:
-        if self._delay is None:
+    def delayed_leading_value(self) -> tuple[float, float, float]:
+        """StatusProvidedLeadingValue.DelayedLeadingValue (§8.1.4): zero until something is delayed."""
+        if self.delay_line is None:
             return 0.0, 0.0, 0.0
-        return self._delay.at(self.ctl._bank_time - self.local_delay_time())
+        return self.delay_line.at(self.ctl._bank_time - self.local_delay_time())
+
+
+class AxisLeadingValue(LeadingValueProvider):
+    """The leading value of an axis: what it delays for its delayed followers and sends to other
+    controllers is its setpoint; its actual values are those of its drive - a virtual axis's equal its
+    setpoints (§3.3.2, decision 29).  Setpoint coupling waits for position control (§3.3.5)."""
+
+    def __init__(self, host: LeadingAxisHost):
+        super().__init__(host)
+        self.axis = host
+        self.index = host.index              # the axis's row in the bank (fixed for its life)
+
+    def actual_values(self) -> tuple[float, float]:
+        b, i = self.ctl.bank, self.index
+        return float(b.act_p[i]), float(b.act_v[i])
+
+    def velocity_lag(self, dt: float) -> float:
+        """Half a cycle for a velocity that is the difference of two encoder values, none for the exact
+        velocity of a simulated drive."""
+        return 0.5 * dt if self.axis.servo else 0.0
+
+    def provided_value(self) -> tuple[float, float, float]:
+        b, i = self.ctl.bank, self.index
+        return float(b.sp_p[i]), float(b.sp_v[i]), float(b.sp_a[i])
+
+    def provided_value_at(self, t: float) -> tuple[float, float, float]:
+        return setpoint_at(self, t)
+
+    def provided_value_valid(self) -> tuple[bool, bool]:
+        ax = self.axis
+        return (ax.state in ("enabled", "disabling") and ax._blocking_alarm() is None,
+                bool(ax.servo and not self.ctl.bank.closed_loop[self.index]))
+
+    def lv_position_controlled(self) -> bool:
+        """Setpoint coupling needs a position-controlled leading axis (§3.3.5)."""
+        ax = self.axis
+        return ax.state in ("enabled", "disabling") and ax.position_controlled

@@ -16,11 +16,11 @@ from . import tags as T
 from ...kernel.axis import DISABLED, ENABLED, ENABLING, PositioningAxis
 from ...kernel.faults import Fault, Reaction
 from ...kernel.jobs import POSITIONING_KINDS, Job, JobKind, JobState
-from ...kernel.leading import LeadingValueMixin
+from ...kernel.leading import AxisLeadingValue
 from ...kernel.motion import limits
 from .parameters import S7_1500
 from ...kernel.profiles import INF, Planner, Profile
-from ...kernel.superimposed import SuperimposedMixin
+from ...kernel.superimposed import TIMER as SUPERIMPOSED_TIMER, SuperimposedMotion
 from ...kernel.sync_axis import SynchronousMixin
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -31,7 +31,7 @@ _EPS_T = 1e-9
 STOP_MODES = {0: 2, 2: 1}      # 0 emergency stop ramp (strongest), 2 maximum dynamic values
 
 
-class PositioningAxis1500(SuperimposedMixin, LeadingValueMixin, PositioningAxis):
+class PositioningAxis1500(PositioningAxis):
     """Positioning axis technology object of the S7-1500 (TO_PositioningAxis)."""
 
     schema = S7_1500
@@ -41,33 +41,86 @@ class PositioningAxis1500(SuperimposedMixin, LeadingValueMixin, PositioningAxis)
     _status_groups = T.GROUPS
     _read_param_tags = frozenset(T.DYNAMIC)
     # defaults read before __init__ has set everything up
-    _sup_carry = None
     coupling = None
     stop_job: Job | None = None
     command_not_accepted = False
     #: active homing of a virtual/simulated axis is a job like on a drive axis (§6.1.5.5, §9.3.1, §9.3.2)
     _sim_homing_at_once = False
 
+    # a leading TO (S7-1500T V5 §3.3): setpoints, actual values and the delayed value (see lv_provider)
+    provides_setpoints = True
+    provides_actual_values = True
+    provides_delayed_values = True
+
     def __init__(self, ctl: "Controller", name: str, cfg: Mapping[str, Any], **kw: Any):
-        self._sup_init()
+        self.superimposed = SuperimposedMotion(self)     # MC_MoveSuperimposed (§6.1.5.4)
         self.stop_job = None
         self.warnings: set[str] = set()          # dynamic values limited (alarms 501-504)
         self.command_not_accepted = False        # WarningWord.X3: a job was rejected (until MC_Reset)
         self._decoupled_state = None
-        self._lv_init()
         super().__init__(ctl, name, cfg, **kw)
+        self.lv_provider = AxisLeadingValue(self)        # the leading value it provides (§3.3, §8.1.3)
+
+    # --- the leading value it provides: what followers call (kernel.leading) ---------------------------
+    def lv_value(self, mode: str, t: float) -> tuple[float, float, float]:
+        return self.lv_provider.lv_value(mode, t)
+
+    def lv_slot(self, mode: str) -> int:
+        return self.lv_provider.lv_slot(mode)
+
+    def lv_position_controlled(self) -> bool:
+        return self.lv_provider.lv_position_controlled()
+
+    def lv_modulo(self) -> tuple[float, float] | None:
+        return self.lv_provider.lv_modulo()
+
+    def leading_value_invalid(self, mode: str) -> str | None:
+        return self.lv_provider.leading_value_invalid(mode)
+
+    def provide_leading_value(self, sink: Any) -> None:
+        self.lv_provider.provide_leading_value(sink)
+
+    # --- the superimposed motion (kernel.superimposed): what submit, the override and the synchronous
+    # operation call; one-line hand-overs to ``self.superimposed``
+    @property
+    def superimposed_active(self) -> bool:
+        return self.superimposed.active
+
+    @property
+    def sup_job(self) -> Job | None:
+        return self.superimposed.job
+
+    @property
+    def sup_profile(self) -> Profile | None:
+        return self.superimposed.profile
+
+    def start_superimposed(self, job: Job, lim: Any) -> None:
+        self.superimposed.start(job, lim)
+
+    def _sup_take_over(self, t: float) -> None:
+        self.superimposed.take_over(t)
+
+    @property
+    def _sup_carry(self) -> tuple[float, float, float] | None:
+        return self.superimposed.carry
+
+    def sup_state_at(self, t: float) -> tuple[float, float, float]:
+        return self.superimposed.state_at(t)
+
+    def _sup_clear(self) -> None:
+        self.superimposed.clear()
 
     # --- state ------------------------------------------------------------------------------------------
     def _state_at(self, t: float) -> tuple[float, float, float]:
         p, v, a = super()._state_at(t)
-        carry = self._sup_carry
+        carry = self.superimposed.carry
         if carry is not None:
             p, v, a = p + carry[0], v + carry[1], a + carry[2]
         return p, v, a
 
     def _start_profile(self, profile: Profile, plan=None) -> None:
         super()._start_profile(profile, plan)
-        self._sup_carry = None
+        self.superimposed.carry = None
 
     def actual_acceleration(self) -> float:
         return float(self.ctl.bank.sp_a[self.index])
@@ -88,9 +141,7 @@ class PositioningAxis1500(SuperimposedMixin, LeadingValueMixin, PositioningAxis)
         t = self.now
         if fault.reaction != Reaction.NONE:
             self._abort_sync(t, fault=fault)
-            if self.sup_job is not None and self.sup_job.busy:
-                self._finish_job(self.sup_job, JobState.ERROR, t, fault)
-            self._sup_take_over(t)
+            self.superimposed.take_over(t, JobState.ERROR, fault)
             stop = self.stop_job
             if stop is not None and stop.busy and fault.reaction == Reaction.REMOVE_ENABLE:
                 self._finish_job(stop, JobState.ERROR, t, fault)
@@ -258,8 +309,8 @@ class PositioningAxis1500(SuperimposedMixin, LeadingValueMixin, PositioningAxis)
         super()._on_milestone(name, t)
 
     def _on_timer(self, name: str, t: float) -> None:
-        if name == "superimposed":
-            self._on_superimposed_timer(t)
+        if name == SUPERIMPOSED_TIMER:
+            self.superimposed.on_timer(t)
             return
         if name == "phase":
             c = self.coupling
@@ -314,9 +365,7 @@ class PositioningAxis1500(SuperimposedMixin, LeadingValueMixin, PositioningAxis)
         return max_dynamics(self)
 
     def _abort_all(self, t: float, *, keep_simulated: bool = True) -> None:
-        if self.sup_job is not None and self.sup_job.busy:
-            self._finish_job(self.sup_job, JobState.ABORTED, t)
-        self._sup_take_over(t)
+        self.superimposed.take_over(t)
         stop = self.stop_job
         if stop is not None and stop.busy:
             self._finish_job(stop, JobState.ABORTED, t)
@@ -327,7 +376,7 @@ class PositioningAxis1500(SuperimposedMixin, LeadingValueMixin, PositioningAxis)
     def reinitialize(self, reason: str) -> None:
         self._enabled_once = False               # a restarted technology object counts anew (§7.1.2)
         self._abort_all(self.now, keep_simulated=False)
-        self._sup_clear()
+        self.superimposed.clear()
         self.warnings.clear()
         self.command_not_accepted = False
         super().reinitialize(reason)

@@ -23,7 +23,8 @@ from ...kernel.tag_views import TagAccessError
 from ...kernel.fault_injection import checked_real
 from ...kernel.faults import Fault, Reaction
 from ...kernel.jobs import Job, JobState
-from ...kernel.leading import LeadingValueMixin
+from ...kernel.leading import LeadingValueProvider
+from ...kernel.leading_value import LeadingValueSink
 from ...kernel.schema import E12, P, R, REAL, AxisSchema, Param
 from .parameters import _PARAMS_1500, canonical
 from ...kernel.tag_views import TagViews as AxisTagsMixin
@@ -70,15 +71,15 @@ DYNAMIC: dict[str, Callable[["ExternalEncoder"], Any]] = {
     "StatusSensor[1].Error": lambda e: any(a.kind == F.ENCODER for a in e.alarms),
     "StatusSensor[1].Position": lambda e: e._wrap(e.position),
     "StatusSensor[1].Velocity": lambda e: e.velocity,
-    "StatusExtrapolation.FilteredPosition": lambda e: e.extrapolation_status()[0],
-    "StatusExtrapolation.FilteredVelocity": lambda e: e.extrapolation_status()[1],
-    "StatusExtrapolation.ExtrapolatedPosition": lambda e: e.extrapolation_status()[2],
-    "StatusExtrapolation.ExtrapolatedVelocity": lambda e: e.extrapolation_status()[3],
-    "Extrapolation.LeadingAxisDependentTime": lambda e: e.leading_axis_dependent_time(),
+    "StatusExtrapolation.FilteredPosition": lambda e: e.lv_provider.extrapolation_status()[0],
+    "StatusExtrapolation.FilteredVelocity": lambda e: e.lv_provider.extrapolation_status()[1],
+    "StatusExtrapolation.ExtrapolatedPosition": lambda e: e.lv_provider.extrapolation_status()[2],
+    "StatusExtrapolation.ExtrapolatedVelocity": lambda e: e.lv_provider.extrapolation_status()[3],
+    "Extrapolation.LeadingAxisDependentTime": lambda e: e.lv_provider.leading_axis_dependent_time(),
     # §8.1.4: the leading value provided to delayed followers and other controllers
-    "StatusProvidedLeadingValue.DelayedLeadingValue.Position": lambda e: e.delayed_leading_value()[0],
-    "StatusProvidedLeadingValue.DelayedLeadingValue.Velocity": lambda e: e.delayed_leading_value()[1],
-    "StatusProvidedLeadingValue.DelayedLeadingValue.Acceleration": lambda e: e.delayed_leading_value()[2],
+    "StatusProvidedLeadingValue.DelayedLeadingValue.Position": lambda e: e.lv_provider.delayed_leading_value()[0],
+    "StatusProvidedLeadingValue.DelayedLeadingValue.Velocity": lambda e: e.lv_provider.delayed_leading_value()[1],
+    "StatusProvidedLeadingValue.DelayedLeadingValue.Acceleration": lambda e: e.lv_provider.delayed_leading_value()[2],
 }
 
 
@@ -98,7 +99,7 @@ def _position(x: Any) -> float | None:
     return v if abs(v) <= E12 else None
 
 
-class ExternalEncoder(LeadingValueMixin, AxisTagsMixin):
+class ExternalEncoder(AxisTagsMixin):
     """External encoder technology object: a leading value source with actual values only."""
 
     kind = "TO_ExternalEncoder"
@@ -110,6 +111,7 @@ class ExternalEncoder(LeadingValueMixin, AxisTagsMixin):
     _read_param_tags = frozenset(DYNAMIC)
     provides_setpoints = False
     provides_actual_values = True
+    provides_delayed_values = True
 
     def __init__(self, ctl: "Controller", name: str, cfg: Mapping[str, Any]):
         self.ctl = ctl
@@ -127,7 +129,7 @@ class ExternalEncoder(LeadingValueMixin, AxisTagsMixin):
         self.passive_home = None
         self._plant_fn: Callable[[float], float] | None = None
         self._reset_plant()
-        self._lv_init()
+        self.lv_provider = EncoderLeadingValue(self)
         ctl._encoders.append(self)
 
     def __repr__(self) -> str:
@@ -279,8 +281,9 @@ class ExternalEncoder(LeadingValueMixin, AxisTagsMixin):
         self.position += delta
         if self._last is not None:
             self._last += delta
-        if self._extrapolator is not None:
-            self._extrapolator.ready = False          # restart the filters at the new coordinates
+        ex = self.lv_provider.extrapolator
+        if ex is not None:
+            ex.ready = False                          # restart the filters at the new coordinates
         self.homed = True
         job.reference_position = self._wrap(target)
         job.finish(JobState.DONE)
@@ -310,33 +313,52 @@ class ExternalEncoder(LeadingValueMixin, AxisTagsMixin):
             return 0
         return int(math.floor((self.position - e["Modulo.StartValue"]) / e["Modulo.Length"]))
 
-    # --- leading value source ------------------------------------------------------------------------------
-    def actual_values(self) -> tuple[float, float]:
-        return self.position, self.velocity
-
+    # --- leading value source (S7-1500T V5 §3.3.2-§3.3.4, §8.1.3) ----------------------------------------
     @property
     def sim(self) -> bool:
         return False
 
+    def lv_value(self, mode: str, t: float) -> tuple[float, float, float]:
+        return self.lv_provider.lv_value(mode, t)
+
+    def lv_slot(self, mode: str) -> int:
+        return self.lv_provider.lv_slot(mode)
+
     def lv_position_controlled(self) -> bool:
-        """Actual value coupling needs valid actual values (§3.3.5)."""
-        return self.state == "enabled" and not self.alarms
+        return self.lv_provider.lv_position_controlled()
+
+    def lv_modulo(self) -> tuple[float, float] | None:
+        return self.lv_provider.lv_modulo()
 
     def leading_value_invalid(self, mode: str) -> str | None:
-        """Why a new coupling cannot use this encoder now (None: it can): with a pending encoder fault the
-        actual value is only the last one held (§3.3.2)."""
-        return None if self.actual_values_valid() else f"actual value of {self.name} invalid"
+        return self.lv_provider.leading_value_invalid(mode)
+
+    def provide_leading_value(self, sink: LeadingValueSink) -> None:
+        self.lv_provider.provide_leading_value(sink)
+
+
+class EncoderLeadingValue(LeadingValueProvider):
+    """The leading value of an external encoder: its extrapolated actual value, also for delayed followers
+    and other controllers (an encoder has no setpoint, §3.3.3, §8.1.3)."""
+
+    def __init__(self, encoder: ExternalEncoder):
+        super().__init__(encoder)
+        self.encoder = encoder
+
+    def actual_values(self) -> tuple[float, float]:
+        enc = self.encoder
+        return enc.position, enc.velocity
 
     def actual_values_valid(self) -> bool:
         """StatusSensor[1].Error FALSE: no encoder fault pending (§A.1.31)."""
-        return not any(a.kind == F.ENCODER for a in self.alarms)
+        return not any(a.kind == F.ENCODER for a in self.encoder.alarms)
 
     def velocity_lag(self, dt: float) -> float:
         return 0.5 * dt                 # the velocity is the difference of the last two counts
 
     def provided_value(self) -> tuple[float, float, float]:
         """The extrapolated actual value: what delayed followers and other controllers get (§3.3.3)."""
-        ex = self._extrapolator or self._ensure_extrapolator()
+        ex = self.extrapolator or self.ensure_extrapolator()
         return ex.position, ex.velocity, ex.acceleration
 
     def provided_value_at(self, t: float) -> tuple[float, float, float]:
@@ -345,5 +367,14 @@ class ExternalEncoder(LeadingValueMixin, AxisTagsMixin):
     def provided_value_valid(self) -> tuple[bool, bool]:
         return self.lv_position_controlled(), False
 
+    def lv_position_controlled(self) -> bool:
+        """Actual value coupling needs valid actual values (§3.3.5)."""
+        enc = self.encoder
+        return enc.state == "enabled" and not enc.alarms
 
-__all__ = ["ExternalEncoder", "ENCODER_SCHEMA", "R"]
+    def leading_value_invalid(self, mode: str) -> str | None:
+        """With a pending encoder fault the actual value is only the last one held (§3.3.2)."""
+        return None if self.actual_values_valid() else f"actual value of {self.encoder.name} invalid"
+
+
+__all__ = ["EncoderLeadingValue", "ExternalEncoder", "ENCODER_SCHEMA", "R"]

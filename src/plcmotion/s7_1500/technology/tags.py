@@ -293,14 +293,14 @@ SYNC_DYNAMIC.update({
 
 #: leading value tags every S7-1500 axis has (extrapolation, provided leading value)
 _LV_DYNAMIC: dict[str, Callable[["Axis"], Any]] = {
-    "StatusExtrapolation.FilteredPosition": lambda ax: ax.extrapolation_status()[0],
-    "StatusExtrapolation.FilteredVelocity": lambda ax: ax.extrapolation_status()[1],
-    "StatusExtrapolation.ExtrapolatedPosition": lambda ax: ax.extrapolation_status()[2],
-    "StatusExtrapolation.ExtrapolatedVelocity": lambda ax: ax.extrapolation_status()[3],
-    "Extrapolation.LeadingAxisDependentTime": lambda ax: ax.leading_axis_dependent_time(),
-    "StatusProvidedLeadingValue.DelayedLeadingValue.Position": lambda ax: ax.delayed_leading_value()[0],
-    "StatusProvidedLeadingValue.DelayedLeadingValue.Velocity": lambda ax: ax.delayed_leading_value()[1],
-    "StatusProvidedLeadingValue.DelayedLeadingValue.Acceleration": lambda ax: ax.delayed_leading_value()[2],
+    "StatusExtrapolation.FilteredPosition": lambda ax: ax.lv_provider.extrapolation_status()[0],
+    "StatusExtrapolation.FilteredVelocity": lambda ax: ax.lv_provider.extrapolation_status()[1],
+    "StatusExtrapolation.ExtrapolatedPosition": lambda ax: ax.lv_provider.extrapolation_status()[2],
+    "StatusExtrapolation.ExtrapolatedVelocity": lambda ax: ax.lv_provider.extrapolation_status()[3],
+    "Extrapolation.LeadingAxisDependentTime": lambda ax: ax.lv_provider.leading_axis_dependent_time(),
+    "StatusProvidedLeadingValue.DelayedLeadingValue.Position": lambda ax: ax.lv_provider.delayed_leading_value()[0],
+    "StatusProvidedLeadingValue.DelayedLeadingValue.Velocity": lambda ax: ax.lv_provider.delayed_leading_value()[1],
+    "StatusProvidedLeadingValue.DelayedLeadingValue.Acceleration": lambda ax: ax.lv_provider.delayed_leading_value()[2],
 }
 DYNAMIC.update(_LV_DYNAMIC)
 SYNC_DYNAMIC.update(_LV_DYNAMIC)

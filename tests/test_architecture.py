@@ -100,7 +100,7 @@ def _cycles(graph: dict[str, set[str]]) -> list[set[str]]:
 # Kernel modules still in an import circle, all through ``self`` annotations of the axis mixins
 # (``if TYPE_CHECKING: from .axis import PositioningAxis``) and the axis <-> runtime back-reference.  The
 # composition of the axis from components (issue 9, item 3) removes them; until then the circle must not grow.
-KNOWN_CIRCLE = {"axis", "command_table", "config", "fault_injection", "homing", "runtime", "switches", "sync",
+KNOWN_CIRCLE = {"axis", "command_table", "config", "fault_injection", "homing", "runtime", "switches",
                 "table_run", "tags"}
 
 

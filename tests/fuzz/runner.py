@@ -133,9 +133,9 @@ class _AxisWatch:
         bound the total setpoint (a following axis follows its leading value)."""
         if not self.is1500:
             return False
-        d = self.axis.__dict__          # plain attribute reads: the tag __getattr__ is slow for misses
-        return bool(d.get("coupling") is not None or d.get("waiting") is not None or d.get("sim_job") is not None
-                    or d.get("lv_additive_job") is not None or d.get("phasing_job") is not None
+        f = self.axis.__dict__.get("follower")  # plain attribute reads: the tag __getattr__ is slow for misses
+        return bool(f is not None and (f.coupling is not None or f.waiting is not None or f.sim_job is not None
+                                       or f.lv_additive_job is not None or f.phasing_job is not None)
                     or self.axis.superimposed_active)
 
 

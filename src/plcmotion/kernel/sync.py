@@ -23,12 +23,11 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any, Callable
+from typing import Any, Callable, Protocol
 
 import numpy as np
 
 from .cam import CamCurve
-from .protocols import ServoHost
 from .sync_limits import SwLimitWatch
 
 
@@ -61,7 +60,7 @@ def quintic(e0: float, d0: float, dd0: float) -> np.ndarray:
 class Coupling:
     """One following axis coupled (or waiting to couple) to one leading value source."""
 
-    follower: Any                      # the synchronous axis
+    follower: Any                      # the following axis (its ``follower`` component runs the job)
     source: Any                        # leading value source TO
     job: Any                           # the GearIn / GearInPos / CamIn job
     mode: str = "setpoint"             # setpoint | actual | delayed
@@ -234,7 +233,7 @@ class _Level:
             self.set_phase(c)
 
     def set_additive(self, c: Coupling) -> None:
-        add = c.follower.lv_additive
+        add = c.follower.follower.lv_additive
         self.add[:, c.slot] = add if add is not None else (0.0, 0.0, 0.0)
         self.any_add = bool(self.add.any())
 
@@ -248,10 +247,17 @@ class _Level:
             self.any_phase = True
 
 
+class SyncHost(Protocol):
+    """What the sync stage uses of its controller."""
+
+    bank: Any                          # the array bank of all axes (setpoints sp_p, sp_v, sp_a)
+    servo_cycle: float
+
+
 class SyncStage:
     """All leading value couplings of a controller."""
 
-    def __init__(self, ctl: ServoHost):
+    def __init__(self, ctl: SyncHost):
         self.ctl = ctl
         self.couplings: list[Coupling] = []
         self.levels: list[_Level] = []
@@ -419,7 +425,7 @@ class SyncStage:
                 self._compile()
         for axis, side in self.sw_limits.check(b, self.ctl.servo_cycle):
             try:
-                axis._sw_limit_in_reach(side, t)
+                axis.follower.sw_limit_in_reach(side, t)
             except Exception as exc:   # isolate a defect to its axis
                 axis._internal_error(exc)
         for fn in self._post:
@@ -548,11 +554,12 @@ class SyncStage:
             events = [e for e in events if id(e[1]) not in failed]
             events.extend(("lv_invalid", lv.couplings[k], None) for k in np.flatnonzero(bad))
         for kind, c, arg in events:
+            role = c.follower.follower          # the Follower component of the following axis
             try:
-                c.follower._sync_event(kind, c, arg, t)
+                role.sync_event(kind, c, arg, t)
             except Exception as exc:   # isolate a defect to its job and axis
                 try:
-                    c.follower._sync_failure(c, exc)
+                    role.failure(c, exc)
                 except Exception as exc2:
                     c.follower._internal_error(exc2)
 

@@ -2,7 +2,7 @@
 MC_PhasingRelative, MC_PhasingAbsolute, MC_CamIn, MC_SynchronizedMotionSimulation,
 MC_LeadingValueAdditive.
 
-The jobs run in the following axis (``kernel.sync_axis``); these classes check the inputs, hand the
+The jobs run in the following axis (``kernel.follower``); these classes check the inputs, hand the
 jobs over and show their state.  StartSync stays TRUE once synchronization has begun, until the job
 ends (the manual leaves open whether it drops with InSync; docs/decisions_s7_1500.md).
 """

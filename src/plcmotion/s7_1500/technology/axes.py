@@ -3,7 +3,7 @@
 They share the kernel's motion with the S7-1200 axis and differ where the S7-1500 does: every job
 brings its own dynamics (limited by ``DynamicLimits``), ``MC_Stop`` locks the axis while its Execute is
 TRUE, a superimposed motion can run on top of any basic motion, jobs override each other by the tables
-of §9.3, and the synchronous axis follows leading values (``kernel.sync_axis``).
+of §9.3, and the synchronous axis follows leading values (its ``kernel.follower.Follower``).
 """
 from __future__ import annotations
 
@@ -19,9 +19,9 @@ from ...kernel.jobs import POSITIONING_KINDS, Job, JobKind, JobState
 from ...kernel.leading import AxisLeadingValue
 from ...kernel.motion import limits
 from .parameters import S7_1500
-from ...kernel.profiles import INF, Planner, Profile
+from ...kernel.profiles import INF, Profile
+from ...kernel.follower import Follower
 from ...kernel.superimposed import TIMER as SUPERIMPOSED_TIMER, SuperimposedMotion
-from ...kernel.sync_axis import SynchronousMixin
 
 if TYPE_CHECKING:  # pragma: no cover
     from ...kernel.runtime import Controller
@@ -41,7 +41,7 @@ class PositioningAxis1500(PositioningAxis):
     _status_groups = T.GROUPS
     _read_param_tags = frozenset(T.DYNAMIC)
     # defaults read before __init__ has set everything up
-    coupling = None
+    follower: Follower | None = None             # the following-axis ability (synchronous axis only)
     stop_job: Job | None = None
     command_not_accepted = False
     #: active homing of a virtual/simulated axis is a job like on a drive axis (§6.1.5.5, §9.3.1, §9.3.2)
@@ -57,7 +57,6 @@ class PositioningAxis1500(PositioningAxis):
         self.stop_job = None
         self.warnings: set[str] = set()          # dynamic values limited (alarms 501-504)
         self.command_not_accepted = False        # WarningWord.X3: a job was rejected (until MC_Reset)
-        self._decoupled_state = None
         super().__init__(ctl, name, cfg, **kw)
         self.lv_provider = AxisLeadingValue(self)        # the leading value it provides (§3.3, §8.1.3)
 
@@ -140,7 +139,8 @@ class PositioningAxis1500(PositioningAxis):
             return
         t = self.now
         if fault.reaction != Reaction.NONE:
-            self._abort_sync(t, fault=fault)
+            if self.follower is not None:
+                self.follower.abort(t, fault=fault)
             self.superimposed.take_over(t, JobState.ERROR, fault)
             stop = self.stop_job
             if stop is not None and stop.busy and fault.reaction == Reaction.REMOVE_ENABLE:
@@ -157,13 +157,6 @@ class PositioningAxis1500(PositioningAxis):
         rejected" shows WarningWord.X3 (CommandNotAccepted) until MC_Reset (docs/s7_1500/decisions.md)."""
         if not fault.ack:
             self.command_not_accepted = True
-
-    # synchronous operation hooks (no-ops on the positioning axis) -------------------------------------
-    def _abort_sync(self, t: float, *, waiting: bool = True, active: bool = True, fault: Fault | None = None) -> None:
-        return None
-
-    def _override_sync(self, new: str, t: float, new_job: Job | None) -> None:
-        return None
 
     # --- jobs -------------------------------------------------------------------------------------------
     def check_start(self, job: Job) -> Fault | None:
@@ -186,7 +179,7 @@ class PositioningAxis1500(PositioningAxis):
             self.start_superimposed(job, lim)
             return
         cls = O.job_class(job)
-        if job.kind == JobKind.HOME_ACTIVE and self._sync_blocks_homing():
+        if job.kind == JobKind.HOME_ACTIVE and self.follower is not None and self.follower.blocks_homing():
             job.finish(JobState.ERROR, F.reject(F.SYNC_ACTIVE))
             return
         if job.kind == JobKind.STOP and self.stop_job is not None:
@@ -265,9 +258,6 @@ class PositioningAxis1500(PositioningAxis):
         super().change_jog_velocity(job, velocity)
         self._renote_limits(job, before)
 
-    def _sync_blocks_homing(self) -> bool:
-        return False
-
     def _override(self, new: str, t: float, new_job: Job | None) -> None:
         """End what the new job of class ``new`` aborts (§9.3.1, §9.3.2)."""
         run = self.job
@@ -277,7 +267,8 @@ class PositioningAxis1500(PositioningAxis):
         if passive is not None and passive.busy and O.aborts(new, O.HOME_PASSIVE):
             self._finish_job(passive, JobState.ABORTED, t)
             self.passive_home = None
-        self._override_sync(new, t, new_job)
+        if self.follower is not None:
+            self.follower.override(new, t, new_job)
         if self.sup_profile is not None and O.aborts(new, O.SUPERIMPOSED):
             self._sup_take_over(t)
 
@@ -303,8 +294,9 @@ class PositioningAxis1500(PositioningAxis):
             if stop.extra.get("released"):
                 self.stop_job = None
             return
-        if name == "end" and self.coupling is not None and self.coupling.applied:
-            self._on_sync_profile_end(t)
+        f = self.follower
+        if name == "end" and f is not None and f.coupling is not None and f.coupling.applied:
+            f.on_profile_end(t)
             return
         super()._on_milestone(name, t)
 
@@ -313,14 +305,10 @@ class PositioningAxis1500(PositioningAxis):
             self.superimposed.on_timer(t)
             return
         if name == "phase":
-            c = self.coupling
-            if c is not None and c.phase is not None:
-                self._phase_segment(c, t)
+            if self.follower is not None:
+                self.follower.on_phase_timer(t)
             return
         super()._on_timer(name, t)
-
-    def _on_sync_profile_end(self, t: float) -> None:
-        return None
 
     # --- enable / disable (MC_Power StopMode: 0 emergency stop, 1 immediate stop, 2 maximum dynamics) ----
     _enabled_once = False
@@ -370,7 +358,8 @@ class PositioningAxis1500(PositioningAxis):
         if stop is not None and stop.busy:
             self._finish_job(stop, JobState.ABORTED, t)
         self.stop_job = None
-        self._abort_sync(t)
+        if self.follower is not None:
+            self.follower.abort(t)
         super()._abort_all(t)
 
     def reinitialize(self, reason: str) -> None:
@@ -382,25 +371,51 @@ class PositioningAxis1500(PositioningAxis):
         super().reinitialize(reason)
 
 
-class SynchronousAxis(SynchronousMixin, PositioningAxis1500):
+class SynchronousAxis(PositioningAxis1500):
     """Synchronous axis technology object (TO_SynchronousAxis): a positioning axis that can follow a
-    leading value (§3.1).  ``leading_values``: the possible leading values, as names or
-    ``(name, "setpoint" | "actual" | "delayed")`` pairs (§6.1.3)."""
+    leading value (§3.1) - its ``follower`` component.  ``leading_values``: the possible leading values,
+    as names or ``(name, "setpoint" | "actual" | "delayed")`` pairs (§6.1.3)."""
 
     _dynamic = T.SYNC_DYNAMIC
     _dynamic_types = T.SYNC_TYPES
     _status_groups = T.SYNC_GROUPS
     _read_param_tags = frozenset(T.SYNC_DYNAMIC)
-    waiting = None
 
     def __init__(self, ctl: "Controller", name: str, cfg: Mapping[str, Any], *, leading_values=(), **kw: Any):
-        self._sync_init(leading_values)
+        self.follower: Follower = Follower(self, leading_values, name)
         super().__init__(ctl, name, cfg, **kw)
 
+    # what the synchronous instructions call (s7_1500/sync.py) --------------------------------------------
+    @property
+    def possible_leading_values(self) -> dict[str, str]:
+        return self.follower.possible_leading_values
+
+    def sync_submit(self, job: Job) -> None:
+        self.follower.submit(job)
+
+    def phase_shift(self, t: float | None = None) -> float:
+        return self.follower.phase_shift(t)
+
+    def covered_phase_shift(self, job: Job) -> float:
+        return self.follower.covered_phase_shift(job)
+
+    def set_lv_additive(self, job: Job, p: float, v: float, a: float) -> Fault | None:
+        return self.follower.set_lv_additive(job, p, v, a)
+
+    def end_lv_additive(self, job: Job) -> None:
+        self.follower.end_lv_additive(job)
+
+    def start_simulation(self, job: Job) -> Fault | None:
+        return self.follower.start_simulation(job)
+
+    def end_simulation(self, job: Job) -> None:
+        self.follower.end_simulation(job)
+
+    # the axis core with a coupling -------------------------------------------------------------------------
     def _state_at(self, t: float) -> tuple[float, float, float]:
-        c = self.coupling
+        c = self.follower.coupling
         if c is not None and c.applied:
-            p, v, a = self._coupled_state_at(t)
+            p, v, a = self.follower.coupled_state_at(t)
             sp, sv, sa = self.sup_state_at(t)
             p, v, a = p - sp, v - sv, a - sa
             carry = self._sup_carry
@@ -409,79 +424,20 @@ class SynchronousAxis(SynchronousMixin, PositioningAxis1500):
             return p, v, a
         return super()._state_at(t)
 
-    def _sync_blocks_homing(self) -> bool:
-        # §9.3.2: active homing does not abort an active GearInPos/CamIn; the homing job is rejected
-        c = self.coupling
-        return c is not None and not c.simulated and c.job.kind in (JobKind.GEAR_IN_POS, JobKind.CAM_IN)
-
-    def _override_sync(self, new: str, t: float, new_job: Job | None) -> None:
-        c = self.coupling
-        if c is not None and not c.simulated and c.job is not new_job:
-            column = O.GEAR_IN if c.job.kind == JobKind.GEAR_IN else O.SYNC_ACTIVE
-            if O.aborts(new, column):
-                self._end_coupling(c, JobState.ABORTED, t, replan=True)
-        w = self.waiting
-        if w is not None and w.job is not new_job:
-            column = O.GEAR_IN if w.job.kind == JobKind.GEAR_IN else O.SYNC_WAITING
-            if O.aborts(new, column):
-                self.waiting = None
-                self.ctl.sync.remove(w)
-                self._finish_coupling_job(w, JobState.ABORTED, t)
-        ph = self.phasing_job
-        if ph is not None and ph.busy and ph is not new_job and O.aborts(new, O.PHASING):
-            self._finish_job(ph, JobState.ABORTED, t)
-            c = self.coupling
-            if c is not None and c.phase is not None:
-                p = c.phase.at(t)[0]
-                c.phase = Planner.hold(t, p)
-                c.phase_seg = 0
-                self._phase_segment(c, t)
-        add = self.lv_additive_job
-        if add is not None and add.busy and add is not new_job and O.aborts(new, O.LV_ADDITIVE):
-            self.lv_additive_job = None
-            self.lv_additive = None
-            self._push_additive()
-            self._finish_job(add, JobState.ABORTED, t)
-
-    def _abort_sync(self, t: float, *, waiting: bool = True, active: bool = True, fault: Fault | None = None,
-                    keep_simulated: bool = True) -> None:
-        c = self.coupling
-        if c is not None and c.simulated and keep_simulated and fault is None:
-            active = False                       # a simulated synchronous operation survives (§9.1.6)
-        SynchronousMixin._abort_sync(self, t, waiting=waiting, active=active, fault=fault)
+    def _replan(self) -> None:
+        self.follower.watch_sw_limits()      # limits, their activation or the homed state may have changed
+        super()._replan()
 
     def _abort_all(self, t: float, *, keep_simulated: bool = True) -> None:
         if not keep_simulated:
-            if self.sim_job is not None:
-                job = self.sim_job
-                self.sim_job = None
-                if job.busy:
-                    self._finish_job(job, JobState.ABORTED, t)
-            c = self.coupling
-            if c is not None:
-                c.simulated = False
-                self.ctl.sync.changed()
-        add = self.lv_additive_job
-        if add is not None and not keep_simulated:
-            self.lv_additive_job = None
-            self.lv_additive = None
-            if add.busy:
-                self._finish_job(add, JobState.ABORTED, t)
+            self.follower.end_simulation_and_additive(t)
         super()._abort_all(t, keep_simulated=keep_simulated)
         if not keep_simulated:
-            SynchronousMixin._abort_sync(self, t)
-
-    def _set_loop_flags(self) -> None:
-        super()._set_loop_flags()
+            self.follower.abort(t, keep_simulated=False)
 
     def _remove_enable(self, t: float, by_power: bool = False) -> None:
-        c = self.coupling
-        if c is not None and not c.simulated:
-            self._abort_sync(t)
+        self.follower.on_enable_removed(t)
         super()._remove_enable(t, by_power)
-
-    def _on_sync_profile_end(self, t: float) -> None:
-        SynchronousMixin._on_sync_profile_end(self, t)
 
 
 __all__ = ["PositioningAxis1500", "SynchronousAxis", "DISABLED", "INF", "math"]

@@ -113,15 +113,21 @@ def _fe_warning(ax: "Axis") -> bool:
     return abs(float(b.fe[i])) > level * _fe_limit(ax)
 
 
+def _follower(ax: "Axis") -> Any:
+    """The following-axis component of a synchronous axis (None on the other axes)."""
+    return getattr(ax, "follower", None)
+
+
 def status_word(ax: "Axis") -> int:
     kind = _kind(ax)
-    sync = getattr(ax, "coupling", None)
+    fol = _follower(ax)
+    sync = fol.coupling if fol is not None else None
     enabled = ax.state in ("enabled", "disabling")
     # §A.1.37 bit 6 "Done": 0 while a motion job is in progress - MC_Stop braking the axis is one (it lives
     # in stop_job, not in job); passive homing is not, it moves nothing (§6.1.5.5; docs/s7_1500/decisions.md)
     stop = ax.stop_job
     moving_job = kind is not None or ax.superimposed_active or sync is not None or (
-        getattr(ax, "waiting", None) is not None) or (stop is not None and stop.busy)
+        fol is not None and fol.waiting is not None) or (stop is not None and stop.busy)
     accelerating, decelerating = S.accelerating(ax), S.decelerating(ax)
     bits = {
         0: enabled,
@@ -141,10 +147,10 @@ def status_word(ax: "Axis") -> int:
         16: S.software_limit_active(ax, "max"),
         17: ax.hw_approached["min"],
         18: ax.hw_approached["max"],
-        21: bool(sync is not None and getattr(ax, "synchronizing", False)),
-        22: bool(sync is not None and getattr(ax, "synchronous", False)),
+        21: bool(sync is not None and fol.synchronizing),
+        22: bool(sync is not None and fol.synchronous),
         23: ax.superimposed_active,
-        24: bool(getattr(ax, "phasing_job", None) is not None and ax.phasing_job.busy),
+        24: bool(fol is not None and fol.phasing_job is not None and fol.phasing_job.busy),
         25: ax.ueff["Simulation.Mode"] == 1,
         28: enabled and not ax.position_controlled,
     }
@@ -177,7 +183,8 @@ def warning_word(ax: "Axis") -> int:
 
 def sync_status_word(ax: "Axis") -> int:
     b, i = _b(ax), ax.index
-    c = getattr(ax, "coupling", None)
+    fol = _follower(ax)
+    c = fol.coupling if fol is not None else None
     lim = ax.config.limits
     exceeded = {}
     if c is not None and c.applied:
@@ -187,13 +194,14 @@ def sync_status_word(ax: "Axis") -> int:
                     2: a * v < 0 and abs(a) > lim.max_deceleration * (1 + 1e-9)}
     bits = dict(exceeded)
     bits[3] = c is not None and c.simulated
-    job = getattr(ax, "lv_additive_job", None)
+    job = fol.lv_additive_job if fol is not None else None
     bits[4] = job is not None and job.busy
     return SyncStatusWord(pack(bits))
 
 
 def _coupling_value(ax: "Axis", name: str, default: float) -> float:
-    c = getattr(ax, "coupling", None)
+    fol = _follower(ax)
+    c = fol.coupling if fol is not None else None
     if c is None or c.cam is None:
         return default
     return getattr(c, name)
@@ -275,19 +283,20 @@ DYNAMIC: dict[str, Callable[["Axis"], Any]] = {
 #: the synchronous axis adds its synchronous operation status (§A.1.33)
 SYNC_DYNAMIC: dict[str, Callable[["Axis"], Any]] = dict(DYNAMIC)
 SYNC_DYNAMIC.update({
-    "StatusSynchronizedMotion.FunctionState": lambda ax: ax.function_state(),
-    "StatusSynchronizedMotion.WaitingFunctionState": lambda ax: ax.waiting_function_state(),
-    "StatusSynchronizedMotion.PhaseShift": lambda ax: ax.phase_shift(),
-    "StatusSynchronizedMotion.ActualMaster": lambda ax: ax.coupling.source.db_number if ax.coupling else 0,
-    "StatusSynchronizedMotion.ActualCam": lambda ax: ax.coupling.cam.db_number
-    if ax.coupling is not None and ax.coupling.cam is not None else 0,
+    "StatusSynchronizedMotion.FunctionState": lambda ax: ax.follower.function_state(),
+    "StatusSynchronizedMotion.WaitingFunctionState": lambda ax: ax.follower.waiting_function_state(),
+    "StatusSynchronizedMotion.PhaseShift": lambda ax: ax.follower.phase_shift(),
+    "StatusSynchronizedMotion.ActualMaster": lambda ax: ax.follower.coupling.source.db_number
+    if ax.follower.coupling else 0,
+    "StatusSynchronizedMotion.ActualCam": lambda ax: ax.follower.coupling.cam.db_number
+    if ax.follower.coupling is not None and ax.follower.coupling.cam is not None else 0,
     "StatusSynchronizedMotion.MasterOffset": lambda ax: _coupling_value(ax, "master_offset", 0.0),
     "StatusSynchronizedMotion.MasterScaling": lambda ax: _coupling_value(ax, "master_scaling", 1.0),
     "StatusSynchronizedMotion.SlaveOffset": lambda ax: _coupling_value(ax, "slave_offset", 0.0),
     "StatusSynchronizedMotion.SlaveScaling": lambda ax: _coupling_value(ax, "slave_scaling", 1.0),
-    "StatusSynchronizedMotion.EffectiveLeadingValue.Position": lambda ax: ax.effective_leading_value()[0],
-    "StatusSynchronizedMotion.EffectiveLeadingValue.Velocity": lambda ax: ax.effective_leading_value()[1],
-    "StatusSynchronizedMotion.EffectiveLeadingValue.Acceleration": lambda ax: ax.effective_leading_value()[2],
+    "StatusSynchronizedMotion.EffectiveLeadingValue.Position": lambda ax: ax.follower.effective_leading_value()[0],
+    "StatusSynchronizedMotion.EffectiveLeadingValue.Velocity": lambda ax: ax.follower.effective_leading_value()[1],
+    "StatusSynchronizedMotion.EffectiveLeadingValue.Acceleration": lambda ax: ax.follower.effective_leading_value()[2],
     "StatusSynchronizedMotion.StatusWord": sync_status_word,
 })
 

@@ -7,7 +7,7 @@ instruction hands it a job.  Behaviour follows S7-1200 Motion Control V6 (sectio
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any, Mapping
+from typing import TYPE_CHECKING, Any, Iterator, Mapping
 
 from . import faults as F
 from . import parameters as P
@@ -15,6 +15,7 @@ from .family import PULSE_SLICE_TIME
 from .faults import Fault, Reaction
 from .jobs import MOTION_KINDS, POSITIONING_KINDS, Job, JobKind, JobState
 from .axis_queue import BufferMode, axis_queue
+from .policy import ABORT, PLCOPEN, SUPERIMPOSED_SLOT, Activity, OverridePolicy, Reject
 from .motion import DirectionFault, MotionPlanner, Plan, limits, modulo_target, wrap
 from .profiles import Planner, PlanningError, Profile, velocity_reach
 from .config import ConfigMixin
@@ -77,7 +78,9 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
         self.position_controlled = True
         self.alarms: list[Fault] = []
         self.job: Job | None = None                   # active motion job
-        self.queue = axis_queue(self)                 # jobs waiting behind it (PLCopen BufferMode)
+        #: the family's override rules: what a new job does to what runs (kernel/policy.py)
+        self.policy: OverridePolicy = ctl._family.policy or PLCOPEN
+        self.queue = axis_queue(self, self.policy.queue_depth)   # jobs waiting behind it (PLCopen BufferMode)
         self.passive_home: Job | None = None
         self.table_job: Job | None = None             # MC_CommandTable job (also before it takes over)
         self.power_owner: Any = None
@@ -617,11 +620,15 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
         return None
 
     def submit(self, job: Job, buffer_mode: BufferMode = BufferMode.ABORTING) -> None:
-        """Start a motion job (MC_Halt, MC_MoveAbsolute, MC_MoveRelative, MC_MoveVelocity, MC_MoveJog);
-        with a buffer mode other than Aborting it waits in ``self.queue`` behind the running job."""
-        if buffer_mode != BufferMode.ABORTING:
-            self.queue.submit(job, buffer_mode)
-            return
+        """Hand a job to the axis (MC_Halt, MC_Move*, MC_Stop, MC_MoveSuperimposed, active homing): every job
+        goes through the queue (``self.queue``); Aborting starts it at once (``start_job``), the other buffer
+        modes let it wait behind the running job."""
+        self.queue.submit(job, buffer_mode)
+
+    def start_job(self, job: Job) -> None:
+        """Start ``job`` now (the queue's take-over, Aborting): the start conditions, then the family's
+        policy decides what the job does to every running activity - end it aborted, let it go on, or
+        refuse the new job (kernel/policy.py) - and the job takes the axis (or its superimposed slot)."""
         fault = self.check_start(job)
         if fault is not None:
             job.finish(JobState.ERROR, fault)
@@ -630,38 +637,98 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
         if self.pto and self._apply_dirty("command") is not None:
             job.finish(JobState.ERROR, self.alarms[-1])
             return
+        policy = self.policy
+        new = policy.classify(job)
+        if policy.slot(new) == SUPERIMPOSED_SLOT:
+            self._start_superimposed_job(job)
+            return
+        for activity in self._activities():
+            if activity.job is job:
+                continue
+            answer = policy.decide(new, job, activity)
+            if isinstance(answer, Reject):
+                job.finish(JobState.ERROR, answer.fault())
+                return
+        if not policy.plan_after_override and not self._resolve_target(job):
+            return
+        self._override(new, t, job)
+        if policy.plan_after_override and not self._resolve_target(job):
+            return
+        self.holding_zero_velocity = False
+        self._stop_positioning_monitor()
+        self._begin(job, t)
+
+    def _activities(self) -> Iterator[Activity]:
+        """What runs on the axis that a new job may end, in the order it is ended; lazy, so that each one
+        is looked at after the one before has been ended (ending a job can end others with it)."""
+        classify = self.policy.classify
+        run = self.job
+        if run is not None and run.busy:
+            yield Activity(classify(run), run, lambda t: self._finish_job(run, JobState.ABORTED, t))
+        waiting = self.table_job
+        if waiting is not None and waiting.busy:                # a table that has not taken over yet
+            yield Activity(classify(waiting), waiting, lambda t: self._finish_job(waiting, JobState.ABORTED, t))
+        passive = self.passive_home
+        if passive is not None and passive.busy:
+            yield Activity(classify(passive), passive, self._end_passive_home)
+
+    def _end_passive_home(self, t: float) -> None:
+        self._finish_job(self.passive_home, JobState.ABORTED, t)
+        self.passive_home = None
+
+    def _override(self, new: str, t: float, new_job: Job | None) -> None:
+        """End every running activity that a new job of class ``new`` aborts (the family's policy)."""
+        policy = self.policy
+        for activity in self._activities():
+            if activity.job is not None and activity.job is new_job:
+                continue
+            if policy.decide(new, new_job, activity) is ABORT:
+                activity.end(t)
+
+    def _resolve_target(self, job: Job) -> bool:
+        """The absolute target of a positioning from the state at its start (False: the job was refused)."""
         p, v, a = self._state_now()
         if job.kind == JobKind.RELATIVE:
             job.target = job.extra.pop("relative_base", p) + job.position
             if abs(job.target) > P.E12:
                 job.finish(JobState.ERROR, F.reject(F.REJECTED, "numeric_limit"))
-                return
+                return False
         elif job.kind == JobKind.ABSOLUTE:
             job.target = self._absolute_target(job, p, v, a)
         elif job.kind == JobKind.VELOCITY and job.current:
             job.velocity = v
-        previous = self.job
-        if previous is not None and previous.busy:
-            self._finish_job(previous, JobState.ABORTED, t)
-        waiting = self.table_job
-        if waiting is not None and waiting.busy:
-            self._finish_job(waiting, JobState.ABORTED, t)     # a table that had not taken over yet
-        self.holding_zero_velocity = False
-        if job.kind == JobKind.HOME_ACTIVE and self.passive_home is not None:
-            self._finish_job(self.passive_home, JobState.ABORTED, t)
-            self.passive_home = None
-        self._stop_positioning_monitor()
+        return True
+
+    def _begin(self, job: Job, t: float) -> None:
+        """The job takes the axis over: position control as it needs, then homing or its motion plan."""
         self.job = job
-        if job.kind in POSITIONING_KINDS or job.kind == JobKind.HOME_ACTIVE:
+        if job.kind in self.policy.position_control:
             self._set_position_control(True)
         elif job.kind in (JobKind.VELOCITY, JobKind.JOG):
             self._set_position_control(job.position_controlled)
         if job.kind == JobKind.HOME_ACTIVE:
-            if self not in self.ctl._input_axes:
+            # a simulated axis searches no switch (its homing brakes and homes where it stands)
+            if not self.sim and self not in self.ctl._input_axes:
                 self.ctl._input_axes.append(self)
             self._homing_start(job, t)
             return
-        self._plan_job(job, t)
+        if self._plan_job(job, t):
+            self._note_limits(self.motion.last_limits, job)
+
+    def _start_superimposed_job(self, job: Job) -> None:
+        """A job in the superimposed slot: it adds to whatever runs and replaces a running superimposed job."""
+        start = getattr(self, "start_superimposed", None)
+        if start is None:
+            job.finish(JobState.ERROR, F.reject(F.NOT_AVAILABLE, job.kind.value))
+            return
+        lim = limits(self, job.velocity, job=job)
+        self._note_limits(lim)
+        start(job, lim)
+
+    def _note_limits(self, lim: Any, job: Job | None = None) -> None:
+        """A family hook: the dynamics of a job were planned within ``lim`` (some families warn when a job's
+        values were cut to the limits)."""
+        return None
 
     def _absolute_target(self, job: Job, p: float, v: float, a: float) -> float:
         if self.config.modulo.enabled:

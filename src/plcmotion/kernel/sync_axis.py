@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from . import faults as F
-from . import override as O
+from . import policy as O
 from .family import ACTUAL_VALUE_COUPLING
 from .faults import Fault, Reaction
 from .jobs import Job, JobKind, JobState

@@ -11,6 +11,7 @@ from typing import Any, Mapping
 from ...kernel import family as K
 from ...kernel.axis import PositioningAxis
 from ...kernel.command_table import CommandTable
+from .override import POLICY
 
 
 def _rules(version: int) -> frozenset[str]:
@@ -32,6 +33,6 @@ def _command_table(ctl: Any, name: str, commands: Any) -> CommandTable:
 
 S7_1200 = K.register(K.Family("S7-1200", versions=(6, 7), default_version=6,
                               factories={K.POSITIONING_AXIS: _positioning_axis, K.COMMAND_TABLE: _command_table},
-                              rules=_rules))
+                              rules=_rules, policy=POLICY))
 
 __all__ = ["S7_1200"]

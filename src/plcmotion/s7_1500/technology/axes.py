@@ -8,16 +8,16 @@ of §9.3, and the synchronous axis follows leading values (``kernel.sync_axis``)
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any, Mapping
+from typing import TYPE_CHECKING, Any, Iterator, Mapping
 
 from ...kernel import faults as F
-from ...kernel import override as O
+from . import override as O
 from . import tags as T
 from ...kernel.axis import DISABLED, ENABLED, ENABLING, PositioningAxis
 from ...kernel.faults import Fault, Reaction
-from ...kernel.jobs import POSITIONING_KINDS, Job, JobKind, JobState
+from ...kernel.jobs import Job, JobKind, JobState
 from ...kernel.leading import LeadingValueMixin
-from ...kernel.motion import limits
+from ...kernel.policy import Activity
 from .parameters import S7_1500
 from ...kernel.profiles import INF, Planner, Profile
 from ...kernel.superimposed import SuperimposedMixin
@@ -27,8 +27,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from ...kernel.runtime import Controller
 
 _EPS_T = 1e-9
-#: MC_Stop modes and their stop response (a new MC_Stop aborts one with the same or a lower one, §9.3.1 B)
-STOP_MODES = {0: 2, 2: 1}      # 0 emergency stop ramp (strongest), 2 maximum dynamic values
+STOP_MODES = O.STOP_MODES
 
 
 class PositioningAxis1500(SuperimposedMixin, LeadingValueMixin, PositioningAxis):
@@ -111,8 +110,8 @@ class PositioningAxis1500(SuperimposedMixin, LeadingValueMixin, PositioningAxis)
     def _abort_sync(self, t: float, *, waiting: bool = True, active: bool = True, fault: Fault | None = None) -> None:
         return None
 
-    def _override_sync(self, new: str, t: float, new_job: Job | None) -> None:
-        return None
+    def _sync_activities(self) -> Iterator[Activity]:
+        return iter(())
 
     # --- jobs -------------------------------------------------------------------------------------------
     def check_start(self, job: Job) -> Fault | None:
@@ -122,61 +121,32 @@ class PositioningAxis1500(SuperimposedMixin, LeadingValueMixin, PositioningAxis)
             return F.reject(F.STOP_ACTIVE)
         return super().check_start(job)
 
-    def submit(self, job: Job) -> None:
-        """Start a single-axis job with the override response of §9.3.1 / §9.3.2."""
-        fault = self.check_start(job)
-        if fault is not None:
-            job.finish(JobState.ERROR, fault)
-            return
-        t = self.now
-        if job.kind == JobKind.SUPERIMPOSED:
-            lim = limits(self, job.velocity, job=job)
-            self._note_limits(lim)
-            self.start_superimposed(job, lim)
-            return
-        cls = O.job_class(job)
-        if job.kind == JobKind.HOME_ACTIVE and self._sync_blocks_homing():
-            job.finish(JobState.ERROR, F.reject(F.SYNC_ACTIVE))
-            return
-        if job.kind == JobKind.STOP and self.stop_job is not None:
-            old = self.stop_job
-            if STOP_MODES[job.mode] < STOP_MODES.get(old.mode, 0):
-                job.finish(JobState.ERROR, F.reject(F.STOP_ACTIVE, "weaker"))
-                return
-            if old.busy:
-                self._finish_job(old, JobState.ABORTED, t)
-            self.stop_job = None
-        self._override(cls, t, job)
-        p, v, a = self._state_now()
-        if job.kind == JobKind.RELATIVE:
-            job.target = p + job.position
-            if abs(job.target) > 1e12:
-                job.finish(JobState.ERROR, F.reject(F.REJECTED, "numeric_limit"))
-                return
-        elif job.kind == JobKind.ABSOLUTE:
-            job.target = self._absolute_target(job, p, v, a)
-        elif job.kind == JobKind.VELOCITY and job.current:
-            job.velocity = v
-        self.holding_zero_velocity = False
-        self._stop_positioning_monitor()
+    def _activities(self) -> Iterator[Activity]:
+        """A running or held MC_Stop, the kernel's (axis job, passive homing), the synchronous operation and
+        the superimposed motion: the order in which a new job ends them (§9.3.1, §9.3.2)."""
+        if self.stop_job is not None:
+            yield Activity(O.STOP, self.stop_job, self._end_stop)
+        yield from super()._activities()
+        yield from self._sync_activities()
+        if self.sup_profile is not None:
+            # a basic motion job that ends it takes the superimposed state over
+            yield Activity(O.SUPERIMPOSED, self.sup_job, self._sup_take_over)
+
+    def _end_stop(self, t: float) -> None:
+        old = self.stop_job
+        if old is not None and old.busy:
+            self._finish_job(old, JobState.ABORTED, t)
+        self.stop_job = None
+
+    def _begin(self, job: Job, t: float) -> None:
         if job.kind == JobKind.STOP:
+            # MC_Stop brakes and keeps the axis locked (check_start) while its Execute is TRUE
             self.stop_job = job
             self.job = None
             self._interpolating = True
             self._plan_stop(job, t)
             return
-        self.job = job
-        if job.kind in POSITIONING_KINDS or job.kind == JobKind.HOME_ACTIVE or job.kind == JobKind.HALT:
-            self._set_position_control(True)
-        elif job.kind in (JobKind.VELOCITY, JobKind.JOG):
-            self._set_position_control(job.position_controlled)
-        if job.kind == JobKind.HOME_ACTIVE:
-            if not self.sim and self not in self.ctl._input_axes:
-                self.ctl._input_axes.append(self)
-            self._homing_start(job, t)
-            return
-        if self._plan_job(job, t):
-            self._note_limits(self.motion.last_limits, job)
+        super()._begin(job, t)
 
     def _replan(self) -> None:
         """A changed tag (velocity override, dynamic limits) acts at once on the running job, with the
@@ -215,22 +185,6 @@ class PositioningAxis1500(SuperimposedMixin, LeadingValueMixin, PositioningAxis)
         before = self.motion.last_limits
         super().change_jog_velocity(job, velocity)
         self._renote_limits(job, before)
-
-    def _sync_blocks_homing(self) -> bool:
-        return False
-
-    def _override(self, new: str, t: float, new_job: Job | None) -> None:
-        """End what the new job of class ``new`` aborts (§9.3.1, §9.3.2)."""
-        run = self.job
-        if run is not None and run.busy and run is not new_job and O.aborts(new, O.job_class(run)):
-            self._finish_job(run, JobState.ABORTED, t)
-        passive = self.passive_home
-        if passive is not None and passive.busy and O.aborts(new, O.HOME_PASSIVE):
-            self._finish_job(passive, JobState.ABORTED, t)
-            self.passive_home = None
-        self._override_sync(new, t, new_job)
-        if self.sup_profile is not None and O.aborts(new, O.SUPERIMPOSED):
-            self._sup_take_over(t)
 
     def _plan_stop(self, job: Job, t: float) -> None:
         if job.mode == 0:
@@ -362,39 +316,43 @@ class SynchronousAxis(SynchronousMixin, PositioningAxis1500):
             return p, v, a
         return super()._state_at(t)
 
-    def _sync_blocks_homing(self) -> bool:
-        # §9.3.2: active homing does not abort an active GearInPos/CamIn; the homing job is rejected
+    def _sync_activities(self) -> Iterator[Activity]:
+        """The synchronous operation (§9.3.2 columns): the coupling, a waiting coupling, a phasing and an
+        additive leading value; a simulated synchronous operation is no running job (§9.1.6)."""
         c = self.coupling
-        return c is not None and not c.simulated and c.job.kind in (JobKind.GEAR_IN_POS, JobKind.CAM_IN)
-
-    def _override_sync(self, new: str, t: float, new_job: Job | None) -> None:
-        c = self.coupling
-        if c is not None and not c.simulated and c.job is not new_job:
+        if c is not None and not c.simulated:
             column = O.GEAR_IN if c.job.kind == JobKind.GEAR_IN else O.SYNC_ACTIVE
-            if O.aborts(new, column):
-                self._end_coupling(c, JobState.ABORTED, t, replan=True)
+            yield Activity(column, c.job, lambda t: self._end_coupling(c, JobState.ABORTED, t, replan=True))
         w = self.waiting
-        if w is not None and w.job is not new_job:
+        if w is not None:
             column = O.GEAR_IN if w.job.kind == JobKind.GEAR_IN else O.SYNC_WAITING
-            if O.aborts(new, column):
-                self.waiting = None
-                self.ctl.sync.remove(w)
-                self._finish_coupling_job(w, JobState.ABORTED, t)
+            yield Activity(column, w.job, lambda t: self._end_waiting(w, t))
         ph = self.phasing_job
-        if ph is not None and ph.busy and ph is not new_job and O.aborts(new, O.PHASING):
-            self._finish_job(ph, JobState.ABORTED, t)
-            c = self.coupling
-            if c is not None and c.phase is not None:
-                p = c.phase.at(t)[0]
-                c.phase = Planner.hold(t, p)
-                c.phase_seg = 0
-                self._phase_segment(c, t)
+        if ph is not None and ph.busy:
+            yield Activity(O.PHASING, ph, lambda t: self._end_phasing(ph, t))
         add = self.lv_additive_job
-        if add is not None and add.busy and add is not new_job and O.aborts(new, O.LV_ADDITIVE):
-            self.lv_additive_job = None
-            self.lv_additive = None
-            self._push_additive()
-            self._finish_job(add, JobState.ABORTED, t)
+        if add is not None and add.busy:
+            yield Activity(O.LV_ADDITIVE, add, lambda t: self._end_additive(add, t))
+
+    def _end_waiting(self, w: Any, t: float) -> None:
+        self.waiting = None
+        self.ctl.sync.remove(w)
+        self._finish_coupling_job(w, JobState.ABORTED, t)
+
+    def _end_phasing(self, ph: Job, t: float) -> None:
+        self._finish_job(ph, JobState.ABORTED, t)
+        c = self.coupling
+        if c is not None and c.phase is not None:
+            p = c.phase.at(t)[0]
+            c.phase = Planner.hold(t, p)
+            c.phase_seg = 0
+            self._phase_segment(c, t)
+
+    def _end_additive(self, add: Job, t: float) -> None:
+        self.lv_additive_job = None
+        self.lv_additive = None
+        self._push_additive()
+        self._finish_job(add, JobState.ABORTED, t)
 
     def _abort_sync(self, t: float, *, waiting: bool = True, active: bool = True, fault: Fault | None = None,
                     keep_simulated: bool = True) -> None:

@@ -226,3 +226,20 @@ def test_kernel_submit_superimposed_slot_needs_the_ability():
     add = Job(JobKind.RELATIVE, position=1.0, velocity=1.0)
     axis.submit(add)
     assert add.state == JobState.ERROR and add.fault.kind == F.NOT_AVAILABLE and halt.busy
+
+
+def test_kernel_submit_second_job_of_a_cycle_starts_from_the_output_state():
+    """Two jobs in one application cycle: the first (Jerk 0, a trapezoid whose acceleration steps at once)
+    never runs a servo cycle, so the second starts from the state the axis was given - at rest, a = 0 -
+    and its jerk-limited ramp gives a = J t, v = J t^2 / 2 after the first servo cycle (t = 1 ms)."""
+    ctl, axis = enabled_axis()
+    first = Job(JobKind.VELOCITY, velocity=50.0, jerk=float("inf"))
+    second = Job(JobKind.VELOCITY, velocity=50.0, jerk=1000.0)
+    samples = []
+    ctl.on_post_servo(lambda t: samples.append((float(ctl.bank.sp_v[axis.index]), float(ctl.bank.sp_a[axis.index]))))
+    axis.submit(first)
+    axis.submit(second)
+    ctl.step()
+    assert first.state == JobState.ABORTED and second.active
+    v1, a1 = samples[0]
+    assert a1 == pytest.approx(1000.0 * 0.001, rel=1e-9) and v1 == pytest.approx(1000.0 * 0.001 ** 2 / 2, rel=1e-9)

@@ -687,7 +687,7 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
 
     def _resolve_target(self, job: Job) -> bool:
         """The absolute target of a positioning from the state at its start (False: the job was refused)."""
-        p, v, a = self._state_now()
+        p, v, a = self._start_state(self.now)
         if job.kind == JobKind.RELATIVE:
             job.target = job.extra.pop("relative_base", p) + job.position
             if abs(job.target) > P.E12:
@@ -745,7 +745,7 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
         while planning end ``job``.  Returns whether the motion started.
         """
         t_plan = self._slice_start(t) if new_command else t
-        p, v, a = self._state_at(t_plan)
+        p, v, a = self._start_state(t_plan)
         try:
             # a re-plan may use the velocities the running plan reaches anyway (no jerk above the limit
             # to avoid an overshoot the old plan had too)
@@ -766,7 +766,22 @@ class PositioningAxis(ConfigMixin, FaultInjectionMixin, HomingMixin, SwitchesMix
             plan.profile.segments[:0] = [seg for seg in self.profile.segments if seg.t < t_plan]
         self._interpolating = True
         self._start_profile(plan.profile, plan)
+        self._planned = (t_plan, self.profile, (p, v, a))
         return True
+
+    _planned: tuple[float, Profile, tuple[float, float, float]] | None = None
+
+    def _start_state(self, t: float) -> tuple[float, float, float]:
+        """The state a plan for time ``t`` starts from: the setpoint at ``t``, but when a job planned for the
+        same instant still holds the axis (it never ran a servo cycle: two jobs in one application cycle),
+        the acceleration that plan started from, not the step a Jerk-0 profile makes at its start.  Only
+        where position and velocity agree: anything that moved the profile in between (a coordinate shift,
+        a velocity step) leaves the setpoint as it is."""
+        p, v, a = self._state_at(t)
+        planned = self._planned
+        if planned is not None and planned[0] == t and planned[1] is self.profile and planned[2][:2] == (p, v):
+            a = planned[2][2]
+        return p, v, a
 
     def _slice_start(self, t: float) -> float:
         """When a new command takes effect: at once, or on a PTO at the next segment boundary."""

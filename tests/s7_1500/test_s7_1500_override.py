@@ -3,7 +3,7 @@ running on the following axis, a job of another class starts, and the running on
 (CommandAborted) or goes on."""
 import pytest
 
-from plcmotion.kernel import override as O
+from plcmotion.s7_1500.technology import override as O
 from plcmotion.s7_1500 import (MC_GearIn, MC_GearInPos, MC_Halt, MC_Home, MC_LeadingValueAdditive,
                                MC_MoveRelative, MC_MoveSuperimposed, MC_MoveVelocity, MC_PhasingRelative, MC_Stop)
 
@@ -202,7 +202,7 @@ def test_override_response_s9_3(running, new):
 
 
 def test_the_code_tables_match_the_manual_s9_3():
-    """kernel.override holds the same cells as the manual's tables (both written out independently)."""
+    """s7_1500.technology.override holds the same cells as the manual's tables (both written out independently)."""
     cells = [(new, running) for new in NEW for running in RUNNING if manual_aborts(new, running) is not None]
     # only a phase shift against a running homing or motion job has no cell (it needs a gearing)
     assert len(cells) == len(NEW) * len(RUNNING) - len(_COLUMNS_9_3_1)

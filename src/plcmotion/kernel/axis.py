@@ -7,7 +7,7 @@ instruction hands it a job.  Behaviour follows S7-1200 Motion Control V6 (sectio
 from __future__ import annotations
 
 import math
-from typing import Any, Mapping
+from typing import Any, Iterator, Mapping
 
 from . import faults as F
 from . import schema as P
@@ -15,6 +15,7 @@ from .family import PULSE_SLICE_TIME
 from .faults import Fault, Reaction
 from .jobs import MOTION_KINDS, POSITIONING_KINDS, Job, JobKind, JobState
 from .axis_queue import BufferMode, axis_queue
+from .policy import ABORT, PLCOPEN, SUPERIMPOSED_SLOT, Activity, OverridePolicy, Reject
 from .motion import DirectionFault, MotionPlanner, Plan, limits, modulo_target, wrap
 from .profiles import Planner, PlanningError, Profile, velocity_reach
 from .parameter_store import ParameterStore
@@ -66,7 +67,9 @@ class PositioningAxis(TagViews):
         self.position_controlled = True
         self.alarms: list[Fault] = []
         self.job: Job | None = None                   # active motion job
-        self.queue = axis_queue(self)                 # jobs waiting behind it (PLCopen BufferMode)
+        #: the family's override rules: what a new job does to what runs (kernel/policy.py)
+        self.policy: OverridePolicy = ctl._family.policy or PLCOPEN
+        self.queue = axis_queue(self, self.policy.queue_depth)   # jobs waiting behind it (PLCopen BufferMode)
         self.runners: dict[JobKind, JobRunner] = {}   # components running kinds of jobs of a family
         self.power_owner: Any = None
         self.stop_mode = 0
@@ -719,11 +722,15 @@ class PositioningAxis(TagViews):
         return None
 
     def submit(self, job: Job, buffer_mode: BufferMode = BufferMode.ABORTING) -> None:
-        """Start a motion job (MC_Halt, MC_MoveAbsolute, MC_MoveRelative, MC_MoveVelocity, MC_MoveJog);
-        with a buffer mode other than Aborting it waits in ``self.queue`` behind the running job."""
-        if buffer_mode != BufferMode.ABORTING:
-            self.queue.submit(job, buffer_mode)
-            return
+        """Hand a job to the axis (MC_Halt, MC_Move*, MC_Stop, MC_MoveSuperimposed, active homing): every job
+        goes through the queue (``self.queue``); Aborting starts it at once (``start_job``), the other buffer
+        modes let it wait behind the running job."""
+        self.queue.submit(job, buffer_mode)
+
+    def start_job(self, job: Job) -> None:
+        """Start ``job`` now (the queue's take-over, Aborting): the start conditions, then the family's
+        policy decides what the job does to every running activity - end it aborted, let it go on, or
+        refuse the new job (kernel/policy.py) - and the job takes the axis (or its superimposed slot)."""
         fault = self.check_start(job)
         if fault is not None:
             job.finish(JobState.ERROR, fault)
@@ -732,33 +739,93 @@ class PositioningAxis(TagViews):
         if self.pto and self._apply_dirty("command") is not None:
             job.finish(JobState.ERROR, self.alarms[-1])
             return
-        p, v, a = self._state_now()
+        policy = self.policy
+        new = policy.classify(job)
+        if policy.slot(new) == SUPERIMPOSED_SLOT:
+            self._start_superimposed_job(job)
+            return
+        for activity in self._activities():
+            if activity.job is job:
+                continue
+            answer = policy.decide(new, job, activity)
+            if isinstance(answer, Reject):
+                job.finish(JobState.ERROR, answer.fault())
+                return
+        if not policy.plan_after_override and not self._resolve_target(job):
+            return
+        self._override(new, t, job)
+        if policy.plan_after_override and not self._resolve_target(job):
+            return
+        self.holding_zero_velocity = False
+        self._stop_positioning_monitor()
+        self._begin(job, t)
+
+    def _activities(self) -> Iterator[Activity]:
+        """What runs on the axis that a new job may end, in the order it is ended; lazy, so that each one
+        is looked at after the one before has been ended (ending a job can end others with it)."""
+        classify = self.policy.classify
+        run = self.job
+        if run is not None and run.busy:
+            yield Activity(classify(run), run, lambda t: self._finish_job(run, JobState.ABORTED, t))
+        for runner in self.runners.values():
+            waiting = runner.job
+            if waiting is not None and waiting.busy:            # a program that has not taken over yet
+                yield Activity(classify(waiting), waiting,
+                               lambda t, w=waiting: self._finish_job(w, JobState.ABORTED, t))
+        passive = self.homing.passive
+        if passive is not None and passive.busy:
+            yield Activity(classify(passive), passive, lambda t: self.homing.end_passive(JobState.ABORTED))
+
+    def _override(self, new: str, t: float, new_job: Job | None) -> None:
+        """End every running activity that a new job of class ``new`` aborts (the family's policy)."""
+        policy = self.policy
+        for activity in self._activities():
+            if activity.job is not None and activity.job is new_job:
+                continue
+            if policy.decide(new, new_job, activity) is ABORT:
+                activity.end(t)
+
+    def _resolve_target(self, job: Job) -> bool:
+        """The absolute target of a positioning from the state at its start (False: the job was refused)."""
+        p, v, a = self._start_state(self.now)
         if job.kind == JobKind.RELATIVE:
             job.target = job.extra.pop("relative_base", p) + job.position
             if abs(job.target) > P.E12:
                 job.finish(JobState.ERROR, F.reject(F.REJECTED, "numeric_limit"))
-                return
+                return False
         elif job.kind == JobKind.ABSOLUTE:
             job.target = self._absolute_target(job, p, v, a)
         elif job.kind == JobKind.VELOCITY and job.current:
             job.velocity = v
-        previous = self.job
-        if previous is not None and previous.busy:
-            self._finish_job(previous, JobState.ABORTED, t)
-        self._end_runner_jobs(JobState.ABORTED, t)            # a program that had not taken over yet
-        self.holding_zero_velocity = False
-        if job.kind == JobKind.HOME_ACTIVE:
-            self.homing.end_passive(JobState.ABORTED)
-        self._stop_positioning_monitor()
+        return True
+
+    def _begin(self, job: Job, t: float) -> None:
+        """The job takes the axis over: position control as it needs, then homing or its motion plan."""
         self.job = job
-        if job.kind in POSITIONING_KINDS or job.kind == JobKind.HOME_ACTIVE:
+        if job.kind in self.policy.position_control:
             self._set_position_control(True)
         elif job.kind in (JobKind.VELOCITY, JobKind.JOG):
             self._set_position_control(job.position_controlled)
         if job.kind == JobKind.HOME_ACTIVE:
             self.homing.start_active(job, t)
             return
-        self._plan_job(job, t)
+        if self._plan_job(job, t):
+            self._note_limits(self.motion.last_limits, job)
+
+    def _start_superimposed_job(self, job: Job) -> None:
+        """A job in the superimposed slot: it adds to whatever runs and replaces a running superimposed job."""
+        start = getattr(self, "start_superimposed", None)
+        if start is None:
+            job.finish(JobState.ERROR, F.reject(F.NOT_AVAILABLE, job.kind.value))
+            return
+        lim = limits(self, job.velocity, job=job)
+        self._note_limits(lim)
+        start(job, lim)
+
+    def _note_limits(self, lim: Any, job: Job | None = None) -> None:
+        """A family hook: the dynamics of a job were planned within ``lim`` (some families warn when a job's
+        values were cut to the limits)."""
+        return None
 
     def _absolute_target(self, job: Job, p: float, v: float, a: float) -> float:
         if self.config.modulo.enabled:
@@ -775,7 +842,7 @@ class PositioningAxis(TagViews):
         while planning end ``job``.  Returns whether the motion started.
         """
         t_plan = self._slice_start(t) if new_command else t
-        p, v, a = self._state_at(t_plan)
+        p, v, a = self._start_state(t_plan)
         try:
             # a re-plan may use the velocities the running plan reaches anyway (no jerk above the limit
             # to avoid an overshoot the old plan had too)
@@ -796,7 +863,22 @@ class PositioningAxis(TagViews):
             plan.profile.segments[:0] = [seg for seg in self.profile.segments if seg.t < t_plan]
         self._interpolating = True
         self._start_profile(plan.profile, plan)
+        self._planned = (t_plan, self.profile, (p, v, a))
         return True
+
+    _planned: tuple[float, Profile, tuple[float, float, float]] | None = None
+
+    def _start_state(self, t: float) -> tuple[float, float, float]:
+        """The state a plan for time ``t`` starts from: the setpoint at ``t``, but when a job planned for the
+        same instant still holds the axis (it never ran a servo cycle: two jobs in one application cycle),
+        the acceleration that plan started from, not the step a Jerk-0 profile makes at its start.  Only
+        where position and velocity agree: anything that moved the profile in between (a coordinate shift,
+        a velocity step) leaves the setpoint as it is."""
+        p, v, a = self._state_at(t)
+        planned = self._planned
+        if planned is not None and planned[0] == t and planned[1] is self.profile and planned[2][:2] == (p, v):
+            a = planned[2][2]
+        return p, v, a
 
     def _slice_start(self, t: float) -> float:
         """When a new command takes effect: at once, or on a PTO at the next segment boundary."""

@@ -1,7 +1,8 @@
 """The job queue of a positioning axis: ``QueueOwner`` (kernel/job_queue.py) over ``PositioningAxis``.
 
-The queue decides when a waiting job starts; this binding starts it through the axis's aborting path
-(``PositioningAxis.submit``), answers the kinematic questions from the axis's planner and limits, and
+The queue takes every job of the axis (``PositioningAxis.submit``) and decides when it starts; this binding
+starts it through the axis's one start path (``PositioningAxis.start_job``: start conditions, the family's
+override policy, the plan), answers the kinematic questions from the axis's planner and limits, and
 re-plans the running positioning for a blend (kernel/blending.py).
 """
 from __future__ import annotations
@@ -43,7 +44,7 @@ class AxisQueueOwner:
             # PLCopen: relative to the set position when the job starts, which after a positioning is its
             # target -- also in a blend, which is taken over up to a servo cycle after passing it
             job.extra["relative_base"] = previous.target
-        ax.submit(job)
+        ax.start_job(job)
 
     def finish(self, job: Job, state: JobState) -> None:
         self.axis._finish_job(job, state, self.axis.now)

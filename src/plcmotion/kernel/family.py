@@ -11,6 +11,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any, Callable, Mapping
 
+from .policy import OverridePolicy
+
 # kinds of technology objects a family can offer (the Controller.add_* methods create them)
 POSITIONING_AXIS = "a positioning axis"
 SYNCHRONOUS_AXIS = "a synchronous axis"
@@ -42,7 +44,9 @@ class Family:
     that validates the parameters with the family's schema and returns the new object.  ``job_kinds`` are the
     kernel job kinds the family's instructions may submit (None: all); a kind outside it is refused as "not
     available".  ``rules(version)`` gives the names of version-dependent rules the kernel asks for (e.g. a
-    newer technology version's homing of a disabled axis)."""
+    newer technology version's homing of a disabled axis).  ``policy``: the override rules of its instructions
+(which running job a new one aborts, keeps or is rejected by), the depth of the axis job queue and the
+mapping of its buffer-mode input (``kernel.policy``); None: the PLCopen default, every motion job takes over."""
 
     name: str
     versions: tuple[int, ...]
@@ -51,6 +55,7 @@ class Family:
     job_kinds: frozenset[Any] | None = None
     features: frozenset[str] = frozenset()
     rules: Callable[[int], frozenset[str]] = field(default=_no_rules)
+    policy: OverridePolicy | None = None
 
 
 _REGISTRY: dict[str, Family] = {}

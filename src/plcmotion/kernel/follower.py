@@ -11,15 +11,16 @@ what modifies a running one (phasing, additive leading value, simulation) in ``s
 from __future__ import annotations
 
 import math
-from typing import Any, Protocol
+from typing import Any, Iterator, Protocol
 
 from . import faults as F
-from . import override as O
+from . import policy as O
 from . import sync_modifiers as modifiers
 from . import sync_planning as planning
 from .family import ACTUAL_VALUE_COUPLING
 from .faults import Fault, Reaction
 from .jobs import Job, JobKind, JobState
+from .policy import Activity
 from .leading import setpoint_at
 from .profiles import INF, Planner, PlanningError, Profile, Segment
 from .sync import _CYCLE_LIMIT, CAM, GEAR, LV_LIMIT, ONCE, Coupling
@@ -462,36 +463,41 @@ class Follower:
             self.end_coupling(self.coupling, state, t, replan=True, fault=fault)
 
     # --- what other jobs and state changes of the axis do to it (§9.3.2) -----------------------------
-    def override(self, new: str, t: float, new_job: Job | None) -> None:
-        """End what a new job of override class ``new`` aborts of the synchronous operation."""
-        axis = self.host
+    def activities(self) -> Iterator[Activity]:
+        """The synchronous operation as a family's override policy sees it: the coupling, a waiting coupling,
+        a phasing and an additive leading value, each with its policy class and how it ends aborted.  A
+        simulated synchronous operation is no running job (S7-1500T V5 §9.1.6).  Lazy: each one is looked at
+        after the one before has been ended."""
         c = self.coupling
-        if c is not None and not c.simulated and c.job is not new_job:
+        if c is not None and not c.simulated:
             column = O.GEAR_IN if c.job.kind == JobKind.GEAR_IN else O.SYNC_ACTIVE
-            if O.aborts(new, column):
-                self.end_coupling(c, JobState.ABORTED, t, replan=True)
+            yield Activity(column, c.job, lambda t: self.end_coupling(c, JobState.ABORTED, t, replan=True))
         w = self.waiting
-        if w is not None and w.job is not new_job:
+        if w is not None:
             column = O.GEAR_IN if w.job.kind == JobKind.GEAR_IN else O.SYNC_WAITING
-            if O.aborts(new, column):
-                self.waiting = None
-                axis.ctl.sync.remove(w)
-                self.finish_coupling_job(w, JobState.ABORTED, t)
+            yield Activity(column, w.job, lambda t: self._end_waiting(w, t))
         ph = self.phasing_job
-        if ph is not None and ph.busy and ph is not new_job and O.aborts(new, O.PHASING):
-            axis._finish_job(ph, JobState.ABORTED, t)
-            modifiers.hold_phase(self, t)
+        if ph is not None and ph.busy:
+            yield Activity(O.PHASING, ph, lambda t: self._end_phasing(ph, t))
         add = self.lv_additive_job
-        if add is not None and add.busy and add is not new_job and O.aborts(new, O.LV_ADDITIVE):
-            self.lv_additive_job = None
-            self.lv_additive = None
-            modifiers.push_additive(self)
-            axis._finish_job(add, JobState.ABORTED, t)
+        if add is not None and add.busy:
+            yield Activity(O.LV_ADDITIVE, add, lambda t: self._end_additive(add, t))
 
-    def blocks_homing(self) -> bool:
-        """§9.3.2: active homing does not abort an active GearInPos/CamIn; the homing job is rejected."""
-        c = self.coupling
-        return c is not None and not c.simulated and c.job.kind in (JobKind.GEAR_IN_POS, JobKind.CAM_IN)
+    def _end_waiting(self, w: Coupling, t: float) -> None:
+        if self.waiting is w:
+            self.waiting = None
+        self.host.ctl.sync.remove(w)
+        self.finish_coupling_job(w, JobState.ABORTED, t)
+
+    def _end_phasing(self, ph: Job, t: float) -> None:
+        self.host._finish_job(ph, JobState.ABORTED, t)
+        modifiers.hold_phase(self, t)
+
+    def _end_additive(self, add: Job, t: float) -> None:
+        self.lv_additive_job = None
+        self.lv_additive = None
+        modifiers.push_additive(self)
+        self.host._finish_job(add, JobState.ABORTED, t)
 
     def end_simulation_and_additive(self, t: float) -> None:
         """The technology object restarts: simulation and additive value end with the synchronous

@@ -5,7 +5,8 @@ waits behind the running job and starts when that one is finished (``BUFFERED``)
 without stopping (``BLENDING_*``).  The rules follow PLCopen Motion Control Part 1 (v2.0), section 2.4
 "BufferMode" and the "Active" output:
 
-* Aborting: the new job starts at once; the running job and every waiting job end aborted.
+* Aborting: the new job starts at once; the running job and every waiting job end aborted (unless the
+  family's override policy lets the running job go on beside the new one, kernel/policy.py).
 * Buffered: the job starts when the running job is Done; for a velocity job that never is Done, when it has
   reached its velocity (InVelocity) -- it then ends aborted (PLCopen gives a continuous motion no Done).
   On an axis without a running job a buffered or blended job starts at once.
@@ -149,12 +150,15 @@ class JobQueue:
         velocity" I429 of the running block); it is lowered and zeroed like the PLCopen one.
         """
         mode = BufferMode(mode)
+        running = self.owner.running_job()
         if mode == BufferMode.ABORTING:
             self.owner.take_over(job)
-            if job.busy:
-                self._abort_waiting()        # normally done already: the running job ended aborted
+            if job.busy and running is not None and not running.busy:
+                # the waiting jobs go with the job they wait for (normally done already when the owner
+                # reported it aborted); a job that lets the running one go on (a superimposed motion, by
+                # the family's policy) leaves them waiting
+                self._abort_waiting()
             return
-        running = self.owner.running_job()
         if running is None or not running.busy:
             self.owner.take_over(job)        # nothing to wait for: starts at once
             return

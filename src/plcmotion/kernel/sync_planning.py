@@ -20,7 +20,7 @@ import math
 from typing import Any, Protocol
 
 from . import faults as F
-from . import override as O
+from . import policy as O
 from .faults import Reaction
 from .jobs import Job, JobKind, JobState
 from .motion import limits

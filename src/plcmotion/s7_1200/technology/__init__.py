@@ -12,6 +12,7 @@ from typing import Any, Mapping
 from ...kernel import family as K
 from .axis import PositioningAxis
 from .command_table import CommandTable
+from .override import POLICY
 from .table_runner import TableRunner
 
 
@@ -35,6 +36,6 @@ def _command_table(ctl: Any, name: str, commands: Any) -> CommandTable:
 
 S7_1200 = K.register(K.Family("S7-1200", versions=(6, 7), default_version=6,
                               factories={K.POSITIONING_AXIS: _positioning_axis, K.COMMAND_TABLE: _command_table},
-                              rules=_rules))
+                              rules=_rules, policy=POLICY))
 
 __all__ = ["S7_1200"]

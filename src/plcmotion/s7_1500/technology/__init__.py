@@ -19,6 +19,7 @@ from ...kernel.schema import Issue
 from .axes import PositioningAxis1500, SynchronousAxis
 from .cam_to import CamTO
 from .external_encoder import ENCODER_SCHEMA, ExternalEncoder
+from .override import POLICY
 from .proxy import PROXY_SCHEMA, LeadingAxisProxy
 
 #: jobs only the T CPU runs (S7-1500T sync V5 §1: camming, GearInPos, phasing, simulation, additive value)
@@ -91,12 +92,12 @@ _AXES = {K.POSITIONING_AXIS: _positioning_axis, K.SYNCHRONOUS_AXIS: _synchronous
 _ALL_JOBS = frozenset(JobKind)
 
 S7_1500 = K.register(K.Family("S7-1500", versions=(5,), default_version=5, factories=_AXES,
-                              job_kinds=_ALL_JOBS - T_ONLY_JOBS))
+                              job_kinds=_ALL_JOBS - T_ONLY_JOBS, policy=POLICY))
 S7_1500T = K.register(K.Family(
     "S7-1500T", versions=(5,), default_version=5,
     factories={**_AXES, K.EXTERNAL_ENCODER: _external_encoder, K.LEADING_AXIS_PROXY: _leading_axis_proxy,
                K.CAM: _cam},
-    job_kinds=_ALL_JOBS, features=frozenset({K.ACTUAL_VALUE_COUPLING})))
+    job_kinds=_ALL_JOBS, features=frozenset({K.ACTUAL_VALUE_COUPLING}), policy=POLICY))
 
 __all__ = ["S7_1500", "S7_1500T", "PositioningAxis1500", "SynchronousAxis", "ExternalEncoder", "LeadingAxisProxy",
            "CamTO", "T_ONLY_JOBS"]

@@ -8,16 +8,16 @@ of §9.3, and the synchronous axis follows leading values (its ``kernel.follower
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any, Mapping
+from typing import TYPE_CHECKING, Any, Iterator, Mapping
 
 from ...kernel import faults as F
-from ...kernel import override as O
+from . import override as O
 from . import tags as T
 from ...kernel.axis import DISABLED, ENABLED, ENABLING, PositioningAxis
 from ...kernel.faults import Fault, Reaction
-from ...kernel.jobs import POSITIONING_KINDS, Job, JobKind, JobState
+from ...kernel.jobs import Job, JobKind, JobState
 from ...kernel.leading import AxisLeadingValue
-from ...kernel.motion import limits
+from ...kernel.policy import Activity
 from .parameters import S7_1500
 from ...kernel.profiles import INF, Profile
 from ...kernel.follower import Follower
@@ -27,8 +27,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from ...kernel.runtime import Controller
 
 _EPS_T = 1e-9
-#: MC_Stop modes and their stop response (a new MC_Stop aborts one with the same or a lower one, §9.3.1 B)
-STOP_MODES = {0: 2, 2: 1}      # 0 emergency stop ramp (strongest), 2 maximum dynamic values
+STOP_MODES = O.STOP_MODES
 
 
 class PositioningAxis1500(PositioningAxis):
@@ -166,59 +165,33 @@ class PositioningAxis1500(PositioningAxis):
             return F.reject(F.STOP_ACTIVE)
         return super().check_start(job)
 
-    def submit(self, job: Job) -> None:
-        """Start a single-axis job with the override response of §9.3.1 / §9.3.2."""
-        fault = self.check_start(job)
-        if fault is not None:
-            job.finish(JobState.ERROR, fault)
-            return
-        t = self.now
-        if job.kind == JobKind.SUPERIMPOSED:
-            lim = limits(self, job.velocity, job=job)
-            self._note_limits(lim)
-            self.start_superimposed(job, lim)
-            return
-        cls = O.job_class(job)
-        if job.kind == JobKind.HOME_ACTIVE and self.follower is not None and self.follower.blocks_homing():
-            job.finish(JobState.ERROR, F.reject(F.SYNC_ACTIVE))
-            return
-        if job.kind == JobKind.STOP and self.stop_job is not None:
-            old = self.stop_job
-            if STOP_MODES[job.mode] < STOP_MODES.get(old.mode, 0):
-                job.finish(JobState.ERROR, F.reject(F.STOP_ACTIVE, "weaker"))
-                return
-            if old.busy:
-                self._finish_job(old, JobState.ABORTED, t)
-            self.stop_job = None
-        self._override(cls, t, job)
-        p, v, a = self._state_now()
-        if job.kind == JobKind.RELATIVE:
-            job.target = p + job.position
-            if abs(job.target) > 1e12:
-                job.finish(JobState.ERROR, F.reject(F.REJECTED, "numeric_limit"))
-                return
-        elif job.kind == JobKind.ABSOLUTE:
-            job.target = self._absolute_target(job, p, v, a)
-        elif job.kind == JobKind.VELOCITY and job.current:
-            job.velocity = v
-        self.holding_zero_velocity = False
-        self._stop_positioning_monitor()
+    def _activities(self) -> Iterator[Activity]:
+        """A running or held MC_Stop, the kernel's (axis job, passive homing), the synchronous operation and
+        the superimposed motion: the order in which a new job ends them (§9.3.1, §9.3.2)."""
+        if self.stop_job is not None:
+            yield Activity(O.STOP, self.stop_job, self._end_stop)
+        yield from super()._activities()
+        if self.follower is not None:
+            yield from self.follower.activities()
+        if self.sup_profile is not None:
+            # a basic motion job that ends it takes the superimposed state over
+            yield Activity(O.SUPERIMPOSED, self.sup_job, self._sup_take_over)
+
+    def _end_stop(self, t: float) -> None:
+        old = self.stop_job
+        if old is not None and old.busy:
+            self._finish_job(old, JobState.ABORTED, t)
+        self.stop_job = None
+
+    def _begin(self, job: Job, t: float) -> None:
         if job.kind == JobKind.STOP:
+            # MC_Stop brakes and keeps the axis locked (check_start) while its Execute is TRUE
             self.stop_job = job
             self.job = None
             self._interpolating = True
             self._plan_stop(job, t)
             return
-        self.job = job
-        if job.kind in POSITIONING_KINDS or job.kind == JobKind.HOME_ACTIVE or job.kind == JobKind.HALT:
-            self._set_position_control(True)
-        elif job.kind in (JobKind.VELOCITY, JobKind.JOG):
-            self._set_position_control(job.position_controlled)
-        if job.kind == JobKind.HOME_ACTIVE:
-            self.homing.start_active(job, t)
-            return
-        if self._plan_job(job, t):
-            self._note_limits(self.motion.last_limits, job)
+        super()._begin(job, t)
 
     def _replan(self) -> None:
         """A changed tag (velocity override, dynamic limits) acts at once on the running job, with the
@@ -257,20 +230,6 @@ class PositioningAxis1500(PositioningAxis):
         before = self.motion.last_limits
         super().change_jog_velocity(job, velocity)
         self._renote_limits(job, before)
-
-    def _override(self, new: str, t: float, new_job: Job | None) -> None:
-        """End what the new job of class ``new`` aborts (§9.3.1, §9.3.2)."""
-        run = self.job
-        if run is not None and run.busy and run is not new_job and O.aborts(new, O.job_class(run)):
-            self._finish_job(run, JobState.ABORTED, t)
-        passive = self.passive_home
-        if passive is not None and passive.busy and O.aborts(new, O.HOME_PASSIVE):
-            self._finish_job(passive, JobState.ABORTED, t)
-            self.passive_home = None
-        if self.follower is not None:
-            self.follower.override(new, t, new_job)
-        if self.sup_profile is not None and O.aborts(new, O.SUPERIMPOSED):
-            self._sup_take_over(t)
 
     def _plan_stop(self, job: Job, t: float) -> None:
         if job.mode == 0:

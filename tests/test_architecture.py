@@ -217,3 +217,45 @@ def test_architecture_a_cited_section_names_its_manual():
     ("test_drives_s1_to_s2_needs_on_reset", False), ("test_kernel_defect_5_7", False)])
 def test_architecture_section_in_a_test_name(name, cites):
     assert bool(SECTION_IN_NAME.search(name)) is cites
+
+
+def test_architecture_rename_tool_renames_tests_and_references_once(tmp_path):
+    """tools/rename_tests.py on a small checkout: scope prefix added (not doubled, the singular of the scope
+    replaced), fixtures and helpers kept, references rewritten; a second run changes nothing."""
+    import importlib.util
+    import sys
+
+    spec = importlib.util.spec_from_file_location("rename_tests", ROOT / "tools" / "rename_tests.py")
+    tool = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = tool                      # its dataclasses look their module up
+    try:
+        spec.loader.exec_module(tool)
+    finally:
+        del sys.modules[spec.name]
+    files = {
+        "tests/drives/test_x.py": ('import pytest\n\n@pytest.fixture\ndef test_data():\n    return 1\n\n\n'
+                                   'def helper():\n    pass\n\n\ndef test_speed(test_data):\n    """See test_drive_ready."""\n'
+                                   '\n\ndef test_drive_ready():\n    pass\n\n\ndef test_drives_done():\n    pass\n\n\n'
+                                   'class TestGroup:\n    def test_inner(self):\n        pass\n'),
+        "tests/s7_1500/acceptance/test_y.py": "def test_s7_1200_axis_is_refused():\n    test_speed = 1\n",
+        "tests/test_top.py": "def test_speed():\n    pass\n",
+        "docs/notes.md": ("run `pytest -k test_inner`; see test_drive_ready, tests/drives/test_x.py::test_speed,"
+                          " test_x.py and test_data\n"),
+    }
+    for rel, text in files.items():
+        (tmp_path / rel).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / rel).write_text(text, encoding="utf-8")
+    assert tool.main([str(tmp_path)]) == 0
+    drives = (tmp_path / "tests/drives/test_x.py").read_text(encoding="utf-8")
+    for name in ("def test_data(", "def helper(", "def test_drives_speed(test_data)", '"""See test_drives_ready."""',
+                 "def test_drives_ready(", "def test_drives_done(", "def test_drives_inner(self)"):
+        assert name in drives
+    assert "def test_s7_1500_s7_1200_axis_is_refused():\n    test_speed = 1\n" == \
+        (tmp_path / "tests/s7_1500/acceptance/test_y.py").read_text(encoding="utf-8")
+    assert "def test_top_speed():" in (tmp_path / "tests/test_top.py").read_text(encoding="utf-8")
+    assert (tmp_path / "docs/notes.md").read_text(encoding="utf-8") == (
+        "run `pytest -k test_drives_inner`; see test_drives_ready, tests/drives/test_x.py::test_drives_speed,"
+        " test_x.py and test_data\n")
+    before = {p: p.read_bytes() for p in tmp_path.rglob("*") if p.is_file()}
+    assert tool.main([str(tmp_path), "--check"]) == 0 and tool.main([str(tmp_path)]) == 0
+    assert before == {p: p.read_bytes() for p in tmp_path.rglob("*") if p.is_file()}

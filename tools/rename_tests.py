@@ -73,7 +73,8 @@ class Module:
     scope: str
     text: str
     tests: list[ast.FunctionDef] = field(default_factory=list)
-    names: set[str] = field(default_factory=set)   # every identifier test_... defined or used in the module
+    defs: set[str] = field(default_factory=set)    # functions and classes test_... it defines (tests, fixtures)
+    bound: set[str] = field(default_factory=set)   # other names test_... it binds (variables, arguments, imports)
     final: list[str] = field(default_factory=list)  # the names of its tests after renaming
 
 
@@ -101,16 +102,23 @@ def load_modules(root: Path) -> list[Module]:
             if path.name.startswith("test_") or path.name.endswith("_test.py"):
                 mod.tests = collected_tests(tree)
             for node in ast.walk(tree):
-                name = getattr(node, "name", None) or getattr(node, "id", None) or getattr(node, "arg", None)
-                if isinstance(name, str) and name.startswith("test_"):
-                    mod.names.add(name)
+                if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+                    mod.defs.add(node.name)
+                elif isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
+                    mod.bound.add(node.id)
+                elif isinstance(node, ast.arg):
+                    mod.bound.add(node.arg)
+                elif isinstance(node, ast.alias):
+                    mod.bound.add(node.asname or node.name.split(".")[0])
+            mod.defs = {n for n in mod.defs if n.startswith("test_")}
+            mod.bound = {n for n in mod.bound if n.startswith("test_")}
         modules.append(mod)
     return modules
 
 
 def rename_definitions(mod: Module, problems: list[str]) -> dict[str, str]:
     """Rename the non-conforming test definitions of *mod* in its text; return old -> new."""
-    taken = {n.name for n in mod.tests} | mod.names
+    taken = mod.defs | mod.bound
     renames: dict[str, str] = {}
     lines = mod.text.splitlines(keepends=True)
     for node in mod.tests:
@@ -162,11 +170,13 @@ def main(argv: list[str] | None = None) -> int:
         for old, new in renames.items():
             print(f"tests/{mod.rel}: {old} -> {new}")
             renamed += 1
-            mod.names.discard(old)
-            mod.names.add(new)
+            mod.defs.discard(old)
+            mod.defs.add(new)
 
     # Names that exist: every test_ identifier of any module, and the test modules themselves.
-    known = set().union(*(m.names for m in modules)) | {m.path.stem for m in modules}
+    # Names that exist anywhere: functions and classes test_... (tests, fixtures, helpers) and the modules; a
+    # name a module binds otherwise (a variable test_x) exists only in that module.
+    known = set().union(*(m.defs for m in modules)) | {m.path.stem for m in modules}
     # Old form -> the conforming tests it may now be: {scope: {new names}} with the module of each.
     targets: dict[str, list[tuple[str, str, Path]]] = {}
     for mod in modules:
@@ -189,11 +199,12 @@ def main(argv: list[str] | None = None) -> int:
             nonlocal refs
             old = m.group(0)
             cands = targets.get(old)
-            if not cands:
+            if not cands or (path in by_path and old in by_path[path].bound):
                 return old
             pick = [c for c in cands if c[2] == path] or [c for c in cands if c[1] == own_scope]
             if not pick:
-                line = text[text.rfind("\n", 0, m.start()) + 1:text.find("\n", m.end())]
+                end = text.find("\n", m.end())
+                line = text[text.rfind("\n", 0, m.start()) + 1:end if end >= 0 else len(text)]
                 pick = [c for c in cands if f"tests/{c[1]}/" in line]
             news = {c[0] for c in (pick or cands)}
             if len(news) != 1:

@@ -89,7 +89,7 @@ def collected_tests(tree: ast.Module) -> list[ast.FunctionDef]:
     return [n for n in found if n.name.startswith("test_") and not _is_fixture(n)]
 
 
-def load_modules(root: Path) -> list[Module]:
+def load_modules(root: Path, problems: list[str], broken: set[Path]) -> list[Module]:
     modules = []
     for path in sorted((root / "tests").rglob("*.py")):
         if "__pycache__" in path.parts:
@@ -98,7 +98,12 @@ def load_modules(root: Path) -> list[Module]:
         text = path.read_text(encoding="utf-8")
         mod = Module(path, rel, scope_of(rel), text)
         if "test_" in text:
-            tree = ast.parse(text, filename=str(path))
+            try:
+                tree = ast.parse(text, filename=str(path))
+            except SyntaxError as exc:          # e.g. merge conflict markers: leave the file alone
+                problems.append(f"tests/{rel}:{exc.lineno}: not valid Python, skipped ({exc.msg})")
+                broken.add(path)
+                continue
             if path.name.startswith("test_") or path.name.endswith("_test.py"):
                 mod.tests = collected_tests(tree)
             for node in ast.walk(tree):
@@ -161,7 +166,8 @@ def main(argv: list[str] | None = None) -> int:
     root: Path = args.root.resolve()
     problems: list[str] = []
 
-    modules = load_modules(root)
+    broken: set[Path] = set()
+    modules = load_modules(root, problems, broken)
     by_path = {m.path: m for m in modules}
     renamed = 0
     for mod in modules:
@@ -189,6 +195,8 @@ def main(argv: list[str] | None = None) -> int:
     changed: dict[Path, str] = {m.path: m.text for m in modules if m.text != m.path.read_text(encoding="utf-8")}
     refs = 0
     for path in text_files(root):
+        if path in broken:
+            continue
         text = changed.get(path) or (by_path[path].text if path in by_path else path.read_text(encoding="utf-8"))
         if "test_" not in text:
             continue

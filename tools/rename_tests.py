@@ -12,14 +12,17 @@ with the singular of its scope (``test_drive_...`` in ``tests/drives/``) gets th
 nothing is doubled.
 
 References are found without a record of earlier runs: a word ``test_x`` in any text file of the checkout (tests,
-docs, .ci, tools) that is no longer the name of anything (no test, fixture, variable or module of that name), but
-whose conforming form ``test_<scope>_x`` is a test, is rewritten to it. Where several scopes hold such a test, the
-one of the referencing file's own scope wins; otherwise the reference is reported and left alone. So the script can
-be run again after merging branches that still mention old names: it is idempotent and only ever touches names
-that no longer exist.
+docs, .ci, tools) that is no longer the name of anything (no function, class or module of that name, no variable
+of that name in the same module), but whose conforming form ``test_<scope>_x`` is a test, is rewritten to it.
+Where several scopes hold such a test, the test of the referencing module itself wins, then the one of the
+module's own scope, then the one whose ``tests/<scope>/`` path is on the same line; otherwise the reference is
+reported and left alone.  So the script can be run again after merging branches that still use old names: it is
+idempotent and only ever touches names that no longer exist.  (A ``pytest -k`` expression that matches a part of
+a name is no name and is not rewritten.)
 
 Usage:  python tools/rename_tests.py [--check] [ROOT]
         --check: change nothing, list what would change, exit 1 if anything would.
+        Exit 2 after renaming if a problem was reported (a collision, an ambiguous reference, a broken module).
 """
 from __future__ import annotations
 

@@ -234,7 +234,8 @@ def test_architecture_rename_tool_renames_tests_and_references_once(tmp_path):
         del sys.modules[spec.name]
     files = {
         "tests/drives/test_x.py": ('import pytest\n\n@pytest.fixture\ndef test_data():\n    return 1\n\n\n'
-                                   'def helper():\n    pass\n\n\ndef test_speed(test_data):\n    """See test_drive_ready."""\n'
+                                   'def helper():\n    pass\n\n\n'
+                                   'def test_speed(test_data):\n    """See test_drive_ready."""\n'
                                    '\n\ndef test_drive_ready():\n    pass\n\n\ndef test_drives_done():\n    pass\n\n\n'
                                    'class TestGroup:\n    def test_inner(self):\n        pass\n'),
         "tests/s7_1500/acceptance/test_y.py": "def test_s7_1200_axis_is_refused():\n    test_speed = 1\n",

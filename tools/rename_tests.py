@@ -157,7 +157,8 @@ def text_files(root: Path) -> list[Path]:
         paths = [root / p for p in out if p]
     except (OSError, subprocess.CalledProcessError):
         paths = [p for p in root.rglob("*") if ".git" not in p.parts and ".venv" not in p.parts]
-    return [p for p in paths if p.is_file() and (p.suffix in TEXT_SUFFIXES or (p.suffix == "" and p.parent.name == ".ci"))
+    return [p for p in paths
+            if p.is_file() and (p.suffix in TEXT_SUFFIXES or (p.suffix == "" and p.parent.name == ".ci"))
             and "golden" not in p.relative_to(root).parts[:2]]
 
 

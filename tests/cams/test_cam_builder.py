@@ -87,7 +87,7 @@ CHARACTERISTICS = [
 
 
 @pytest.mark.parametrize("name,cv,ca,cj,rel", CHARACTERISTICS)
-def test_vdi_characteristic_values_s6_2_5_15(name, cv, ca, cj, rel):
+def test_cams_vdi_characteristic_values_s6_2_5_15(name, cv, ca, cj, rel):
     c = vdi.law(name).characteristics()
     assert c.cv == pytest.approx(cv, rel=rel)
     assert c.ca == pytest.approx(ca, rel=rel)
@@ -95,7 +95,7 @@ def test_vdi_characteristic_values_s6_2_5_15(name, cv, ca, cj, rel):
     assert c.cj == pytest.approx(cj, rel=rel) if math.isfinite(cj) else c.cj == INF
 
 
-def test_modified_trapezoid_and_modified_sine_jerk_is_4_pi_ca_s6_2_5_15():
+def test_cams_modified_trapezoid_and_modified_sine_jerk_is_4_pi_ca_s6_2_5_15():
     for name in ("modified_trapezoid", "modified_sine"):
         c = vdi.law(name).characteristics()
         assert c.cj == pytest.approx(4 * PI * c.ca, rel=1e-9)
@@ -106,7 +106,7 @@ ALL_LAWS = ["line", "quadratic_parabola", "simple_sine", "inclined_sine", "polyn
 
 
 @pytest.mark.parametrize("name", ALL_LAWS)
-def test_vdi_law_is_normalized_and_its_derivatives_are_consistent_s6_2_5_15(name):
+def test_cams_vdi_law_is_normalized_and_its_derivatives_are_consistent_s6_2_5_15(name):
     law = vdi.law(name)
     z = np.linspace(0.0, 1.0, 40001)
     s, v, a, j = law.evaluate(z)
@@ -123,7 +123,7 @@ def test_vdi_law_is_normalized_and_its_derivatives_are_consistent_s6_2_5_15(name
     assert law.task in {"RR", "GG", "RU"}
 
 
-def test_vdi_harmonic_combination_is_jerk_continuous_at_lambda_and_ends_in_a_reversal_s6_2_5_15():
+def test_cams_vdi_harmonic_combination_is_jerk_continuous_at_lambda_and_ends_in_a_reversal_s6_2_5_15():
     law = vdi.harmonic_combination()
     assert law.task == "RU" and law.lam == pytest.approx(2 - math.sqrt(2))
     first, second = law.pieces
@@ -144,7 +144,7 @@ RR_SEGMENTS = {"quadratic_parabola": 2, "simple_sine": 1, "inclined_sine": 1, "p
 
 
 @pytest.mark.parametrize("name", sorted(RR_SEGMENTS))
-def test_vdi_dwell_in_dwell_transition_follows_the_law_and_is_continuous_s6_2_5_15(name):
+def test_cams_vdi_dwell_in_dwell_transition_follows_the_law_and_is_continuous_s6_2_5_15(name):
     d = dwell_dwell(name)
     info = d.transitions[0]
     assert info.task == "RR" and info.segments == RR_SEGMENTS[name]
@@ -162,7 +162,7 @@ def test_vdi_dwell_in_dwell_transition_follows_the_law_and_is_continuous_s6_2_5_
         assert (got.cv, got.ca) == pytest.approx((want.cv, want.ca), rel=1e-7)
 
 
-def test_vdi_7th_degree_polynomial_uses_two_segments_continuous_to_the_jerk_s6_2_5_7():
+def test_cams_vdi_7th_degree_polynomial_uses_two_segments_continuous_to_the_jerk_s6_2_5_7():
     d = dwell_dwell("polynomial7")
     curve = d.curve()
     for x in (100.0, 130.0, 160.0):                                 # both ends and the split
@@ -171,7 +171,7 @@ def test_vdi_7th_degree_polynomial_uses_two_segments_continuous_to_the_jerk_s6_2
     assert c.cv == pytest.approx(35 / 16, rel=0.01) and c.cj < 60
 
 
-def test_vdi_falling_transition_and_lambda_of_the_quadratic_parabola_s6_2_5_15():
+def test_cams_vdi_falling_transition_and_lambda_of_the_quadratic_parabola_s6_2_5_15():
     d = dwell_dwell("quadratic_parabola", y0=50, y1=20, lam=0.25)
     curve = d.curve()
     assert ev(curve, 115.0)[0] == pytest.approx(50 - 30 * 0.25, rel=1e-9)   # switch at lambda: s(lambda) = lambda
@@ -179,7 +179,7 @@ def test_vdi_falling_transition_and_lambda_of_the_quadratic_parabola_s6_2_5_15()
     assert d.transitions[0].lam == 0.25
 
 
-def test_vdi_simple_and_inclined_sine_between_equal_constant_velocities_g_g_s6_2_5_15():
+def test_cams_vdi_simple_and_inclined_sine_between_equal_constant_velocities_g_g_s6_2_5_15():
     for name, order in (("simple_sine", 1), ("inclined_sine", 2)):
         b = CamBuilder().line(0, 100, y0=0, slope=1.0).transition("vdi", name).line(160, 260, y0=200, slope=1.0)
         d = b.build()
@@ -191,7 +191,7 @@ def test_vdi_simple_and_inclined_sine_between_equal_constant_velocities_g_g_s6_2
         assert seg.sine_amplitude != 0 and seg.a[2:] == (0.0,) * 5     # a0 + a1 x + A sin(b1 x + b2)
 
 
-def test_vdi_sine_line_combination_dwell_into_constant_velocity_s6_2_5_15():
+def test_cams_vdi_sine_line_combination_dwell_into_constant_velocity_s6_2_5_15():
     b = CamBuilder().line(0, 100, y0=0, slope=0).transition("vdi", "sine_line").line(160, 200, y0=60, slope=1.5)
     d = b.build()
     info = d.transitions[0]
@@ -200,7 +200,7 @@ def test_vdi_sine_line_combination_dwell_into_constant_velocity_s6_2_5_15():
         assert_join(d.curve(), x, 2, 60, 60)
 
 
-def test_vdi_harmonic_combination_dwell_into_reversal_matches_its_acceleration_s6_2_5_15():
+def test_cams_vdi_harmonic_combination_dwell_into_reversal_matches_its_acceleration_s6_2_5_15():
     right = {"y0": 60, "y1": 0, "v0": 0.0, "a0": -0.2, "v1": 0.0, "a1": 0.0}         # starts in a reversal (U)
     b = CamBuilder().line(0, 100, y0=0, slope=0).transition("vdi", "harmonic_combination")
     d = b.polynomial(160, 260, **right).build()
@@ -215,7 +215,7 @@ def test_vdi_harmonic_combination_dwell_into_reversal_matches_its_acceleration_s
         assert_join(d.curve(), x, 2, 60, 60)
 
 
-def test_vdi_law_outside_its_motion_task_is_refused_with_a_hint_s6_2_5_15():
+def test_cams_vdi_law_outside_its_motion_task_is_refused_with_a_hint_s6_2_5_15():
     b = CamBuilder().line(0, 100, y0=0, slope=1.0).transition("vdi", "inclined_sine").line(160, 200, y0=150, slope=0)
     with pytest.raises(UnsupportedTransitionError, match=r"transition #2 .*G-R.*'polynomial'"):
         b.build()
@@ -226,7 +226,7 @@ def test_vdi_law_outside_its_motion_task_is_refused_with_a_hint_s6_2_5_15():
     assert_join(d.curve(), 160.0, 1, 60, 60)
 
 
-def test_vdi_line_law_and_double_harmonic_points_s6_2_5_7():
+def test_cams_vdi_line_law_and_double_harmonic_points_s6_2_5_7():
     d = CamBuilder().line(0, 100, y0=0, slope=1).transition("vdi", "line").line(150, 200, y0=150, slope=1).build()
     assert d.transitions[0].task == "GG"
     assert_join(d.curve(), 100.0, 2, 50, 50)
@@ -244,7 +244,7 @@ STATES = {"R": (0.0, 0.0), "G": (0.8, 0.0), "U": (0.0, -0.02), "B": (0.5, 0.015)
 
 @pytest.mark.parametrize("start", "RGUB")
 @pytest.mark.parametrize("end", "RGUB")
-def test_vdi_polynomial_transition_for_every_motion_task_s6_2_5_15(start, end):
+def test_cams_vdi_polynomial_transition_for_every_motion_task_s6_2_5_15(start, end):
     (va, aa), (vb, ab) = STATES[start], STATES[end]
     b = CamBuilder()
     b.polynomial(0, 100, y0=0, y1=40, v0=0.2, a0=0.0, v1=va, a1=aa)
@@ -267,7 +267,7 @@ def test_vdi_polynomial_transition_for_every_motion_task_s6_2_5_15(start, end):
        width=st.floats(5, 200), law=st.sampled_from(["quadratic_parabola", "simple_sine", "inclined_sine",
                                                      "polynomial", "modified_trapezoid", "modified_sine",
                                                      "sine_line"]))
-def test_property_vdi_dwell_transition_hits_both_levels_and_is_monotonic_s6_2_5_15(y0, rise, x0, width, law):
+def test_cams_property_vdi_dwell_transition_hits_both_levels_and_is_monotonic_s6_2_5_15(y0, rise, x0, width, law):
     y1 = y0 + rise
     b = CamBuilder(LINEAR).line(x0, x0 + 10, y0=y0, slope=0).transition("vdi", law)
     d = b.line(x0 + 10 + width, x0 + 20 + width, y0=y1, slope=0).build()
@@ -284,7 +284,7 @@ def test_property_vdi_dwell_transition_hits_both_levels_and_is_monotonic_s6_2_5_
 @settings(max_examples=40, deadline=None)
 @given(va=st.floats(-2, 2), aa=st.floats(-0.1, 0.1), vb=st.floats(-2, 2), ab=st.floats(-0.1, 0.1),
        yb=st.floats(-100, 100), width=st.floats(10, 100))
-def test_property_polynomial_transition_is_c2_between_any_states_s6_2_5_15(va, aa, vb, ab, yb, width):
+def test_cams_property_polynomial_transition_is_c2_between_any_states_s6_2_5_15(va, aa, vb, ab, yb, width):
     b = CamBuilder().polynomial(0, 50, y0=0, y1=10, v0=0, a0=0, v1=va, a1=aa).transition("vdi")
     d = b.polynomial(50 + width, 100 + width, y0=yb, y1=0, v0=vb, a0=ab, v1=0, a1=0).build()
     curve = d.curve()
@@ -294,7 +294,7 @@ def test_property_polynomial_transition_is_c2_between_any_states_s6_2_5_15(va, a
 
 # ------------------------------------------------------------------------------------------------------
 # elements (§6.2.5.9–§6.2.5.14)
-def test_point_and_point_group_absolute_and_relative_s6_2_5_9_s6_2_5_10():
+def test_cams_point_and_point_group_absolute_and_relative_s6_2_5_9_s6_2_5_10():
     b = CamBuilder(LINEAR).point(0, 5)
     b.point_group([(0, 0), (0.5, 1), (1, 0.5)], relative=True, x_range=(100, 200), y_range=(10, 30))
     b.point_group([(0.0, 7.0), (1.0, 8.0)], relative="x", x_range=(300, 400))
@@ -309,7 +309,7 @@ def test_point_and_point_group_absolute_and_relative_s6_2_5_9_s6_2_5_10():
         CamBuilder().point_group([(0, 0), (1.5, 1)], relative="x", x_range=(0, 1))
 
 
-def test_line_by_values_or_slope_s6_2_5_11():
+def test_cams_line_by_values_or_slope_s6_2_5_11():
     for kw in ({"y0": 2, "y1": 12}, {"y0": 2, "slope": 0.5}, {"slope": 0.5, "y1": 12}):
         d = CamBuilder().line(10, 30, **kw).build()
         y, v, a, j = ev(d.curve(), 25.0)
@@ -321,7 +321,7 @@ def test_line_by_values_or_slope_s6_2_5_11():
 @pytest.mark.parametrize("definition", [
     {"phase0": 0.3, "phase1": 0.3 + 3 * PI}, {"phase0": 0.3, "period": 40 / 1.5}, {"phase0": 0.3, "frequency": 1.5 / 40},
     {"period": 40 / 1.5, "phase1": 0.3 + 3 * PI}, {"frequency": 1.5 / 40, "phase1": 0.3 + 3 * PI}])
-def test_sine_definitions_give_the_same_segment_s6_2_5_12(definition):
+def test_cams_sine_definitions_give_the_same_segment_s6_2_5_12(definition):
     d = CamBuilder().sine(200, 240, amplitude=4.0, offset=10.0, **definition).build()
     b1 = 3 * PI / 40
     for x in (200.0, 213.0, 240.0):
@@ -337,7 +337,7 @@ def test_sine_definitions_give_the_same_segment_s6_2_5_12(definition):
 
 @pytest.mark.parametrize("incl", [{"offset0": 1.0, "offset1": 9.0}, {"offset0": 1.0, "inclination": 0.2},
                                   {"inclination": 0.2, "offset1": 9.0}])
-def test_inclined_sine_definitions_s6_2_5_12(incl):
+def test_cams_inclined_sine_definitions_s6_2_5_12(incl):
     d = CamBuilder().sine(0, 40, amplitude=2.0, phase0=0, phase1=2 * PI, inclined=True, **incl).build()
     for x in (0.0, 10.0, 33.0, 40.0):
         assert d.curve().value(x) == pytest.approx(1 + 0.2 * x + 2 * math.sin(2 * PI * x / 40), abs=1e-9)
@@ -347,7 +347,7 @@ def test_inclined_sine_definitions_s6_2_5_12(incl):
         CamBuilder().sine(0, 40, amplitude=1, phase0=0, phase1=1, period=10)
 
 
-def test_polynomial_from_coefficients_in_its_own_leading_value_s6_2_5_13():
+def test_cams_polynomial_from_coefficients_in_its_own_leading_value_s6_2_5_13():
     c = [1.0, 0.5, 0.01, -1e-4, 2e-6, 0.0, 1e-10]
     d = CamBuilder().polynomial(100, 150, coefficients=c, trig=(0.5, 0.2, 0.1)).build()
     for x in (100.0, 120.0, 150.0):
@@ -363,7 +363,7 @@ def test_polynomial_from_coefficients_in_its_own_leading_value_s6_2_5_13():
     ({"y0": 1, "y1": 5, "v0": 0.5, "v1": -0.2, "a0": 0.05, "a1": 0.0}, 1),
     ({"y0": 1, "y1": 5, "v0": 0.5, "v1": -0.2, "a0": 0.05, "a1": 0.0, "j0": 0.01}, 1),
     ({"y0": 1, "y1": 5, "v0": 0.5, "v1": -0.2, "a0": 0.05, "a1": 0.0, "j0": 0.01, "j1": -0.002}, 2)])
-def test_polynomial_from_boundary_values_s6_2_5_13(given, segments):
+def test_cams_polynomial_from_boundary_values_s6_2_5_13(given, segments):
     d = CamBuilder().polynomial(20, 40, **given).build()
     assert len(d.segments) == segments
     curve = d.curve()
@@ -377,7 +377,7 @@ def test_polynomial_from_boundary_values_s6_2_5_13(given, segments):
         assert_join(curve, 30.0, 3, 5, 20, rel=1e-6)
 
 
-def test_polynomial_boundary_values_with_trigonometric_part_s6_2_5_13():
+def test_cams_polynomial_boundary_values_with_trigonometric_part_s6_2_5_13():
     d = CamBuilder().polynomial(0, 10, y0=0, y1=3, v0=0, v1=0, trig=(0.5, 1.0, 0.0)).build()
     curve = d.curve()
     assert ev(curve, 0.0)[:2] == pytest.approx([0.0, 0.0], abs=1e-12)
@@ -385,7 +385,7 @@ def test_polynomial_boundary_values_with_trigonometric_part_s6_2_5_13():
     assert d.segments[0].sine_amplitude == 0.5
 
 
-def test_inverse_sine_points_and_mirroring_s6_2_5_14():
+def test_cams_inverse_sine_points_and_mirroring_s6_2_5_14():
     d = CamBuilder(LINEAR).inverse_sine(0, 100, 10, 30, n_points=5).build()
     assert len(d.points) == 5
     for (x, y), t in zip(d.points, np.linspace(-1, 1, 5)):
@@ -400,7 +400,7 @@ def test_inverse_sine_points_and_mirroring_s6_2_5_14():
         CamBuilder().line(-100, -50, y0=10, slope=0).transition("vdi").inverse_sine(0, 100, 10, 30).build()
 
 
-def test_statistics_points_and_segments_per_element_s6_2_5_7():
+def test_cams_statistics_points_and_segments_per_element_s6_2_5_7():
     b = CamBuilder().point(0, 0).point(10, 1).point_group([(20, 0), (30, 1), (40, 0)])
     b.line(50, 60, y0=0, slope=0).transition("vdi", "modified_sine").line(80, 90, y0=1, slope=0)
     b.sine(100, 120, 1, phase0=0, period=20)
@@ -417,7 +417,7 @@ def test_statistics_points_and_segments_per_element_s6_2_5_7():
 
 # ------------------------------------------------------------------------------------------------------
 # limits and errors
-def test_capacity_error_names_the_element_that_exceeds_50_segments_s6_2_5_7():
+def test_cams_capacity_error_names_the_element_that_exceeds_50_segments_s6_2_5_7():
     b = CamBuilder()
     for i in range(50):
         b.line(i, i + 1, y0=0, slope=0)
@@ -433,7 +433,7 @@ def test_capacity_error_names_the_element_that_exceeds_50_segments_s6_2_5_7():
         b.line(240, 241, y0=1, slope=0).build()
 
 
-def test_capacity_error_names_the_element_that_exceeds_1000_points_s6_2_5_7():
+def test_cams_capacity_error_names_the_element_that_exceeds_1000_points_s6_2_5_7():
     b = CamBuilder().point_group([(i, 0.0) for i in range(600)]).inverse_sine(700, 800, 0, 1, n_points=400)
     assert b.build().statistics()["points"] == 1000
     b.point(900, 0)
@@ -443,7 +443,7 @@ def test_capacity_error_names_the_element_that_exceeds_1000_points_s6_2_5_7():
         CamBuilder().inverse_sine(0, 1, 0, 1, n_points=1001).build()
 
 
-def test_overlapping_or_unordered_elements_are_refused_s6_2_5_7():
+def test_cams_overlapping_or_unordered_elements_are_refused_s6_2_5_7():
     with pytest.raises(ValueError, match=r"line #2 starts at x=5, before the end of line #1"):
         CamBuilder().line(0, 10, y0=0, slope=0).line(5, 20, y0=0, slope=0)
     with pytest.raises(ValueError, match="point #2 starts"):
@@ -466,7 +466,7 @@ def test_overlapping_or_unordered_elements_are_refused_s6_2_5_7():
         CamBuilder().build()
 
 
-def test_coefficients_beyond_the_lreal_range_of_the_tags_are_reported_sA_2_4():
+def test_cams_coefficients_beyond_the_lreal_range_of_the_tags_are_reported_sA_2_4():
     b = CamBuilder().line(1e5, 1e5 + 1, y0=0, slope=0).transition("vdi", "polynomial")
     b.line(1e5 + 2, 1e5 + 3, y0=1, slope=0)
     with pytest.raises(CamCoefficientError, match=r"transition #2 .*outside ±1.0E12"):
@@ -477,7 +477,7 @@ def test_coefficients_beyond_the_lreal_range_of_the_tags_are_reported_sA_2_4():
     assert any("rounding" in w for w in d.warnings)
 
 
-def test_a_step_between_touching_elements_is_reported():
+def test_cams_a_step_between_touching_elements_is_reported():
     d = CamBuilder().line(0, 10, y0=0, slope=0).line(10, 20, y0=1, slope=0).build()
     assert d.warnings and "step" in d.warnings[0]
 
@@ -492,7 +492,7 @@ def example_cam() -> CamDefinition:
     return b.build()
 
 
-def test_apply_to_a_cam_to_and_interpolate_like_mc_interpolatecam_s9_2_1():
+def test_cams_apply_to_a_cam_to_and_interpolate_like_mc_interpolatecam_s9_2_1():
     assert SEGMENT_FIELDS == TO_SEGMENT_FIELDS
     d = example_cam()
     ctl = Controller(family="S7-1500T")
@@ -509,7 +509,7 @@ def test_apply_to_a_cam_to_and_interpolate_like_mc_interpolatecam_s9_2_1():
     assert curve.value(90.0) == pytest.approx(50.0, abs=1e-9)
 
 
-def test_to_dict_is_json_and_round_trips():
+def test_cams_to_dict_is_json_and_round_trips():
     d = example_cam()
     data = json.loads(json.dumps(d.to_dict()))
     assert data["statistics"]["segments"] == len(d.segments)

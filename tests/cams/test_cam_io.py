@@ -23,7 +23,7 @@ def example():
     return b.build()
 
 
-def test_point_list_round_trip_of_1000_points_s6_2_7(tmp_path):
+def test_cams_point_list_round_trip_of_1000_points_s6_2_7(tmp_path):
     d = example()
     curve = d.curve()
     path = export_points(d, tmp_path / "cam.csv", n=1000)
@@ -35,7 +35,7 @@ def test_point_list_round_trip_of_1000_points_s6_2_7(tmp_path):
     assert np.array_equal(again.value(xs), curve.value(xs))          # 17 significant digits: exact
 
 
-def test_export_header_columns_and_derivatives_s6_2_7(tmp_path):
+def test_cams_export_header_columns_and_derivatives_s6_2_7(tmp_path):
     d = example()
     curve = d.curve()
     path = export_points(curve, tmp_path / "cam.txt", delimiter="\t")
@@ -50,7 +50,7 @@ def test_export_header_columns_and_derivatives_s6_2_7(tmp_path):
     assert len(import_points(path)) == 5
 
 
-def test_export_number_of_points_delimiter_and_curves_are_checked_s6_2_7(tmp_path):
+def test_cams_export_number_of_points_delimiter_and_curves_are_checked_s6_2_7(tmp_path):
     d = example()
     assert export_points(d, tmp_path / "empty.csv", n=0).read_text() == (
         "leading,following,velocity,acceleration,jerk\n")
@@ -66,7 +66,7 @@ def test_export_number_of_points_delimiter_and_curves_are_checked_s6_2_7(tmp_pat
         export_points([(0, 0)], tmp_path / "x.csv")
 
 
-def test_import_tolerates_header_comments_blank_lines_and_both_delimiters_s6_2_7(tmp_path):
+def test_cams_import_tolerates_header_comments_blank_lines_and_both_delimiters_s6_2_7(tmp_path):
     text = ("\ufeff# exported by hand\r\n"
             "leading\tfollowing\r\n"
             "\r\n"
@@ -94,7 +94,7 @@ def test_import_tolerates_header_comments_blank_lines_and_both_delimiters_s6_2_7
     ("", None, "no points"),
     ("# nothing\nleading,following\n", None, "no points"),
 ])
-def test_import_of_malformed_files_names_the_file_and_line_s6_2_7(tmp_path, text, line, message):
+def test_cams_import_of_malformed_files_names_the_file_and_line_s6_2_7(tmp_path, text, line, message):
     path = tmp_path / "bad.csv"
     path.write_text(text)
     with pytest.raises(PointListError, match=message) as exc:
@@ -103,14 +103,14 @@ def test_import_of_malformed_files_names_the_file_and_line_s6_2_7(tmp_path, text
     assert str(exc.value).startswith(f"{path}, line {line}:" if line else f"{path}:")
 
 
-def test_import_of_a_binary_file_is_refused_s6_2_7(tmp_path):
+def test_cams_import_of_a_binary_file_is_refused_s6_2_7(tmp_path):
     path = tmp_path / "cam.bin"
     path.write_bytes(b"\x00\xff\xfe\x80\x81")
     with pytest.raises(PointListError, match="not a text file"):
         import_points(path)
 
 
-def test_plot_cam_writes_a_png_with_four_axes_s6_2_2(tmp_path):
+def test_cams_plot_cam_writes_a_png_with_four_axes_s6_2_2(tmp_path):
     d = example()
     fig = plot_cam(d, tmp_path / "cam.png", n=500, leading_velocity=360.0, title="Cam1")
     data = (tmp_path / "cam.png").read_bytes()
@@ -134,7 +134,7 @@ def test_plot_cam_writes_a_png_with_four_axes_s6_2_2(tmp_path):
     assert len(fig.axes[0].lines) == 2 + len(bounds)                       # curve, points, boundaries
 
 
-def test_a_point_list_that_never_ends_is_refused_issue8_defect7():
+def test_cams_a_point_list_that_never_ends_is_refused_issue8_defect7():
     """Review of issue 8: the size limit looked at st_size only (0 for a device): a cam csv naming /dev/zero
     (allowed with --allow-outside-paths) was read until memory ran out."""
     import os

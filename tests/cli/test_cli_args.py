@@ -36,7 +36,7 @@ def _one_line_error(capsys, *needles: str) -> str:
 
 
 @pytest.mark.parametrize("value", ["nan", "inf", "-inf", "-1", "0", "-0.0", "1e300"])
-def test_defect10_run_duration_rejected(project, capsys, value):
+def test_cli_defect10_run_duration_rejected(project, capsys, value):
     """Defect 10: --duration nan|inf|-1|0 gave a traceback or one silent cycle; 1e300 would never end."""
     code = main(["run", *project, "--duration", value, "--quiet"])
     assert code == 2
@@ -45,13 +45,13 @@ def test_defect10_run_duration_rejected(project, capsys, value):
 
 @pytest.mark.parametrize("args", [["--duration", "abc"], ["--every", "1.5"], ["--bogus"], []],
                          ids=["duration-text", "every-float", "unknown-option", "no-duration"])
-def test_defect10_argparse_errors_are_one_line_exit_2(project, capsys, args):
+def test_cli_defect10_argparse_errors_are_one_line_exit_2(project, capsys, args):
     assert main(["run", *project, *args, "--quiet"] if args != [] else ["run", *project]) == 2
     _one_line_error(capsys, "plcmotion run: error:")
 
 
 @pytest.mark.parametrize("value", ["0", "-3"])
-def test_defect10_run_every_rejected(project, capsys, tmp_path, value):
+def test_cli_defect10_run_every_rejected(project, capsys, tmp_path, value):
     code = main(["run", *project, "--duration", "0.1", "--every", value, "--trace", str(tmp_path / "t.csv"),
                  "--quiet"])
     assert code == 2
@@ -60,7 +60,7 @@ def test_defect10_run_every_rejected(project, capsys, tmp_path, value):
 
 
 @pytest.mark.parametrize("option, name", [("--trace", "t.csv"), ("--plot", "t.png")])
-def test_defect10_output_into_missing_folder_rejected_before_the_run(project, capsys, tmp_path, option, name):
+def test_cli_defect10_output_into_missing_folder_rejected_before_the_run(project, capsys, tmp_path, option, name):
     """Defect 10: --plot/--trace into a missing folder raised a traceback after the whole run."""
     target = tmp_path / "missing" / "deeper" / name
     assert main(["run", *project, "--duration", "0.1", option, str(target), "--quiet"]) == 2
@@ -68,7 +68,7 @@ def test_defect10_output_into_missing_folder_rejected_before_the_run(project, ca
 
 
 @pytest.mark.parametrize("option", ["--trace", "--plot"])
-def test_defect10_output_is_a_folder_or_under_a_file(project, capsys, tmp_path, option):
+def test_cli_defect10_output_is_a_folder_or_under_a_file(project, capsys, tmp_path, option):
     assert main(["run", *project, "--duration", "0.1", option, str(tmp_path), "--quiet"]) == 2
     _one_line_error(capsys, option)
     a_file = tmp_path / "file.txt"
@@ -77,7 +77,7 @@ def test_defect10_output_is_a_folder_or_under_a_file(project, capsys, tmp_path, 
     _one_line_error(capsys, option)
 
 
-def test_defect10_plot_format_and_same_file(project, capsys, tmp_path):
+def test_cli_defect10_plot_format_and_same_file(project, capsys, tmp_path):
     assert main(["run", *project, "--duration", "0.1", "--plot", str(tmp_path / "t.xyz"), "--quiet"]) == 2
     _one_line_error(capsys, "--plot", "png")
     same = str(tmp_path / "t.png")
@@ -86,13 +86,13 @@ def test_defect10_plot_format_and_same_file(project, capsys, tmp_path):
 
 
 @pytest.mark.parametrize("args", [["--signal", "Axis_1.Position"], ["--every", "2"]])
-def test_defect10_trace_options_without_trace_or_plot(project, capsys, args):
+def test_cli_defect10_trace_options_without_trace_or_plot(project, capsys, args):
     """--signal/--every without --trace or --plot were ignored silently."""
     assert main(["run", *project, "--duration", "0.1", *args, "--quiet"]) == 2
     _one_line_error(capsys, "--trace", "--plot")
 
 
-def test_defect10_valid_run_still_works(project, capsys, tmp_path):
+def test_cli_defect10_valid_run_still_works(project, capsys, tmp_path):
     csv, png = tmp_path / "out" / "t.csv", tmp_path / "out" / "t.png"
     csv.parent.mkdir()
     assert main(["run", *project, "--duration", "0.1", "--trace", str(csv), "--plot", str(png), "--every", "2",
@@ -103,7 +103,7 @@ def test_defect10_valid_run_still_works(project, capsys, tmp_path):
 
 
 @pytest.mark.parametrize("where", ["under-a-file", "dev-null"])
-def test_defect10_demo_out_unwritable(capsys, tmp_path, where):
+def test_cli_defect10_demo_out_unwritable(capsys, tmp_path, where):
     """Defect 10: demo --out to a place that cannot be written: one line, exit 2, before the demo runs."""
     if where == "under-a-file":
         a_file = tmp_path / "file.txt"
@@ -118,7 +118,7 @@ def test_defect10_demo_out_unwritable(capsys, tmp_path, where):
 
 
 @pytest.mark.skipif(os.geteuid() == 0, reason="root may write anywhere")
-def test_defect10_demo_out_read_only_folder(capsys, tmp_path):
+def test_cli_defect10_demo_out_read_only_folder(capsys, tmp_path):
     ro = tmp_path / "ro"
     ro.mkdir()
     ro.chmod(0o500)
@@ -129,14 +129,14 @@ def test_defect10_demo_out_read_only_folder(capsys, tmp_path):
     assert "--out" in capsys.readouterr().err
 
 
-def test_defect10_check_missing_project(capsys, tmp_path):
+def test_cli_defect10_check_missing_project(capsys, tmp_path):
     assert main(["check", str(tmp_path / "nope.toml")]) != 0
     err = capsys.readouterr().err
     assert "nope.toml" in err and "Traceback" not in err
 
 
 # --- defect 6 at the command line -------------------------------------------------------------------------
-def test_defect6_run_reports_sys_exit_in_a_program(project, capsys, tmp_path):
+def test_cli_defect6_run_reports_sys_exit_in_a_program(project, capsys, tmp_path):
     """Defect 6: `plcmotion run` exited 0 silently when a program called sys.exit(0).  Now the controller goes
     to STOP (a PLC program cannot end the controller) and the CLI reports it with exit code 1."""
     toml, _ = project
@@ -149,7 +149,7 @@ def test_defect6_run_reports_sys_exit_in_a_program(project, capsys, tmp_path):
     assert "controller in STOP" in captured.err and "SystemExit" in captured.err
 
 
-def test_defect6_run_sys_exit_while_loading_the_program(project, capsys, tmp_path):
+def test_cli_defect6_run_sys_exit_while_loading_the_program(project, capsys, tmp_path):
     toml, _ = project
     program = tmp_path / "exits.py"
     program.write_text("import sys\nsys.exit(0)\n")
@@ -157,7 +157,7 @@ def test_defect6_run_sys_exit_while_loading_the_program(project, capsys, tmp_pat
     assert "sys.exit(0)" in capsys.readouterr().err
 
 
-def test_defect6_run_keyboard_interrupt(project, capsys, tmp_path):
+def test_cli_defect6_run_keyboard_interrupt(project, capsys, tmp_path):
     """Ctrl-C in a program: the controller goes to STOP, the trace written so far is kept, exit 130."""
     toml, _ = project
     program = tmp_path / "ctrl_c.py"
@@ -169,7 +169,7 @@ def test_defect6_run_keyboard_interrupt(project, capsys, tmp_path):
     assert csv.exists() and len(csv.read_text().splitlines()) > 10
 
 
-def test_defect6_run_reports_cycle_overruns(project, capsys, tmp_path):
+def test_cli_defect6_run_reports_cycle_overruns(project, capsys, tmp_path):
     """The cycle watchdog at the CLI: overruns are summed up after the run (not one warning per cycle)."""
     toml, _ = project
     program = tmp_path / "slow.py"
@@ -183,7 +183,7 @@ def test_defect6_run_reports_cycle_overruns(project, capsys, tmp_path):
 
 # --- review of issue 8 (found by trying the CLI as a user) -----------------------------------------------
 @pytest.mark.skipif(not Path("/proc/self").is_dir(), reason="needs Linux /proc")
-def test_defect10_demo_out_into_a_folder_nobody_can_write(capsys):
+def test_cli_defect10_demo_out_into_a_folder_nobody_can_write(capsys):
     """Defect 10 (review): `demo --out /proc` passed the permission check as root (os.access says yes) and
     ended in a FileNotFoundError traceback after the whole demo; it is rejected before the demo runs."""
     assert main(["demo", "--out", "/proc"]) == 2
@@ -193,7 +193,7 @@ def test_defect10_demo_out_into_a_folder_nobody_can_write(capsys):
 
 
 @pytest.mark.skipif(not Path("/dev/full").exists(), reason="needs /dev/full (a disk that is always full)")
-def test_defect10_trace_write_error_during_the_run_is_reported_in_one_line(project, capsys):
+def test_cli_defect10_trace_write_error_during_the_run_is_reported_in_one_line(project, capsys):
     """Defect 10 (review): a trace file that cannot be written during the run (disk full) gave an OSError
     traceback at the end; now the run completes, the controller stays in RUN and one line says why, exit 1."""
     code = main(["run", *project, "--duration", "0.05", "--trace", "/dev/full", "--quiet"])
@@ -205,7 +205,7 @@ def test_defect10_trace_write_error_during_the_run_is_reported_in_one_line(proje
 
 
 @pytest.mark.skipif(not Path("/dev/zero").exists(), reason="needs /dev/zero (an endless file)")
-def test_defect7_check_of_an_endless_file_ends_with_the_size_limit(capsys):
+def test_cli_defect7_check_of_an_endless_file_ends_with_the_size_limit(capsys):
     """Defect 7 (review): `plcmotion check /dev/zero` read forever (the size limit looked at st_size only, which
     is 0 for a device); the file is read up to the limit and rejected."""
     import threading
@@ -220,7 +220,7 @@ def test_defect7_check_of_an_endless_file_ends_with_the_size_limit(capsys):
 
 @pytest.mark.skipif(not Path("/proc/self").is_dir(), reason="needs Linux /proc")
 @pytest.mark.parametrize("option, name", [("--plot", "p.png"), ("--trace", "t.csv")])
-def test_defect10_output_into_a_folder_nobody_can_write_rejected_before_the_run(project, capsys, option, name):
+def test_cli_defect10_output_into_a_folder_nobody_can_write_rejected_before_the_run(project, capsys, option, name):
     """Defect 10 (review): as root os.access says any folder is writable, so --plot /proc/p.png ran the whole
     project and then failed; both options are refused before the run with one line and exit code 2."""
     code = main(["run", *project, "--duration", "0.05", option, f"/proc/{name}", "--quiet"])

@@ -40,7 +40,7 @@ def _decode_bounded(codec: Codec, data: bytes) -> None:
 
 @settings(max_examples=400, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.binary(max_size=700))
-def test_random_bytes_never_raise_and_decode_fast(data: bytes) -> None:
+def test_crossplc_random_bytes_never_raise_and_decode_fast(data: bytes) -> None:
     _decode_bounded(PLAIN, data)
     _decode_bounded(PLAIN, GENUINE[:2] + data)          # past the first flags byte
     _decode_bounded(PLAIN, GENUINE[:20] + data)         # past PublisherId, group and payload header
@@ -48,13 +48,13 @@ def test_random_bytes_never_raise_and_decode_fast(data: bytes) -> None:
 
 @settings(max_examples=300, deadline=None)
 @given(st.integers(0, len(GENUINE)), st.integers(0, len(GENUINE)), st.binary(max_size=40))
-def test_truncated_and_spliced_telegrams_never_raise(cut: int, at: int, junk: bytes) -> None:
+def test_crossplc_truncated_and_spliced_telegrams_never_raise(cut: int, at: int, junk: bytes) -> None:
     _decode_bounded(PLAIN, GENUINE[:cut])
     _decode_bounded(PLAIN, GENUINE[:at] + junk + GENUINE[at:])
     _decode_bounded(PLAIN, GENUINE[:at] + junk + GENUINE[at + len(junk):])
 
 
-def test_secured_reader_bounds_random_and_forged_datagrams() -> None:
+def test_crossplc_secured_reader_bounds_random_and_forged_datagrams() -> None:
     codec = _secured()
     good = codec.encode(SAMPLE)
     rng = random.Random(3)
@@ -85,11 +85,11 @@ def _garbage(rng: random.Random, seq: int) -> bytes:
 
 
 @pytest.mark.timeout_guard
-def test_loopback_flood_keeps_genuine_samples_flowing_with_bounded_cost() -> None:
+def test_crossplc_loopback_flood_keeps_genuine_samples_flowing_with_bounded_cost() -> None:
     """~3000 garbage datagrams interleaved with 200 genuine telegrams on loopback: every genuine sample is
     delivered in order, the CPU time per datagram and the memory peak stay bounded.  (On an unsecured link
     the first datagram sets the count, so the link is up before the flood starts; see
-    test_forged_runs_do_not_keep_a_restarted_publisher_out for a flood from the start.)"""
+    test_crossplc_forged_runs_do_not_keep_a_restarted_publisher_out for a flood from the start.)"""
     with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as probe:
         probe.bind(("127.0.0.1", 0))
         port = probe.getsockname()[1]
@@ -128,7 +128,7 @@ def test_loopback_flood_keeps_genuine_samples_flowing_with_bounded_cost() -> Non
           f"memory peak {peak / 1e3:.0f} kB, rejected {sub.rejected}")
 
 
-def test_forged_runs_do_not_keep_a_restarted_publisher_out() -> None:
+def test_crossplc_forged_runs_do_not_keep_a_restarted_publisher_out() -> None:
     """Sequence window (defect 9): a forged far-ahead number came first, and forged datagrams with random
     numbers (outside the window: on an unsecured link an in-window forgery cannot be told from a genuine
     telegram) keep coming between the genuine ones; the genuine count is followed after three in a row."""
@@ -147,7 +147,7 @@ def test_forged_runs_do_not_keep_a_restarted_publisher_out() -> None:
 @settings(max_examples=200, deadline=None)
 @given(st.integers(0, (1 << 16) - 1), st.lists(st.integers(1, 256), max_size=300),
        st.lists(st.integers(257, (1 << 16) - 257), max_size=300))
-def test_sequence_window_accepts_every_in_window_step_and_no_lone_stray(start, steps, strays) -> None:
+def test_crossplc_sequence_window_accepts_every_in_window_step_and_no_lone_stray(start, steps, strays) -> None:
     """A genuine count advancing by 1..window per telegram (with wrap-around) is always accepted and its
     gaps counted as missed; a stray number out of the window between two genuine ones never is."""
     from plcmotion.crossplc.sequence import SequenceWindow

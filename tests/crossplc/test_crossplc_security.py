@@ -53,7 +53,7 @@ def _subscriber(**kwargs):
 
 
 @pytest.mark.parametrize("policy,size", [("PubSub-Aes128-CTR", 52), ("PubSub-Aes256-CTR", 68)])
-def test_key_data_is_signing_key_encrypting_key_and_key_nonce(policy, size) -> None:
+def test_crossplc_key_data_is_signing_key_encrypting_key_and_key_nonce(policy, size) -> None:
     key = generate_key(policy)
     assert len(key) == size and key != generate_key(policy)
     assert Security("sign", key).policy == policy
@@ -69,7 +69,7 @@ def test_key_data_is_signing_key_encrypting_key_and_key_nonce(policy, size) -> N
 
 @pytest.mark.parametrize("policy", ["PubSub-Aes128-CTR", "PubSub-Aes256-CTR"])
 @pytest.mark.parametrize("mode", ["sign", "sign_encrypt"])
-def test_secured_link_round_trip_on_loopback(url, policy, mode) -> None:
+def test_crossplc_secured_link_round_trip_on_loopback(url, policy, mode) -> None:
     key = generate_key(policy)
     sent = [sample(i) for i in range(1, 51)]
     with uadp.UadpLeadingValueSubscriber(url, security=mode, key=key, security_token_id=7, wait_timeout=2.0) as sub, \
@@ -86,7 +86,7 @@ def test_secured_link_round_trip_on_loopback(url, policy, mode) -> None:
 
 
 @pytest.mark.parametrize("policy,enc", [("PubSub-Aes128-CTR", 16), ("PubSub-Aes256-CTR", 32)])
-def test_secured_datagram_follows_part14_layout(url, policy, enc) -> None:
+def test_crossplc_secured_datagram_follows_part14_layout(url, policy, enc) -> None:
     """Checked by hand against Part 14: ExtendedFlags1 bit 4, SecurityHeader (flags 0x03, token id,
     nonce length 8, nonce = 4 random bytes + UInt32 message number), payload AES-CTR with counter block
     KeyNonce|MessageNonce|00000001, HMAC-SHA256 of everything before the 32-byte signature."""
@@ -108,7 +108,7 @@ def test_secured_datagram_follows_part14_layout(url, policy, enc) -> None:
     assert struct.pack("<d", 123.456) not in data   # the value does not travel in clear
 
 
-def test_signed_only_datagram_is_readable_but_signed(url) -> None:
+def test_crossplc_signed_only_datagram_is_readable_but_signed(url) -> None:
     key = generate_key("PubSub-Aes128-CTR")
     s = sample(4)
     (data,) = _capture(url, {"security": "sign", "key": key}, [s])
@@ -117,7 +117,7 @@ def test_signed_only_datagram_is_readable_but_signed(url) -> None:
     assert data[-32:] == hmac.new(key[:32], data[:-32], hashlib.sha256).digest()
 
 
-def test_every_single_bit_flip_of_a_signed_datagram_is_rejected() -> None:
+def test_crossplc_every_single_bit_flip_of_a_signed_datagram_is_rejected() -> None:
     key = generate_key()
     data = Codec(1, 1, 1, Security("sign_encrypt", key)).encode(sample(1))
     sub = _subscriber(key=key)
@@ -131,7 +131,7 @@ def test_every_single_bit_flip_of_a_signed_datagram_is_rejected() -> None:
     assert sub.accepted == 1
 
 
-def test_wrong_key_token_or_mode_is_rejected_and_replay_dropped() -> None:
+def test_crossplc_wrong_key_token_or_mode_is_rejected_and_replay_dropped() -> None:
     key = generate_key()
     codec = Codec(1, 1, 1, Security("sign_encrypt", key))
     first, second = codec.encode(sample(1)), codec.encode(sample(2))
@@ -154,7 +154,7 @@ def test_wrong_key_token_or_mode_is_rejected_and_replay_dropped() -> None:
     assert [s.sequence for s in secured.fetch(0.0)] == [1, 2]
 
 
-def test_security_page_quick_start_runs() -> None:
+def test_crossplc_security_page_quick_start_runs() -> None:
     """docs/crossplc_security.md: the quick start builds a secured publisher and subscriber."""
     from pathlib import Path
     page = (Path(__file__).resolve().parents[2] / "docs" / "crossplc_security.md").read_text()

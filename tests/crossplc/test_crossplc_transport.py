@@ -58,7 +58,7 @@ def uadp_threads() -> list[threading.Thread]:
 
 # ------------------------------------------------------------------------------------------ LocalLink
 
-def test_local_link_round_trip() -> None:
+def test_crossplc_local_link_round_trip() -> None:
     link = LocalLink()
     sink: LeadingValueSink = link
     source: LeadingValueSource = link
@@ -77,10 +77,10 @@ def test_local_link_round_trip() -> None:
 
 # ------------------------------------------------------------------------------------------- UADP link
 
-def test_uadp_round_trip_is_complete_ordered_and_exact(uadp, url) -> None:
+def test_crossplc_uadp_round_trip_is_complete_ordered_and_exact(uadp, url) -> None:
     rng = random.Random(7)
     # every finite value of the REAL range arrives bit-exact; inf and values beyond 1e12 make a sample
-    # invalid (defect 9, see test_uadp_non_finite_or_huge_values_arrive_as_invalid_samples_defect_9)
+    # invalid (defect 9, see test_crossplc_uadp_non_finite_or_huge_values_arrive_as_invalid_samples_defect_9)
     specials = [0.0, -0.0, 1 / 3, math.pi, 5e-324, 1e12, -1e-300, -1e12]
     sent = [LeadingValueSample(time=i * 1e-3 + 1e-12 * i, position=rng.uniform(-1e6, 1e6),
                                velocity=specials[i % len(specials)], acceleration=rng.gauss(0.0, 1e3),
@@ -101,7 +101,7 @@ def test_uadp_round_trip_is_complete_ordered_and_exact(uadp, url) -> None:
     assert sub.missed == 0 and sub.dropped == 0
 
 
-def test_uadp_ignores_other_writers(uadp, url) -> None:
+def test_crossplc_uadp_ignores_other_writers(uadp, url) -> None:
     with uadp.UadpLeadingValueSubscriber(url, dataset_writer_id=1, wait_timeout=0.3) as sub, \
             uadp.UadpLeadingValuePublisher(url, dataset_writer_id=2) as other, \
             uadp.UadpLeadingValuePublisher(url, publisher_id=9, dataset_writer_id=1) as stranger:
@@ -111,7 +111,7 @@ def test_uadp_ignores_other_writers(uadp, url) -> None:
         assert sub.fetch(0.001) == []
 
 
-def test_uadp_drops_duplicate_and_out_of_order_sequences(uadp, url) -> None:
+def test_crossplc_uadp_drops_duplicate_and_out_of_order_sequences(uadp, url) -> None:
     with uadp.UadpLeadingValueSubscriber(url, wait_timeout=2.0) as sub, uadp.UadpLeadingValuePublisher(url) as pub:
         for i in (1, 2, 2, 1, 3):
             pub.send(sample(i))
@@ -121,7 +121,7 @@ def test_uadp_drops_duplicate_and_out_of_order_sequences(uadp, url) -> None:
     assert sub.dropped == 2
 
 
-def test_uadp_lockstep_fetch_waits_for_the_sender(uadp, url) -> None:
+def test_crossplc_uadp_lockstep_fetch_waits_for_the_sender(uadp, url) -> None:
     with uadp.UadpLeadingValueSubscriber(url, wait_timeout=3.0) as sub, uadp.UadpLeadingValuePublisher(url) as pub:
         late = sample(500)
         timer = threading.Timer(0.2, pub.send, args=(late,))
@@ -135,7 +135,7 @@ def test_uadp_lockstep_fetch_waits_for_the_sender(uadp, url) -> None:
     assert not sub.sender_lost
 
 
-def test_uadp_stopped_sender_costs_one_timeout_then_fetch_is_fast(uadp, url) -> None:
+def test_crossplc_uadp_stopped_sender_costs_one_timeout_then_fetch_is_fast(uadp, url) -> None:
     with uadp.UadpLeadingValueSubscriber(url, wait_timeout=0.3) as sub:
         with uadp.UadpLeadingValuePublisher(url) as pub:
             for i in range(1, 4):
@@ -163,7 +163,7 @@ def test_uadp_stopped_sender_costs_one_timeout_then_fetch_is_fast(uadp, url) -> 
         assert sub.dropped == 0
 
 
-def test_uadp_start_close_idempotent_and_threads_stop(uadp, url) -> None:
+def test_crossplc_uadp_start_close_idempotent_and_threads_stop(uadp, url) -> None:
     before = set(threading.enumerate())
     pub = uadp.UadpLeadingValuePublisher(url)
     sub = uadp.UadpLeadingValueSubscriber(url, wait_timeout=0.2)
@@ -187,7 +187,7 @@ def test_uadp_start_close_idempotent_and_threads_stop(uadp, url) -> None:
     uadp.UadpLeadingValueSubscriber(url).close()        # never started
 
 
-def test_uadp_close_wakes_a_waiting_fetch(uadp, url) -> None:
+def test_crossplc_uadp_close_wakes_a_waiting_fetch(uadp, url) -> None:
     sub = uadp.UadpLeadingValueSubscriber(url, wait_timeout=10.0)
     sub.start()
     closer = threading.Timer(0.1, sub.close)
@@ -200,7 +200,7 @@ def test_uadp_close_wakes_a_waiting_fetch(uadp, url) -> None:
 
 
 @pytest.mark.slow
-def test_uadp_sustained_throughput(uadp, url) -> None:
+def test_crossplc_uadp_sustained_throughput(uadp, url) -> None:
     sent = [sample(i) for i in range(1, 20_001)]
     with uadp.UadpLeadingValueSubscriber(url, wait_timeout=10.0) as sub, uadp.UadpLeadingValuePublisher(url) as pub:
         start = time.monotonic()
@@ -228,7 +228,7 @@ def _settle(sub, count: int, needed: float, limit: float = 3.0) -> list:
     return collect(sub, count, needed, limit)
 
 
-def test_uadp_subscriber_binds_the_url_address_not_the_wildcard_defect_9(uadp, url) -> None:
+def test_crossplc_uadp_subscriber_binds_the_url_address_not_the_wildcard_defect_9(uadp, url) -> None:
     """A subscriber of opc.udp://127.0.0.1:P does not receive what is sent to another address of the
     host (127.0.0.2 is loopback too): it binds the URL's address, not 0.0.0.0."""
     elsewhere = url.replace("127.0.0.1", "127.0.0.2")
@@ -242,7 +242,7 @@ def test_uadp_subscriber_binds_the_url_address_not_the_wildcard_defect_9(uadp, u
             assert _settle(sub, 1, sample(2).time) == [sample(2)]
 
 
-def test_uadp_no_other_local_socket_can_take_the_samples_defect_9(uadp, url) -> None:
+def test_crossplc_uadp_no_other_local_socket_can_take_the_samples_defect_9(uadp, url) -> None:
     """No SO_REUSEADDR on a unicast subscriber: another socket (even one asking for address reuse) cannot
     bind its address and port, neither the same address nor the wildcard, so it cannot take its samples."""
     with uadp.UadpLeadingValueSubscriber(url, wait_timeout=2.0) as sub:
@@ -261,7 +261,7 @@ def test_uadp_no_other_local_socket_can_take_the_samples_defect_9(uadp, url) -> 
     assert uadp_threads() == []
 
 
-def test_uadp_accepts_only_the_configured_source_address_defect_9(uadp, url) -> None:
+def test_crossplc_uadp_accepts_only_the_configured_source_address_defect_9(uadp, url) -> None:
     wire = pytest.importorskip("_uadp_wire")
     with uadp.UadpLeadingValueSubscriber(url, wait_timeout=0.5, source="127.0.0.1") as sub, \
             _raw_sender("127.0.0.2") as stranger, _raw_sender("127.0.0.1") as genuine:
@@ -271,7 +271,7 @@ def test_uadp_accepts_only_the_configured_source_address_defect_9(uadp, url) -> 
     assert sub.rejected == {"source": 1}
 
 
-def test_uadp_counts_and_drops_datagrams_of_other_ids_defect_9(uadp, url) -> None:
+def test_crossplc_uadp_counts_and_drops_datagrams_of_other_ids_defect_9(uadp, url) -> None:
     """Only the configured PublisherId / WriterGroupId / DataSetWriterId are accepted; each other datagram
     is counted by reason."""
     wire = pytest.importorskip("_uadp_wire")
@@ -289,7 +289,7 @@ def test_uadp_counts_and_drops_datagrams_of_other_ids_defect_9(uadp, url) -> Non
     assert sub.accepted == 1
 
 
-def test_uadp_forged_far_ahead_sequence_does_not_block_genuine_samples_defect_9(uadp, url) -> None:
+def test_crossplc_uadp_forged_far_ahead_sequence_does_not_block_genuine_samples_defect_9(uadp, url) -> None:
     """One datagram with a sequence number far ahead is dropped (out of the window); the genuine samples
     after it are all delivered."""
     wire = pytest.importorskip("_uadp_wire")
@@ -305,7 +305,7 @@ def test_uadp_forged_far_ahead_sequence_does_not_block_genuine_samples_defect_9(
     assert sub.rejected == {"window": 1} and sub.missed == 0
 
 
-def test_uadp_publisher_restart_resynchronises_after_three_in_sequence_defect_9(uadp, url) -> None:
+def test_crossplc_uadp_publisher_restart_resynchronises_after_three_in_sequence_defect_9(uadp, url) -> None:
     """A publisher that restarts counting from 1 while the link is up: the first two numbers out of the
     window are dropped, from the third consecutive one on the subscriber follows the new count."""
     wire = pytest.importorskip("_uadp_wire")
@@ -320,7 +320,7 @@ def test_uadp_publisher_restart_resynchronises_after_three_in_sequence_defect_9(
     assert sub.resyncs == 1 and sub.rejected == {"window": 2}
 
 
-def test_uadp_sequence_window_wraps_at_65536_defect_9(uadp, url) -> None:
+def test_crossplc_uadp_sequence_window_wraps_at_65536_defect_9(uadp, url) -> None:
     """The DataSetMessage SequenceNumber is a UInt16: counting on across 65535 -> 0 is in sequence."""
     with uadp.UadpLeadingValueSubscriber(url, wait_timeout=2.0) as sub, uadp.UadpLeadingValuePublisher(url) as pub:
         sent = [sample(i) for i in range(65_533, 65_541)]
@@ -330,7 +330,7 @@ def test_uadp_sequence_window_wraps_at_65536_defect_9(uadp, url) -> None:
     assert sub.missed == 0 and sub.dropped == 0 and sub.rejected == {}
 
 
-def test_uadp_decoder_bomb_does_not_stall_the_subscriber_defect_9(uadp, url) -> None:
+def test_crossplc_uadp_decoder_bomb_does_not_stall_the_subscriber_defect_9(uadp, url) -> None:
     """A 10-byte datagram that makes a general UADP decoder build a 16-million-element array is rejected
     before any decoding; the genuine sample sent right after it arrives at once."""
     wire = pytest.importorskip("_uadp_wire")
@@ -344,7 +344,7 @@ def test_uadp_decoder_bomb_does_not_stall_the_subscriber_defect_9(uadp, url) -> 
     assert sub.rejected == {"unsupported": 1}
 
 
-def test_uadp_non_finite_or_huge_values_arrive_as_invalid_samples_defect_9(uadp, url) -> None:
+def test_crossplc_uadp_non_finite_or_huge_values_arrive_as_invalid_samples_defect_9(uadp, url) -> None:
     """Values that are not finite or beyond the REAL range (1e12) make the sample invalid (Valid FALSE)
     and are replaced by the previous sample's; a sample without a usable time is dropped."""
     good = sample(1, modulo_length=360.0, delay=0.004)
@@ -368,7 +368,7 @@ def test_uadp_non_finite_or_huge_values_arrive_as_invalid_samples_defect_9(uadp,
     assert sub.invalid == 6 and sub.rejected == {"time": 2}
 
 
-def test_uadp_wire_format_matches_asyncua_pubsub(uadp) -> None:
+def test_crossplc_uadp_wire_format_matches_asyncua_pubsub(uadp) -> None:
     """The publisher's unsecured bytes are a UADP NetworkMessage that asyncua's PubSub decoder reads
     field for field, and the subscriber reads what asyncua's PubSub encoder writes (Part 14 §7.2.2)."""
     wire = pytest.importorskip("_uadp_wire")
@@ -384,7 +384,7 @@ def test_uadp_wire_format_matches_asyncua_pubsub(uadp) -> None:
     assert codec.decode(codec.encode(s)) == decoded
 
 
-def test_uadp_network_address_needs_security_or_an_explicit_opt_out_defect_9(uadp) -> None:
+def test_crossplc_uadp_network_address_needs_security_or_an_explicit_opt_out_defect_9(uadp) -> None:
     for url in ("opc.udp://192.0.2.10:4840", "opc.udp://239.0.0.1:4840"):
         for cls in (uadp.UadpLeadingValueSubscriber, uadp.UadpLeadingValuePublisher):
             with pytest.raises(ValueError, match="security='none'"):
@@ -396,7 +396,7 @@ def test_uadp_network_address_needs_security_or_an_explicit_opt_out_defect_9(uad
 
 
 @pytest.mark.parametrize("interface", ["127.0.0.1", "lo"])
-def test_uadp_multicast_group_is_shared_by_two_subscribers_defect_9(uadp, interface) -> None:
+def test_crossplc_uadp_multicast_group_is_shared_by_two_subscribers_defect_9(uadp, interface) -> None:
     """A multicast URL: each subscriber joins the group on the given interface (its address or, as a
     PubSub NetworkInterface, its name) and both receive (the only case with address reuse)."""
     with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as probe:
@@ -423,7 +423,7 @@ def test_uadp_multicast_group_is_shared_by_two_subscribers_defect_9(uadp, interf
         b.close()
 
 
-def test_uadp_ipv6_loopback_binds_its_address(uadp) -> None:
+def test_crossplc_uadp_ipv6_loopback_binds_its_address(uadp) -> None:
     try:
         with socket.socket(socket.AF_INET6, socket.SOCK_DGRAM) as probe:
             probe.bind(("::1", 0))
@@ -444,7 +444,7 @@ def test_uadp_ipv6_loopback_binds_its_address(uadp) -> None:
     ({"source": "not an address"}, ValueError), ({"source": 5}, TypeError),
 ], ids=["timeout-nan", "timeout-inf", "timeout-negative", "timeout-text", "timeout-bool", "source-unresolvable",
         "source-not-text"])
-def test_uadp_subscriber_settings_are_checked_at_construction_defect_9(uadp, url, kw, error) -> None:
+def test_crossplc_uadp_subscriber_settings_are_checked_at_construction_defect_9(uadp, url, kw, error) -> None:
     """Review of issue 8: wait_timeout=nan made fetch() (called in the servo cycle) wait forever, a negative
     one counted the sender lost at once, a text one raised TypeError inside fetch(); a source that is no
     address gave socket.gaierror.  Each is a ValueError/TypeError naming the setting when constructed."""
@@ -454,7 +454,7 @@ def test_uadp_subscriber_settings_are_checked_at_construction_defect_9(uadp, url
 
 
 @pytest.mark.parametrize("bad", [5, None, b"opc.udp://127.0.0.1:4840"])
-def test_uadp_url_that_is_no_text_is_a_type_error_defect_9(uadp, bad) -> None:
+def test_crossplc_uadp_url_that_is_no_text_is_a_type_error_defect_9(uadp, bad) -> None:
     """Review of issue 8: a URL given as an int raised AttributeError from urllib."""
     with pytest.raises((TypeError, ValueError), match="URL"):
         uadp.UadpLeadingValueSubscriber(bad)

@@ -41,7 +41,7 @@ def sync_pages() -> list[Path]:
 
 
 # --- the example scripts ---------------------------------------------------------------------------
-def test_there_is_an_example_per_instruction():
+def test_docs_there_is_an_example_per_instruction():
     assert [p.stem for p in EXAMPLES] == sorted(INSTRUCTIONS)
 
 
@@ -57,7 +57,7 @@ def test_docs_example_runs_and_writes_its_plot(script, tmp_path, monkeypatch, ca
 
 # --- the pages -------------------------------------------------------------------------------------
 @pytest.mark.parametrize("name", INSTRUCTIONS)
-def test_page_shows_its_plot_and_its_example(name):
+def test_docs_page_shows_its_plot_and_its_example(name):
     page = DOCS / "instructions" / f"{name}.md"
     text = page.read_text()
     assert f"](../img/{name}.png)" in text
@@ -81,8 +81,8 @@ def _manual_value(text: str):
 
 
 @pytest.mark.parametrize("name", INSTRUCTIONS)
-def test_parameter_table_matches_the_instruction(name):
-    """Names, declarations and default values in the page are those of the class (and of §11.1)."""
+def test_docs_parameter_table_matches_the_instruction(name):
+    """Names, declarations and default values in the page are those of the class (and of S7-1200 V6 §11.1)."""
     import plcmotion.s7_1200 as s7
 
     cls = getattr(s7, name)
@@ -98,7 +98,7 @@ def test_parameter_table_matches_the_instruction(name):
         assert table[key][1] == value and type(table[key][1]) is type(value), (key, table[key][1], value)
 
 
-def test_links_between_the_pages_resolve():
+def test_docs_links_between_the_pages_resolve():
     pages = [DOCS / "index.md", *sorted((DOCS / "instructions").glob("*.md"))]
     for page in pages:
         for target in re.findall(r"\]\(([^)\s]+)\)", page.read_text()):
@@ -109,7 +109,7 @@ def test_links_between_the_pages_resolve():
 
 
 # --- the analog drive example project --------------------------------------------------------------
-def test_analog_drive_example_runs_through_the_cli(tmp_path, capsys):
+def test_docs_analog_drive_example_runs_through_the_cli(tmp_path, capsys):
     from plcmotion.cli import main
     from plcmotion.trace import read_csv
 

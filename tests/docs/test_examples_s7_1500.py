@@ -11,7 +11,7 @@ from plcmotion.cli import load_program
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
-def test_flying_saw_cuts_with_the_carriage_synchronous_to_the_bar_s4_2():
+def test_docs_flying_saw_cuts_with_the_carriage_synchronous_to_the_bar_s4_2():
     ctl = load_project(EXAMPLES / "flying_saw.toml")
     load_program(ctl, str(EXAMPLES / "flying_saw_program.py"))
     bar, carriage = ctl.axes["Material"], ctl.axes["Carriage"]
@@ -32,7 +32,7 @@ def test_flying_saw_cuts_with_the_carriage_synchronous_to_the_bar_s4_2():
     assert not carriage.alarms and carriage.StatusPositioning.FollowingError < 20.0
 
 
-def test_rotary_knife_runs_with_the_web_in_the_cut_zone_s5_2():
+def test_docs_rotary_knife_runs_with_the_web_in_the_cut_zone_s5_2():
     ctl = load_project(EXAMPLES / "rotary_knife.toml")
     load_program(ctl, str(EXAMPLES / "rotary_knife_program.py"))
     web, knife = ctl.axes["Web"], ctl.axes["Knife"]
@@ -54,7 +54,7 @@ def test_rotary_knife_runs_with_the_web_in_the_cut_zone_s5_2():
     assert not knife.alarms
 
 
-def test_vdi_cam_example_writes_points_and_plot(tmp_path, capsys):
+def test_docs_vdi_cam_example_writes_points_and_plot(tmp_path, capsys):
     ns = runpy.run_path(str(EXAMPLES / "vdi_cam.py"))
     assert ns["main"](tmp_path) == 0
     assert (tmp_path / "feeder_cam.csv").read_text().count("\n") > 360

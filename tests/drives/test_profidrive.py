@@ -68,7 +68,7 @@ LAYOUTS = {
 
 
 @pytest.mark.parametrize("cls", list(LAYOUTS), ids=lambda c: c.__name__)
-def test_named_bits_sit_at_documented_positions(cls):
+def test_drives_named_bits_sit_at_documented_positions(cls):
     for name, bit in LAYOUTS[cls].items():
         word = cls(1 << bit)
         assert getattr(word, name) is True, name
@@ -79,7 +79,7 @@ def test_named_bits_sit_at_documented_positions(cls):
     assert sorted(cls.bit_positions().values()) == list(range(16))
 
 
-def test_word_construction_and_protocol():
+def test_drives_word_construction_and_protocol():
     w = STW1(0x047E, On=True)
     assert int(w) == 0x047F and w == STW1(0x047F) and hash(w) == hash(STW1(0x047F))
     assert w != ZSW1(0x047F)
@@ -100,7 +100,7 @@ def test_word_construction_and_protocol():
         w.On = False  # type: ignore[misc]
 
 
-def test_multi_bit_fields():
+def test_drives_multi_bit_fields():
     g = G1_STW.build(functions=1, command=EncoderCommand.READ_VALUE, RequestAbsoluteValueCyclically=True)
     assert int(g) == 0x2021 and g.command == 2 and g.requested_functions == 1
     assert G2_STW is G1_STW
@@ -130,7 +130,7 @@ ALL_TYPES = [t for pair in TELEGRAMS.values() for t in pair]
 
 
 @pytest.mark.parametrize("number", sorted(TELEGRAMS))
-def test_field_order_and_sizes(number):
+def test_drives_field_order_and_sizes(number):
     out_t, in_t = telegram_types(number)
     assert [f[0] for f in out_t.fields()] == EXPECTED_ORDER[number][0]
     assert [f[0] for f in in_t.fields()] == EXPECTED_ORDER[number][1]
@@ -141,7 +141,7 @@ def test_field_order_and_sizes(number):
     assert out_t.TELEGRAM == in_t.TELEGRAM == number
 
 
-def test_unknown_telegram():
+def test_drives_unknown_telegram():
     with pytest.raises(ValueError):
         telegram_types(5)
 
@@ -157,7 +157,7 @@ def telegram_values(draw):
 
 
 @given(telegram_values())
-def test_pack_unpack_round_trip(tv):
+def test_drives_pack_unpack_round_trip(tv):
     cls, values = tv
     tel = cls(**values)
     data = tel.pack()
@@ -169,12 +169,12 @@ def test_pack_unpack_round_trip(tv):
 
 @given(st.sampled_from(ALL_TYPES).flatmap(lambda c: st.tuples(st.just(c), st.binary(min_size=c.size(),
                                                                                  max_size=c.size()))))
-def test_every_byte_pattern_survives_unpack_pack(cb):
+def test_drives_every_byte_pattern_survives_unpack_pack(cb):
     cls, data = cb
     assert cls.unpack(data).pack() == data
 
 
-def test_byte_order_is_big_endian():
+def test_drives_byte_order_is_big_endian():
     assert Telegram1Out(STW1=0x047F, NSOLL_A=-2).pack() == bytes.fromhex("047f fffe")
     t3 = Telegram3Out(STW1=STW1(0x047F), NSOLL_B=0x40000000, STW2=0xF000, G1_STW=0x2000).pack()
     assert t3 == bytes.fromhex("047f 40000000 f000 2000")
@@ -186,7 +186,7 @@ def test_byte_order_is_big_endian():
     assert struct.unpack(">h", Telegram1In(NIST_A=-16384).pack()[2:])[0] == -16384
 
 
-def test_out_of_range_and_bad_input():
+def test_drives_out_of_range_and_bad_input():
     with pytest.raises(ValueError):
         Telegram1Out(NSOLL_A=32768)
     with pytest.raises(ValueError):
@@ -215,7 +215,7 @@ def test_out_of_range_and_bad_input():
 # ---------------------------------------------------------------------------------------------------------
 
 @pytest.mark.parametrize("bits, full", [(16, 0x4000), (32, 0x40000000)])
-def test_speed_scaling_fixed_points(bits, full):
+def test_drives_speed_scaling_fixed_points(bits, full):
     ref = 3000.0
     top, bottom = (1 << (bits - 1)) - 1, -(1 << (bits - 1))
     assert speed_to_nsoll(0.0, ref, bits) == 0
@@ -234,14 +234,14 @@ def test_speed_scaling_fixed_points(bits, full):
         nsoll_to_speed(top + 1, ref, bits)
 
 
-def test_speed_scaling_rejects_bad_arguments():
+def test_drives_speed_scaling_rejects_bad_arguments():
     for args in [(1.0, 3000.0, 24), (math.nan, 3000.0, 16), (1.0, 0.0, 16), (1.0, -1.0, 32)]:
         with pytest.raises(ValueError):
             speed_to_nsoll(*args)
 
 
 @given(st.floats(-5999.0, 5999.0), st.sampled_from([16, 32]))
-def test_speed_scaling_inverse(rpm, bits):
+def test_drives_speed_scaling_inverse(rpm, bits):
     ref = 3000.0
     v = speed_to_nsoll(rpm, ref, bits)
     assert abs(nsoll_to_speed(v, ref, bits) - rpm) <= 0.5 * ref / (1 << (bits - 2)) * (1 + 1e-9)
@@ -255,7 +255,7 @@ def test_speed_scaling_inverse(rpm, bits):
 PER_REV = 2048 << 11  # default encoder: 2^22 counts per revolution, XIST1 wraps every 1024 revolutions
 
 
-def test_xist1_counts_and_wrap_around():
+def test_drives_xist1_counts_and_wrap_around():
     enc = IncrementalEncoder()
     assert enc.xist1_per_revolution == PER_REV
     assert enc.count_at(0.0) == 0 and enc.count_at(1.5) == 3 * PER_REV // 2
@@ -273,13 +273,13 @@ def test_xist1_counts_and_wrap_around():
 
 
 @given(st.floats(-5000.0, 5000.0), st.floats(-100.0, 100.0))
-def test_revolution_delta_survives_wrap(p, d):
+def test_drives_revolution_delta_survives_wrap(p, d):
     enc = IncrementalEncoder()
     delta = enc.counts_to_revolutions_delta(enc.count_at(p), enc.count_at(p + d))
     assert abs(delta - d) <= 1.0 / PER_REV + 1e-9 * max(1.0, abs(p))
 
 
-def test_absolute_value_multi_and_single_turn():
+def test_drives_absolute_value_multi_and_single_turn():
     multi = IncrementalEncoder(4096, 11, 0, determinable_revolutions=4096)
     assert multi.absolute_value_at(2.5) == 2 * 4096 + 2048
     assert multi.absolute_value_at(4096.25) == 1024       # multi-turn range wraps
@@ -292,7 +292,7 @@ def test_absolute_value_multi_and_single_turn():
         IncrementalEncoder(1 << 20, 11, 9, determinable_revolutions=1 << 12)   # > 32 bits
 
 
-def test_cyclic_absolute_value_handshake():
+def test_drives_cyclic_absolute_value_handshake():
     enc = IncrementalEncoder(4096, 11, 0, determinable_revolutions=4096)
     enc.update(3.25)
     assert enc.xist2 == 0 and not enc.zsw.TransmitAbsoluteValueCyclically
@@ -308,7 +308,7 @@ READ = G1_STW.build(functions=1, command=EncoderCommand.READ_VALUE)
 ABORT = G1_STW.build(functions=1, command=EncoderCommand.ABORT)
 
 
-def test_reference_mark_search_sequence():
+def test_drives_reference_mark_search_sequence():
     enc = IncrementalEncoder(zero_mark_angle=0.25)
     enc.update(0.0)
     enc.update(0.1, ACTIVATE)
@@ -337,7 +337,7 @@ def test_reference_mark_search_sequence():
 
 @given(angle=st.floats(0.0, 0.999), start=st.floats(-50.0, 50.0),
        speed=st.floats(0.001, 0.45) | st.floats(-0.45, -0.001), phase=st.floats(0.0, 1.0))
-def test_reference_mark_latch_is_exact(angle, start, speed, phase):
+def test_drives_reference_mark_latch_is_exact(angle, start, speed, phase):
     """The latched XIST1 equals the count at the exact zero-mark position (within one count)."""
     enc = IncrementalEncoder(zero_mark_angle=angle)
     p = start
@@ -357,7 +357,7 @@ def test_reference_mark_latch_is_exact(angle, start, speed, phase):
     assert abs(xist1_difference(expected, enc.latched_value)) <= 1
 
 
-def test_encoder_error_and_acknowledge():
+def test_drives_encoder_error_and_acknowledge():
     enc = IncrementalEncoder(determinable_revolutions=1)
     enc.inject_error(ENCODER_ERROR_ZERO_MARK, cause_active=True)
     enc.update(0.5, G1_STW(RequestAbsoluteValueCyclically=True))
@@ -378,7 +378,7 @@ def test_encoder_error_and_acknowledge():
     assert not enc.zsw.EncoderError
 
 
-def test_parking_freezes_values():
+def test_drives_parking_freezes_values():
     enc = IncrementalEncoder(determinable_revolutions=1)
     enc.update(0.25, G1_STW(RequestAbsoluteValueCyclically=True))
     x1, x2 = enc.xist1, enc.xist2
@@ -391,7 +391,7 @@ def test_parking_freezes_values():
     assert enc.zsw.Probe2Deflected and not enc.zsw.Probe1Deflected
 
 
-def test_home_position_set_and_shift():
+def test_drives_home_position_set_and_shift():
     enc = IncrementalEncoder(home_preset=10.0)
     enc.update(3.0, G1_STW(RequestSetShiftHomePosition=True))
     assert enc.zsw.HomePositionSetShiftExecuted and enc.xist1 == 10 * PER_REV
@@ -434,7 +434,7 @@ def enabled_drive(**kw) -> DriveStateMachine:
     return d
 
 
-def test_full_enable_sequence():
+def test_drives_full_enable_sequence():
     d = DriveStateMachine(3000.0)
     assert d.state is DriveState.S1
     assert_pattern(d.zsw1, PAT_S1)
@@ -454,13 +454,13 @@ def test_full_enable_sequence():
     assert int(z) & 0x067F == 0x0237
 
 
-def test_s1_to_s2_needs_on_reset():
+def test_drives_s1_to_s2_needs_on_reset():
     d = DriveStateMachine()
     cycle(d, RUN)
     assert d.state is DriveState.S1
 
 
-def test_setpoint_gating_in_operation():
+def test_drives_setpoint_gating_in_operation():
     d = enabled_drive()
     assert cycle(d, RUN, 1200.0) == 1200.0
     assert cycle(d, RUN.with_bits(UnfreezeRampGenerator=False), 1500.0) == 1200.0   # frozen
@@ -471,14 +471,14 @@ def test_setpoint_gating_in_operation():
     assert d.state is DriveState.S3
 
 
-def test_ramp_generator_with_ramp_time():
+def test_drives_ramp_generator_with_ramp_time():
     d = enabled_drive(ramp_time=1.0)           # 3000 1/min per second
     d.effective_setpoint(600.0)
     outs = [cycle(d, RUN, 600.0) for _ in range(60)]
     assert outs[0] == pytest.approx(12.0) and outs[9] == pytest.approx(120.0) and outs[-1] == 600.0
 
 
-def test_off1_ramps_down_then_ready_for_switching_on():
+def test_drives_off1_ramps_down_then_ready_for_switching_on():
     d = enabled_drive(off1_ramp_time=1.0)      # 3000 1/min per second
     cycle(d, RUN, 1500.0)
     speeds = []
@@ -495,7 +495,7 @@ def test_off1_ramps_down_then_ready_for_switching_on():
     assert_pattern(d.zsw1, PAT_S2)
 
 
-def test_off1_ramp_is_completed_even_if_on_returns():
+def test_drives_off1_ramp_is_completed_even_if_on_returns():
     d = enabled_drive(off1_ramp_time=1.0)
     cycle(d, RUN, 300.0)
     cycle(d, OFF1, 300.0)
@@ -504,7 +504,7 @@ def test_off1_ramp_is_completed_even_if_on_returns():
     assert (0.0, DriveState.S2) in states and states[-1] == (300.0, DriveState.S4)
 
 
-def test_off2_coasts_immediately():
+def test_drives_off2_coasts_immediately():
     d = enabled_drive()
     cycle(d, RUN, 1000.0)
     assert cycle(d, RUN.with_bits(NoCoastStop=False), 1000.0) == 0.0
@@ -517,7 +517,7 @@ def test_off2_coasts_immediately():
     assert d.state is DriveState.S2
 
 
-def test_off3_quick_stop_ends_in_switching_on_inhibited():
+def test_drives_off3_quick_stop_ends_in_switching_on_inhibited():
     d = enabled_drive(off3_ramp_time=0.1, off1_ramp_time=10.0)   # 30000 1/min per second
     cycle(d, RUN, 1500.0)
     quick = RUN.with_bits(NoQuickStop=False)
@@ -542,7 +542,7 @@ def test_off3_quick_stop_ends_in_switching_on_inhibited():
         assert d.state is DriveState.S1
 
 
-def test_fault_and_acknowledge():
+def test_drives_fault_and_acknowledge():
     d = enabled_drive()
     cycle(d, RUN, 900.0)
     d.inject_fault(7860, cause_active=True)
@@ -566,7 +566,7 @@ def test_fault_and_acknowledge():
     assert d.state is DriveState.S4
 
 
-def test_transient_fault_acknowledged_at_once():
+def test_drives_transient_fault_acknowledged_at_once():
     d = enabled_drive()
     d.inject_fault(1)
     cycle(d, RUN)
@@ -576,7 +576,7 @@ def test_transient_fault_acknowledged_at_once():
     assert d.state is DriveState.S2
 
 
-def test_control_requested_and_control_by_plc():
+def test_drives_control_requested_and_control_by_plc():
     d = enabled_drive()
     cycle(d, RUN, 500.0)
     d.request_local_control()
@@ -590,7 +590,7 @@ def test_control_requested_and_control_by_plc():
     assert cycle(d, RUN, 800.0) == 800.0
 
 
-def test_speed_status_bits():
+def test_drives_speed_status_bits():
     d = enabled_drive(speed_tolerance_rpm=10.0, comparison_rpm=1000.0)
     d.write(RUN)
     d.step(DT, actual_rpm=1195.0)
@@ -606,14 +606,14 @@ def test_speed_status_bits():
 # Sign of life
 # ---------------------------------------------------------------------------------------------------------
 
-def test_life_counter_sequence():
+def test_drives_life_counter_sequence():
     seq = [0]
     for _ in range(32):
         seq.append(next_sign_of_life(seq[-1]))
     assert seq[:17] == [0, *range(1, 16), 1] and 0 not in seq[1:]
 
 
-def test_drive_life_sign_increments_each_cycle():
+def test_drives_life_sign_increments_each_cycle():
     d = DriveStateMachine()
     seen = []
     for _ in range(20):
@@ -622,7 +622,7 @@ def test_drive_life_sign_increments_each_cycle():
     assert seen == [*range(1, 16), 1, 2, 3, 4, 5]
 
 
-def test_sign_of_life_monitor():
+def test_drives_sign_of_life_monitor():
     m = SignOfLifeMonitor(tolerance=1)
     assert m.check(0) and m.check(0) and not m.started      # not started yet
     life = 0
@@ -636,7 +636,7 @@ def test_sign_of_life_monitor():
     assert not m.check(0) and m.tripped
 
 
-def test_drive_detects_sign_of_life_failure():
+def test_drives_detects_sign_of_life_failure():
     d = enabled_drive(sign_of_life_tolerance=1)
     life = 0
     for _ in range(40):
@@ -658,7 +658,7 @@ def test_drive_detects_sign_of_life_failure():
     assert not d.fault_present and d.state is DriveState.S4
 
 
-def test_telegram_1_drive_has_no_sign_of_life_monitoring():
+def test_drives_telegram_1_drive_has_no_sign_of_life_monitoring():
     d = enabled_drive()
     for _ in range(50):
         cycle(d, RUN, 100.0)

@@ -29,29 +29,29 @@ def _planted(ep: Episode, hook) -> Run:
     return run
 
 
-def test_a_good_episode_passes():
+def test_fuzz_a_good_episode_passes():
     assert Run(_episode()).run() is None
 
 
-def test_nan_in_a_setpoint_is_reported():
+def test_fuzz_nan_in_a_setpoint_is_reported():
     run = _planted(_episode(), lambda t: t > 0.1 and run.ctl.bank.sp_v.__setitem__(0, np.nan))
     f = run.run()
     assert f is not None and f.kind == "nonfinite" and "sp_v" in f.message
 
 
-def test_velocity_above_max_velocity_is_reported():
+def test_fuzz_velocity_above_max_velocity_is_reported():
     run = _planted(_episode(), lambda t: 0.05 < t < 0.06 and run.ctl.bank.sp_v.__setitem__(0, 50.2))
     f = run.run()
     assert f is not None and f.kind == "velocity", f
 
 
-def test_a_stop_is_reported():
+def test_fuzz_a_stop_is_reported():
     run = _planted(_episode(), lambda t: t > 0.2 and run.ctl.stop("planted"))
     f = run.run()
     assert f is not None and f.kind == "stop"
 
 
-def test_an_exception_out_of_an_instruction_is_reported_and_shrunk_to_a_script():
+def test_fuzz_an_exception_out_of_an_instruction_is_reported_and_shrunk_to_a_script():
     ep = _episode()
     ep.ops.insert(1, Op(30, "in", "move", "Execute", "yes"))    # a non-boolean at a BOOL input: ProgramError
     f = Run(ep).run()
@@ -89,7 +89,7 @@ def _plant_segment(run: Run, at: float, jerk_sign: float) -> None:
     run.ctl._post_servo.insert(0, hook)
 
 
-def test_a_jerk_above_the_configured_jerk_is_reported():
+def test_fuzz_a_jerk_above_the_configured_jerk_is_reported():
     run = Run(_episode(jerk=1000.0))
 
     def hook(t):
@@ -102,14 +102,14 @@ def test_a_jerk_above_the_configured_jerk_is_reported():
     assert f is not None and f.kind == "jerk", f
 
 
-def test_a_fresh_segment_building_acceleration_with_a_jerk_above_the_configured_one_is_reported():
+def test_fuzz_a_fresh_segment_building_acceleration_with_a_jerk_above_the_configured_one_is_reported():
     run = Run(_episode(jerk=1000.0))
     _plant_segment(run, 0.03, +1.0)
     f = run.run()
     assert f is not None and f.kind == "jerk", f
 
 
-def test_a_settling_segment_is_out_of_the_jerk_checks_scope():
+def test_fuzz_a_settling_segment_is_out_of_the_jerk_checks_scope():
     """docs/decisions.md row 66: a re-plan may take back the acceleration it starts with using a jerk above
     the configured one (so the velocity keeps its bound); such a segment starts at the re-plan and opposes
     the acceleration."""

@@ -38,7 +38,7 @@ PROFIDRIVE = dict(Actor__Type=1, DynamicLimits__MinVelocity=0.0, Sensor1__Interf
 
 
 # --- the builder --------------------------------------------------------------------------------------------
-def test_start_values_of_a_pulse_axis():
+def test_kernel_start_values_of_a_pulse_axis():
     c = axis_config(P.defaults())
     assert isinstance(c, AxisConfig)
     assert c.units.length == "mm"                                   # LengthUnit 1013
@@ -60,7 +60,7 @@ def test_start_values_of_a_pulse_axis():
     assert c.signals.enable_output == c.signals.ready_input == ""
 
 
-def test_an_axis_without_the_extended_limits_has_none():
+def test_kernel_an_axis_without_the_extended_limits_has_none():
     """The S7-1200 parameter set has no current velocity limit, no maximum acceleration/deceleration/jerk, no
     velocity override, no extrapolation and no cross-PLC output."""
     c = axis_config(P.defaults())
@@ -70,7 +70,7 @@ def test_an_axis_without_the_extended_limits_has_none():
     assert not c.leading_value_output.enabled and c.leading_value_output.local_delay_time == 0.0
 
 
-def test_a_modulo_profidrive_axis_in_degrees():
+def test_kernel_a_modulo_profidrive_axis_in_degrees():
     c = axis_config(params(**PROFIDRIVE, Units__LengthUnit=1005, Modulo__Enable=True, Modulo__StartValue=-180.0,
                            Modulo__Length=360.0, Sensor1__Type=1, Sensor1__Parameter__DeterminableRevolutions=4096,
                            PositionControl__Kv=40.0, PositionControl__Kpc=80.0))
@@ -83,7 +83,7 @@ def test_a_modulo_profidrive_axis_in_degrees():
     assert (c.position_control.kv, c.position_control.precontrol) == (40.0, 80.0)
 
 
-def test_switches_homing_and_drive_signals():
+def test_kernel_switches_homing_and_drive_signals():
     c = axis_config(params(PositionLimits_HW__Active=True, PositionLimits_HW__MinSwitchAddress="I0.1",
                            PositionLimits_HW__MaxSwitchAddress="I0.2", PositionLimits_HW__MaxSwitchLevel=True,
                            Sensor1__ActiveHoming__DigitalInputAddress="I0.3", Sensor1__ActiveHoming__SwitchLevel=False,
@@ -104,21 +104,21 @@ def test_switches_homing_and_drive_signals():
 
 
 @pytest.mark.parametrize("jerk,limited", [(0.0, False), (1e-9, False), (2e-9, True), (192.0, True)])
-def test_jerk_limit_of_a_drive_with_position_control_s5_4_4_4(jerk, limited):
+def test_kernel_jerk_limit_of_a_drive_with_position_control_s5_4_4_4(jerk, limited):
     """§5.4.4.4: a jerk above 1e-9 switches the jerk limit on; without it motions are planned jerk-free."""
     c = axis_config(params(**PROFIDRIVE, DynamicDefaults__Jerk=jerk))
     assert c.defaults.jerk == (jerk if limited else math.inf)
 
 
 @pytest.mark.parametrize("jerk,limited", [(3.9e-5, False), (4.0e-5, True)])
-def test_jerk_limit_of_a_pulse_axis_s5_4_4_4(jerk, limited):
+def test_kernel_jerk_limit_of_a_pulse_axis_s5_4_4_4(jerk, limited):
     """§5.4.4.4: on a pulse axis a jerk below 0.004 pulses/s^3 switches the limit off; with 10 mm per motor
     revolution and 1000 pulses per revolution one pulse is 0.01 mm, so the threshold is 4e-5 mm/s^3."""
     c = axis_config(params(DynamicDefaults__Jerk=jerk))
     assert c.defaults.jerk == (jerk if limited else math.inf)
 
 
-def test_extended_limits_extrapolation_and_leading_value_output():
+def test_kernel_extended_limits_extrapolation_and_leading_value_output():
     """The S7-1500 axis has them (S7-1500T V5 §A.1.9, §A.1.10, §A.1.16, §A.1.17, §A.1.24)."""
     p = S7_1500.defaults()
     p.update({"DynamicLimits.Velocity": 80.0, "DynamicLimits.MaxAcceleration": 900.0,
@@ -146,12 +146,12 @@ def test_extended_limits_extrapolation_and_leading_value_output():
     assert (s.modulo, s.extrapolation, s.leading_value_output) == (c.modulo, c.extrapolation, c.leading_value_output)
 
 
-def test_the_config_names_real_tags_for_its_faults():
+def test_kernel_the_config_names_real_tags_for_its_faults():
     c = axis_config(P.defaults())
     assert c.tag_names and all(c.tag_name(f) in P.SCHEMA for f in c.tag_names)
 
 
-def test_the_config_is_a_value():
+def test_kernel_the_config_is_a_value():
     c = axis_config(P.defaults())
     with pytest.raises(AttributeError):
         c.modulo.enabled = True                   # frozen: nobody changes it behind the axis's back
@@ -165,7 +165,7 @@ def _axis(**values):
     return ctl, ctl.add_positioning_axis("ax", flat)
 
 
-def test_a_servo_axis_takes_a_written_tag_at_the_next_servo_cycle_s12_9():
+def test_kernel_a_servo_axis_takes_a_written_tag_at_the_next_servo_cycle_s12_9():
     """Effective code 10 (PROFIdrive/analog): the next servo cycle after the write."""
     ctl, ax = _axis(**PROFIDRIVE)
     before = ax.config
@@ -178,7 +178,7 @@ def test_a_servo_axis_takes_a_written_tag_at_the_next_servo_cycle_s12_9():
     assert ax.config.defaults.deceleration == 48.0
 
 
-def test_a_pulse_axis_takes_a_parameter_at_enable_s12_9():
+def test_kernel_a_pulse_axis_takes_a_parameter_at_enable_s12_9():
     """Effective code 2 (PTO): a value written with MC_WriteParam counts from the next enable."""
     ctl, ax = _axis()
     ax.write_tag("DynamicLimits.MaxVelocity", 100.0, via_write_param=True)
@@ -190,7 +190,7 @@ def test_a_pulse_axis_takes_a_parameter_at_enable_s12_9():
     assert ax.config.limits.max_velocity == 100.0
 
 
-def test_an_invalid_value_leaves_the_config_as_it_was():
+def test_kernel_an_invalid_value_leaves_the_config_as_it_was():
     ctl, ax = _axis(**PROFIDRIVE)
     ax.write_tag("DynamicDefaults.Deceleration", -1.0)       # stored; invalid when it takes effect
     ctl.step()
@@ -198,7 +198,7 @@ def test_an_invalid_value_leaves_the_config_as_it_was():
     assert ax.config.defaults.deceleration == 48.0
 
 
-def test_a_restart_returns_to_the_start_values():
+def test_kernel_a_restart_returns_to_the_start_values():
     ctl, ax = _axis(**PROFIDRIVE)
     ax.write_tag("PositionLimits_SW.MaxPosition", 500.0)
     ctl.step()
@@ -236,13 +236,13 @@ def _tag_paths(source: str) -> list[tuple[int, str]]:
     return sorted(hits)
 
 
-def test_the_tag_path_check_finds_tag_paths():
+def test_kernel_the_tag_path_check_finds_tag_paths():
     found = _tag_paths('x = e["Modulo.Enable"]\ny = f"Sensor[1].{kind}Homing.Mode"\nz = "A.B:rule:x"')
     assert {(1, "Modulo.Enable"), (2, "Sensor[1].XHoming.Mode"), (3, "A.B:rule:x")} <= set(found)
     assert _tag_paths('a = f"{kind}{byte}.{bit}"\nb = "plcmotion.kernel"\nc = "Ends here. Then A.B: says"') == []
 
 
-def test_converted_kernel_modules_name_no_tag_path():
+def test_kernel_converted_kernel_modules_name_no_tag_path():
     found = {}
     for path in sorted(KERNEL.glob("*.py")):
         if path.name in ALLOWED:
@@ -253,7 +253,7 @@ def test_converted_kernel_modules_name_no_tag_path():
     assert not found, f"kernel modules that read tag paths (use axis.config): {found}"
 
 
-def test_the_allowed_list_is_not_stale():
+def test_kernel_the_allowed_list_is_not_stale():
     """A module allowed to name tags does name one (else it belongs to the checked ones); one that left the
     kernel (moved into its family) needs no entry any more."""
     for name in ALLOWED:

@@ -63,7 +63,7 @@ class Rig:
 
 
 # --- the simulated speed-controlled drive -------------------------------------------------------------
-def test_ready_after_the_ready_delay_and_not_without_enable_or_with_a_fault():
+def test_kernel_ready_after_the_ready_delay_and_not_without_enable_or_with_a_fault():
     rig = Rig(DriveSpec(**{**ANALOG.__dict__, "ready_delay": 0.05}))
     assert not rig.ch.ready(0.0)
     rig.ch.set_enable(True, 0.0)
@@ -77,13 +77,13 @@ def test_ready_after_the_ready_delay_and_not_without_enable_or_with_a_fault():
     assert not rig.ch.ready(0.07)
 
 
-def test_a_disabled_drive_does_not_follow_its_speed_setpoint():
+def test_kernel_a_disabled_drive_does_not_follow_its_speed_setpoint():
     rig = Rig(ANALOG)
     rig.run(0.1, speed=10.0)
     assert rig.position == 0.0 and rig.ch.mechanical_position() == 0.0
 
 
-def test_position_is_the_integral_of_the_commanded_speed():
+def test_kernel_position_is_the_integral_of_the_commanded_speed():
     rig = Rig(ANALOG)
     rig.ch.set_enable(True, 0.0)
     rig.run(0.5, speed=10.0)
@@ -94,7 +94,7 @@ def test_position_is_the_integral_of_the_commanded_speed():
     assert rig.velocity == pytest.approx(-4.0, abs=1 / 1024 / DT)      # over the last cycle, +- one count
 
 
-def test_first_order_speed_loop_lags_a_speed_step_by_its_time_constant():
+def test_kernel_first_order_speed_loop_lags_a_speed_step_by_its_time_constant():
     tc = 0.02
     rig = Rig(DriveSpec(**{**ANALOG.__dict__, "plant": PlantSpec(speed_time_constant=tc)}))
     rig.ch.set_enable(True, 0.0)
@@ -106,7 +106,7 @@ def test_first_order_speed_loop_lags_a_speed_step_by_its_time_constant():
     assert rig.ch.mechanical_position() == pytest.approx(expected, abs=1e-9)
 
 
-def test_speed_is_limited_to_the_drives_maximum_speed():
+def test_kernel_speed_is_limited_to_the_drives_maximum_speed():
     rig = Rig(ANALOG)
     rig.ch.set_enable(True, 0.0)
     rig.run(0.1, speed=200.0)
@@ -120,7 +120,7 @@ def test_speed_is_limited_to_the_drives_maximum_speed():
     assert (rig.ch.mechanical_position() - x0) / 0.2 == pytest.approx(-27.0, rel=1e-9)
 
 
-def test_without_enable_the_drive_ramps_down_with_its_off_ramp():
+def test_kernel_without_enable_the_drive_ramps_down_with_its_off_ramp():
     rig = Rig(ANALOG)
     rig.ch.set_enable(True, 0.0)
     rig.run(0.2, speed=10.0)
@@ -132,7 +132,7 @@ def test_without_enable_the_drive_ramps_down_with_its_off_ramp():
     assert rig.velocity == 0.0
 
 
-def test_a_drive_fault_stops_following_and_ramps_down():
+def test_kernel_a_drive_fault_stops_following_and_ramps_down():
     rig = Rig(ANALOG)
     rig.ch.set_enable(True, 0.0)
     rig.run(0.2, speed=-10.0)
@@ -149,7 +149,7 @@ def test_a_drive_fault_stops_following_and_ramps_down():
     # linear: a mark every 0.01 units, 4 counts per mark
     (EncoderSpec(rotary=False, step_length=0.01, fine_bits=2), 0.0025),
 ])
-def test_the_encoder_quantizes_the_actual_position_to_whole_increments(encoder, step):
+def test_kernel_the_encoder_quantizes_the_actual_position_to_whole_increments(encoder, step):
     assert encoder.increment == pytest.approx(step, rel=1e-15)
     rig = Rig(DriveSpec(**{**ANALOG.__dict__, "encoder": encoder}))
     rig.ch.set_enable(True, 0.0)
@@ -163,7 +163,7 @@ def test_the_encoder_quantizes_the_actual_position_to_whole_increments(encoder, 
             assert -1e-9 <= lag < step + 1e-9
 
 
-def test_inverse_encoder_direction_is_corrected_behind_the_interface():
+def test_kernel_inverse_encoder_direction_is_corrected_behind_the_interface():
     """Decision 53: values at the interface are in axis coordinates; the simulated machine is wired
     consistently, so an inverted encoder shows the same actual values."""
     inverse = EncoderSpec(**{**ANALOG.encoder.__dict__, "inverse_direction": True})
@@ -174,7 +174,7 @@ def test_inverse_encoder_direction_is_corrected_behind_the_interface():
     assert rigs[0].position == rigs[1].position > 0.0
 
 
-def test_set_actual_re_references_without_moving_the_load():
+def test_kernel_set_actual_re_references_without_moving_the_load():
     rig = Rig(ANALOG)
     rig.ch.set_enable(True, 0.0)
     rig.run(0.1, speed=5.0)
@@ -186,7 +186,7 @@ def test_set_actual_re_references_without_moving_the_load():
     assert rig.position == pytest.approx(100.5, abs=2 / 1024)
 
 
-def test_profidrive_drive_is_ready_after_its_switch_on_sequence():
+def test_kernel_profidrive_drive_is_ready_after_its_switch_on_sequence():
     rig = Rig(DriveSpec(**{**ANALOG.__dict__, "interface": SetpointInterface.PROFIDRIVE, "telegram": 3}))
     rig.ch.set_enable(True, 0.0)
     assert not rig.ch.ready(0.0)             # S1 -> S2 -> S3 -> S4 takes servo cycles
@@ -197,7 +197,7 @@ def test_profidrive_drive_is_ready_after_its_switch_on_sequence():
 
 
 # --- drives that follow a position setpoint ------------------------------------------------------------
-def test_stepper_position_is_whole_pulses_and_reconfigure_changes_the_pulse_length():
+def test_kernel_stepper_position_is_whole_pulses_and_reconfigure_changes_the_pulse_length():
     spec = DriveSpec(actuator=ActuatorKind.PULSE, interface=SetpointInterface.PULSES, length_per_revolution=10.0,
                      pulses_per_revolution=400)
     rig = Rig(spec)
@@ -209,7 +209,7 @@ def test_stepper_position_is_whole_pulses_and_reconfigure_changes_the_pulse_leng
     assert not rig.ch.communication_ok                            # a pulse output is no bus
 
 
-def test_ideal_drive_actual_value_is_the_setpoint():
+def test_kernel_ideal_drive_actual_value_is_the_setpoint():
     rig = Rig(DriveSpec(actuator=ActuatorKind.IDEAL, interface=SetpointInterface.NONE))
     rig.ch.set_enable(True, 0.0)
     assert rig.ch.ready(0.0)
@@ -218,7 +218,7 @@ def test_ideal_drive_actual_value_is_the_setpoint():
 
 
 # --- the simulated machine ------------------------------------------------------------------------------
-def test_plant_wires_the_switches_and_the_ready_signal_of_its_spec():
+def test_kernel_plant_wires_the_switches_and_the_ready_signal_of_its_spec():
     rig = Rig(ANALOG)
     inputs = DigitalInputs()
     plant = Plant(inputs)
@@ -260,7 +260,7 @@ def params(changes: dict | None = None) -> dict:
     return p
 
 
-def test_builder_profidrive_drive_with_encoder_on_the_motor_shaft():
+def test_kernel_builder_profidrive_drive_with_encoder_on_the_motor_shaft():
     spec = drive_spec(params({"Mechanics.LeadScrew": 5.0, "Sensor[1].Parameter.StepsPerRevolution": 1000,
                                 "Sensor[1].Parameter.FineResolutionXist1": 2, "Sensor[1].Interface.Type": 2,
                                 "Actor.DriveParameter.MaxSpeed": 6000.0, "Plant.ReadyDelay": 0.25}))
@@ -274,7 +274,7 @@ def test_builder_profidrive_drive_with_encoder_on_the_motor_shaft():
     assert spec.encoder.kind is EncoderKind.INCREMENTAL and spec.encoder.determinable_revolutions == 0
 
 
-def test_builder_external_rotary_and_linear_encoders():
+def test_kernel_builder_external_rotary_and_linear_encoders():
     ext = drive_spec(params({"Sensor[1].MountingMode": 2, "Sensor[1].Parameter.DistancePerRevolution": 80.0,
                                "Sensor[1].Parameter.StepsPerRevolution": 500,
                                "Sensor[1].Parameter.FineResolutionXist1": 3}))
@@ -285,7 +285,7 @@ def test_builder_external_rotary_and_linear_encoders():
     assert not lin.encoder.rotary and lin.encoder.increment == pytest.approx(0.001, rel=1e-15)
 
 
-def test_builder_absolute_encoder_knows_its_revolutions():
+def test_kernel_builder_absolute_encoder_knows_its_revolutions():
     spec = drive_spec(params({"Sensor[1].Type": 1, "Sensor[1].Parameter.DeterminableRevolutions": 4096,
                                 "Sensor[1].InverseDirection": True}))
     assert spec.encoder.kind is EncoderKind.ABSOLUTE and spec.encoder.absolute
@@ -294,7 +294,7 @@ def test_builder_absolute_encoder_knows_its_revolutions():
     assert cyclic.encoder.kind is EncoderKind.CYCLIC_ABSOLUTE
 
 
-def test_builder_pulse_analog_and_simulated_drives():
+def test_kernel_builder_pulse_analog_and_simulated_drives():
     pto = drive_spec(params({"Actor.Type": 2, "Actor.DriveParameter.PulsesPerDriveRevolution": 400}))
     assert pto.actuator is ActuatorKind.PULSE and pto.interface is SetpointInterface.PULSES
     assert pto.pulse_length == pytest.approx(10.0 / 400)
@@ -304,7 +304,7 @@ def test_builder_pulse_analog_and_simulated_drives():
     assert sim.actuator is ActuatorKind.IDEAL
 
 
-def test_builder_plant_switches_and_ready_input():
+def test_kernel_builder_plant_switches_and_ready_input():
     spec = drive_spec(params({
         "Plant.HWLimitMinPosition": -100.0, "PositionLimits_HW.MinSwitchAddress": "I0.0",
         "PositionLimits_HW.MinSwitchLevel": False,

@@ -204,14 +204,14 @@ def _run(s: dict, family: str) -> None:
 
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(scenarios("S7-1200"))
-def test_s7_1200_dynamics_changes_never_exceed_the_velocity_limits_defect1(s):
+def test_kernel_s7_1200_dynamics_changes_never_exceed_the_velocity_limits_defect1(s):
     """S7-1200 V6 §11.1.10 / §12.9.11 on analog, PROFIdrive and PTO axes (issue 8 defect 1)."""
     _run(s, "S7-1200")
 
 
 @settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(scenarios("S7-1500T"))
-def test_s7_1500_dynamics_changes_never_exceed_the_velocity_limits_defect1(s):
+def test_kernel_s7_1500_dynamics_changes_never_exceed_the_velocity_limits_defect1(s):
     """S7-1500: DynamicDefaults writes, velocity override and new jobs with their own dynamics during a
     motion never exceed DynamicLimits.MaxVelocity (issue 8 defect 1)."""
     _run(s, "S7-1500T")

@@ -138,7 +138,7 @@ BUS_LOST = {"S7-1200": (0x800C, 0x003E), "S7-1500": (202, 4)}
 # ---------------------------------------------------------------------------------------------------------
 # (1) load disturbance
 @pytest.mark.parametrize("family", FAMILIES)
-def test_defect11_blocked_load_trips_following_error_monitoring(family):
+def test_kernel_defect11_blocked_load_trips_following_error_monitoring(family):
     """A moving axis runs into an obstacle: the following error grows until it exceeds the limit (S7-1200 V6
     §5.4.4.6, §12.8 16#800D; S7-1500 alarm 521), reaction remove enable; the fault is shown at the running
     command.  Once the obstacle is gone, MC_Reset acknowledges and the axis is enabled again."""
@@ -159,7 +159,7 @@ def test_defect11_blocked_load_trips_following_error_monitoring(family):
 
 
 @pytest.mark.parametrize("family", FAMILIES)
-def test_defect11_position_jump_beyond_the_following_error_limit_at_standstill(family):
+def test_kernel_defect11_position_jump_beyond_the_following_error_limit_at_standstill(family):
     """§5.4.4.6: at standstill the permitted following error is FollowingError.MinValue (10 mm by default);
     a load that is knocked 15 mm away trips the monitoring (16#800D / alarm 521)."""
     b = Bench(family)
@@ -173,7 +173,7 @@ def test_defect11_position_jump_beyond_the_following_error_limit_at_standstill(f
 
 @settings(max_examples=15, deadline=None)
 @given(jump=st.floats(-8.0, 8.0).filter(lambda x: abs(x) > 0.05))
-def test_defect11_small_jump_is_corrected_by_the_position_loop_s7_1200(jump):
+def test_kernel_defect11_small_jump_is_corrected_by_the_position_loop_s7_1200(jump):
     """Invariant: a jump within the following error limit (MinValue 10 mm) trips nothing; the position loop
     brings the load back to its setpoint (within one encoder increment) and the axis stays enabled."""
     b = Bench("S7-1200")
@@ -186,7 +186,7 @@ def test_defect11_small_jump_is_corrected_by_the_position_loop_s7_1200(jump):
 
 
 @pytest.mark.parametrize("family", FAMILIES)
-def test_defect11_external_force_keeps_the_axis_out_of_the_positioning_window(family):
+def test_kernel_defect11_external_force_keeps_the_axis_out_of_the_positioning_window(family):
     """An external force the position loop can hold only with a deviation of force / Kv (20 mm/s / 10 1/s =
     2 mm) larger than PositioningMonitoring.Window (1 mm): the axis does not reach the target range within
     the tolerance time (1 s) - S7-1200 §5.4.4.6, 16#800F/16#0045; S7-1500 alarm 541 - remove enable."""
@@ -203,7 +203,7 @@ def test_defect11_external_force_keeps_the_axis_out_of_the_positioning_window(fa
 
 
 @pytest.mark.parametrize("family", FAMILIES)
-def test_defect11_jump_out_of_the_target_range_during_the_dwell_time(family):
+def test_kernel_defect11_jump_out_of_the_target_range_during_the_dwell_time(family):
     """The load is knocked out of the positioning window (3 mm > Window 1 mm, < MinValue 10 mm) after the
     setpoint has reached the target but before the minimum dwell time (0.1 s) is over: the target range is
     left again - 16#800F/16#0046 (S7-1200), alarm 541 (S7-1500), remove enable."""
@@ -222,7 +222,7 @@ def test_defect11_jump_out_of_the_target_range_during_the_dwell_time(family):
     assert mv.Error and b.disabled() and b.alarm() == LEFT[family]
 
 
-def test_defect11_pto_jump_is_lost_steps_unseen_by_the_actual_value():
+def test_kernel_defect11_pto_jump_is_lost_steps_unseen_by_the_actual_value():
     """A stepper on a pulse output runs open loop (S7-1200 V6 §2.1): lost steps move the load (its switches
     see it), not the actual value; a force or a blocked load cannot be injected there."""
     ctl = Controller()
@@ -242,7 +242,7 @@ def test_defect11_pto_jump_is_lost_steps_unseen_by_the_actual_value():
 @pytest.mark.parametrize("bad,exc", [(dict(jump=math.nan), ValueError), (dict(jump=10 ** 400), ValueError),
                                      (dict(jump="1"), TypeError), (dict(force=math.inf), ValueError),
                                      (dict(blocked=1), TypeError), (dict(jump=True), TypeError)])
-def test_defect11_disturb_load_rejects_bad_values_with_a_clear_error(bad, exc):
+def test_kernel_defect11_disturb_load_rejects_bad_values_with_a_clear_error(bad, exc):
     b = Bench("S7-1200")
     with pytest.raises(exc):
         b.axis.disturb_load(**bad)
@@ -253,7 +253,7 @@ def test_defect11_disturb_load_rejects_bad_values_with_a_clear_error(bad, exc):
 # ---------------------------------------------------------------------------------------------------------
 # (2) stuck and chattering switches
 @pytest.mark.parametrize("family", FAMILIES)
-def test_defect11_limit_switch_stuck_actuated_trips_the_hw_limit(family):
+def test_kernel_defect11_limit_switch_stuck_actuated_trips_the_hw_limit(family):
     """A hardware limit switch whose contact sticks actuated while the load is far from it: the axis sees the
     limit switch approached (S7-1200 §12.8 16#8004, PROFIdrive: remove enable; S7-1500 alarm 531) after the
     input filter (6.4 ms).  Repaired and acknowledged, the axis is enabled again."""
@@ -270,7 +270,7 @@ def test_defect11_limit_switch_stuck_actuated_trips_the_hw_limit(family):
     b.acknowledged_and_re_enabled()
 
 
-def test_defect11_limit_switch_stuck_released_lets_the_axis_pass_s7_1200():
+def test_kernel_defect11_limit_switch_stuck_released_lets_the_axis_pass_s7_1200():
     """A limit switch stuck released (broken contact) protects nothing: the axis drives through the switch's
     position without 16#8004 - what a commissioning test of the switch wiring must reveal."""
     b = Bench("S7-1200", HW_1200, place_limits=True)
@@ -282,7 +282,7 @@ def test_defect11_limit_switch_stuck_released_lets_the_axis_pass_s7_1200():
 
 
 @pytest.mark.parametrize("family", FAMILIES)
-def test_defect11_chattering_limit_switch_and_the_input_filter(family):
+def test_kernel_defect11_chattering_limit_switch_and_the_input_filter(family):
     """A chattering limit switch (S7-1200 §5.4.4.5: input filter 6.4 ms by default): bouncing faster than the
     filter (half period 2 ms) never reaches the CPU; bouncing slower (half period 20 ms) is seen once it has
     been stable for the filter time and trips the HW limit (16#8004 / alarm 531)."""
@@ -302,7 +302,7 @@ def test_defect11_chattering_limit_switch_and_the_input_filter(family):
     b.acknowledged_and_re_enabled()
 
 
-def test_defect11_homing_switch_placed_by_the_api_is_found_by_active_homing_s7_1200():
+def test_kernel_defect11_homing_switch_placed_by_the_api_is_found_by_active_homing_s7_1200():
     """Placing a switch is public API: a reference cam placed at 40..50 mm with ``place_switch`` is found by
     active homing (MC_Home Mode 3, §5.4.4, homing on the homing switch) like one from the project's Plant.*."""
     b = Bench("S7-1200", {"Sensor[1].ActiveHoming.DigitalInputAddress": "I0.4", "Sensor[1].ActiveHoming.Mode": 2,
@@ -314,7 +314,7 @@ def test_defect11_homing_switch_placed_by_the_api_is_found_by_active_homing_s7_1
     assert b.axis.StatusBits.HomingDone
 
 
-def test_defect11_place_switch_rejects_bad_placements():
+def test_kernel_defect11_place_switch_rejects_bad_placements():
     ctl = Controller()
     axis = ctl.add_positioning_axis("Axis_1", {"Actor.Type": 1})
     with pytest.raises(ValueError, match="not an input"):
@@ -339,7 +339,7 @@ def test_defect11_place_switch_rejects_bad_placements():
 # ---------------------------------------------------------------------------------------------------------
 # (3) encoder loss, (4) bus loss
 @pytest.mark.parametrize("family", FAMILIES)
-def test_defect11_encoder_loss(family):
+def test_kernel_defect11_encoder_loss(family):
     """The encoder on the bus fails (station failure): S7-1200 §12.8 16#800A/16#0040, S7-1500 encoder alarm
     (203, ErrorWord.X5 SensorFault, X7 CommunicationFault), remove enable; actual values invalid
     (StatusSensor.State 0), CommunicationOK FALSE, 'homed' lost (§2.5).  While the encoder is gone,
@@ -365,7 +365,7 @@ def test_defect11_encoder_loss(family):
     assert sensor.State == 2 and sensor.CommunicationOK and not b.error_bit("SensorFault")
 
 
-def test_defect11_encoder_loss_of_an_hsc_encoder_is_a_hardware_error_s7_1200():
+def test_kernel_defect11_encoder_loss_of_an_hsc_encoder_is_a_hardware_error_s7_1200():
     """An encoder on a high-speed counter has no bus: its loss is 16#800A/16#0034 (hardware error), not a
     station failure, and no CommunicationFault."""
     b = Bench("S7-1200", {"Sensor[1].Interface.Type": 4})
@@ -375,7 +375,7 @@ def test_defect11_encoder_loss_of_an_hsc_encoder_is_a_hardware_error_s7_1200():
 
 
 @pytest.mark.parametrize("family", FAMILIES)
-def test_defect11_bus_loss(family):
+def test_kernel_defect11_bus_loss(family):
     """The drive's telegram fails (station failure) - S7-1200 §12.8 16#800C/16#003E with ErrorBits.DriveFault
     and CommunicationFault; S7-1500 drive alarm (202, ErrorWord.X4, X7); the encoder in the same telegram is
     lost too (SensorFault, StatusSensor.CommunicationOK FALSE).  Remove enable; MC_Reset does not help while
@@ -402,7 +402,7 @@ def test_defect11_bus_loss(family):
     assert b.axis.StatusDrive.CommunicationOK and not b.error_bit("CommunicationFault")
 
 
-def test_defect11_bus_loss_needs_a_bus():
+def test_kernel_defect11_bus_loss_needs_a_bus():
     ctl = Controller()
     analog = ctl.add_positioning_axis("Analog", {"Actor.Type": 0})
     pto = ctl.add_positioning_axis("Pto", {"Actor.Type": 2, "DynamicLimits.MinVelocity": 1.0})
@@ -416,7 +416,7 @@ def test_defect11_bus_loss_needs_a_bus():
 
 @pytest.mark.parametrize("family", ["S7-1200", "S7-1500"])
 @pytest.mark.parametrize("kind", ["drive", "encoder", "drive_not_ready"])
-def test_defect11_a_simulated_axis_has_no_device_to_fail(family, kind):
+def test_kernel_defect11_a_simulated_axis_has_no_device_to_fail(family, kind):
     """A simulated axis (S7-1200 V6 §12.9.19 Simulation.Mode, S7-1500 Simulation.Mode 1)
     and a virtual axis run without drive and encoder: injecting a device fault there is a clear error, not an
     alarm of hardware that does not exist (issue 8 review)."""
@@ -431,7 +431,7 @@ def test_defect11_a_simulated_axis_has_no_device_to_fail(family, kind):
             virtual.inject_fault(kind)
 
 
-def test_defect11_a_pulse_output_axis_has_no_encoder():
+def test_kernel_defect11_a_pulse_output_axis_has_no_encoder():
     ctl = Controller()
     pto = ctl.add_positioning_axis("Pto", {"Actor.Type": 2, "DynamicLimits.MinVelocity": 1.0})
     with pytest.raises(ValueError, match="no encoder"):
@@ -442,7 +442,7 @@ def test_defect11_a_pulse_output_axis_has_no_encoder():
 
 # ---------------------------------------------------------------------------------------------------------
 # scenario (timed faults, the project file's [[faults]])
-def test_defect11_fault_scenario_runs_faults_at_their_time():
+def test_kernel_defect11_fault_scenario_runs_faults_at_their_time():
     b = Bench("S7-1200")
     scenario = FaultScenario(b.ctl)
     t0 = b.ctl.time
@@ -457,7 +457,7 @@ def test_defect11_fault_scenario_runs_faults_at_their_time():
     b.acknowledged_and_re_enabled()
 
 
-def test_defect11_docs_fault_injection_examples_run():
+def test_kernel_defect11_docs_fault_injection_examples_run():
     """The Python examples of docs/fault_injection.md run as printed (they assert their results)."""
     import re
     from pathlib import Path
@@ -471,7 +471,7 @@ def test_defect11_docs_fault_injection_examples_run():
 
 @settings(max_examples=20, deadline=None)
 @given(period=st.floats(0.002, 0.0108), start=st.floats(0.0, 0.01))
-def test_defect11_bouncing_shorter_than_the_input_filter_is_never_seen(period, start):
+def test_kernel_defect11_bouncing_shorter_than_the_input_filter_is_never_seen(period, start):
     """S7-1200 V6 §5.4.4.5 input filter (6.4 ms): a contact that bounces with half periods shorter than the
     filter time less one servo cycle (the level is sampled once per cycle) never changes the input the CPU
     sees."""
@@ -487,7 +487,7 @@ def test_defect11_bouncing_shorter_than_the_input_filter_is_never_seen(period, s
 
 @settings(max_examples=20, deadline=None)
 @given(period=st.floats(0.018, 0.2))
-def test_defect11_bouncing_longer_than_the_input_filter_is_seen_after_the_filter_time(period):
+def test_kernel_defect11_bouncing_longer_than_the_input_filter_is_seen_after_the_filter_time(period):
     """§5.4.4.5: a bounce that lasts longer than the filter (plus two servo cycles of sampling) reaches the CPU,
     delayed by the filter time."""
     ctl = Controller()
@@ -502,7 +502,7 @@ def test_defect11_bouncing_longer_than_the_input_filter_is_seen_after_the_filter
     assert changed[0] <= t0 + period / 2 + 0.0064 + 0.002
 
 
-def test_defect11_stuck_limit_switch_on_a_pto_axis_stops_with_the_emergency_deceleration_s7_1200():
+def test_kernel_defect11_stuck_limit_switch_on_a_pto_axis_stops_with_the_emergency_deceleration_s7_1200():
     """S7-1200 V6 §12.8 16#8004 on a stepper (PTO): the reaction is a stop with the emergency deceleration
     (the axis stays enabled), not 'remove enable'; the switch is approached after the input filter."""
     ctl = Controller()
@@ -538,7 +538,7 @@ def test_defect11_stuck_limit_switch_on_a_pto_axis_stops_with_the_emergency_dece
     lambda ctl, axis: ctl.plant.scenario.at(0.01, "inject", "a string"),
 ], ids=["low-huge-int", "high-huge-int", "name-not-text", "chatter-huge-int", "chatter-start-huge-int",
         "persistent-not-bool", "scenario-none", "scenario-not-callable"])
-def test_defect11_fault_api_rejects_bad_arguments_at_the_call(call):
+def test_kernel_defect11_fault_api_rejects_bad_arguments_at_the_call(call):
     """Issue 8 defect 5/11 (review): a huge int gave an OverflowError, persistent="no" injected a persistent
     fault, a name that is no text was kept, and scenario.at(t, None) was accepted and put the controller in
     STOP at time t.  Each is a TypeError/ValueError at the call, and the controller runs on."""

@@ -29,12 +29,12 @@ DT = 0.001            # servo cycle of Controller()
     (BufferMode.BLENDING_HIGH, 50.0, 30.0, 50.0), (BufferMode.BLENDING_HIGH, 50.0, 70.0, 70.0),
     (BufferMode.BUFFERED, 50.0, 70.0, 0.0), (BufferMode.ABORTING, 50.0, 70.0, 0.0),
 ])
-def test_transition_velocity_follows_plcopen_table(mode, v1, v2, expected):
+def test_kernel_transition_velocity_follows_plcopen_table(mode, v1, v2, expected):
     assert transition_velocity(mode, v1, v2, reverses=False) == expected
     assert transition_velocity(mode, v1, v2, reverses=True) == 0.0       # reversal: standstill at the target
 
 
-def test_buffer_mode_numbers_are_plcopen_order():
+def test_kernel_buffer_mode_numbers_are_plcopen_order():
     assert [m.name for m in BufferMode] == ["ABORTING", "BUFFERED", "BLENDING_LOW", "BLENDING_PREVIOUS",
                                             "BLENDING_NEXT", "BLENDING_HIGH"]
     assert [int(m) for m in BufferMode] == [0, 1, 2, 3, 4, 5]
@@ -96,7 +96,7 @@ def move(distance=100.0, velocity=50.0, kind=JobKind.RELATIVE):
     return Job(kind, position=distance, velocity=velocity)
 
 
-def test_buffered_job_is_busy_not_active_until_the_running_one_is_done():
+def test_kernel_buffered_job_is_busy_not_active_until_the_running_one_is_done():
     ax = FakeAxis()
     j1, j2 = move(), move()
     ax.queue.submit(j1, BufferMode.BUFFERED)          # nothing runs: starts at once
@@ -110,7 +110,7 @@ def test_buffered_job_is_busy_not_active_until_the_running_one_is_done():
     assert j2.active and ax.queue.pending == ()
 
 
-def test_aborting_job_aborts_running_and_waiting_jobs():
+def test_kernel_aborting_job_aborts_running_and_waiting_jobs():
     ax = FakeAxis(depth=2)
     j1, j2, j3, j4 = move(), move(), move(), move()
     ax.queue.submit(j1)
@@ -122,7 +122,7 @@ def test_aborting_job_aborts_running_and_waiting_jobs():
     assert j4.active and ax.queue.pending == ()
 
 
-def test_full_queue_rejects_and_the_running_job_goes_on():
+def test_kernel_full_queue_rejects_and_the_running_job_goes_on():
     ax = FakeAxis(depth=1)
     j1, j2, j3 = move(), move(), move()
     ax.queue.submit(j1)
@@ -141,7 +141,7 @@ def test_full_queue_rejects_and_the_running_job_goes_on():
     assert k[2].active
 
 
-def test_depth_zero_buffers_nothing():
+def test_kernel_depth_zero_buffers_nothing():
     ax = FakeAxis(depth=0)
     j1, j2 = move(), move()
     ax.queue.submit(j1)
@@ -149,7 +149,7 @@ def test_depth_zero_buffers_nothing():
     assert j2.fault.kind == F.QUEUE_FULL and j1.active
 
 
-def test_buffered_after_velocity_job_starts_at_in_velocity():
+def test_kernel_buffered_after_velocity_job_starts_at_in_velocity():
     ax = FakeAxis()
     vel = Job(JobKind.VELOCITY, velocity=20.0)
     j2 = move()
@@ -163,7 +163,7 @@ def test_buffered_after_velocity_job_starts_at_in_velocity():
     assert vel.state == JobState.ABORTED              # a continuous motion has no Done (PLCopen)
 
 
-def test_velocity_job_at_its_velocity_is_taken_over_at_once():
+def test_kernel_velocity_job_at_its_velocity_is_taken_over_at_once():
     ax = FakeAxis()
     vel = Job(JobKind.VELOCITY, velocity=20.0)
     ax.queue.submit(vel)
@@ -173,7 +173,7 @@ def test_velocity_job_at_its_velocity_is_taken_over_at_once():
     assert j2.active and vel.state == JobState.ABORTED and ax.blends == []
 
 
-def test_failing_running_job_aborts_the_waiting_ones():
+def test_kernel_failing_running_job_aborts_the_waiting_ones():
     ax = FakeAxis()
     j1, j2 = move(), move()
     ax.queue.submit(j1)
@@ -182,7 +182,7 @@ def test_failing_running_job_aborts_the_waiting_ones():
     assert j2.state == JobState.ABORTED and ax.job is None
 
 
-def test_job_that_cannot_start_ends_with_its_fault_and_its_followers_are_aborted():
+def test_kernel_job_that_cannot_start_ends_with_its_fault_and_its_followers_are_aborted():
     ax = FakeAxis(depth=2)
     j1, j2, j3 = move(), move(), move()
     ax.refuse.add(id(j2))
@@ -195,7 +195,7 @@ def test_job_that_cannot_start_ends_with_its_fault_and_its_followers_are_aborted
     assert ("settle", None) in ax.log                 # nothing controls the axis: a blend tail is braked
 
 
-def test_nothing_waits_behind_a_job_without_a_defined_end():
+def test_kernel_nothing_waits_behind_a_job_without_a_defined_end():
     ax = FakeAxis()
     jog = Job(JobKind.JOG, velocity=10.0)
     ax.queue.submit(jog)
@@ -204,7 +204,7 @@ def test_nothing_waits_behind_a_job_without_a_defined_end():
     assert j2.state == JobState.ERROR and j2.fault.kind == F.NOT_APPENDABLE and jog.active
 
 
-def test_blending_asks_for_the_transition_velocity_of_its_mode():
+def test_kernel_blending_asks_for_the_transition_velocity_of_its_mode():
     ax = FakeAxis()
     j1, j2 = move(1000.0, 50.0), move(500.0, 30.0)
     ax.queue.submit(j1)
@@ -216,7 +216,7 @@ def test_blending_asks_for_the_transition_velocity_of_its_mode():
     assert ax.log[-2:] == [("DONE", j1), ("start", j2)]
 
 
-def test_reversing_blend_plans_no_motion_through_the_target():
+def test_kernel_reversing_blend_plans_no_motion_through_the_target():
     ax = FakeAxis()
     j1, j2 = move(1000.0, 50.0), move(-300.0, 30.0)
     ax.queue.submit(j1)
@@ -224,7 +224,7 @@ def test_reversing_blend_plans_no_motion_through_the_target():
     assert ax.blends == []                           # transition velocity 0: the axis stops at the target
 
 
-def test_cancelling_the_waiting_blend_replans_the_running_positioning_to_stop():
+def test_kernel_cancelling_the_waiting_blend_replans_the_running_positioning_to_stop():
     ax = FakeAxis()
     j1, j2 = move(1000.0, 50.0), move(500.0, 30.0)
     ax.queue.submit(j1)
@@ -233,7 +233,7 @@ def test_cancelling_the_waiting_blend_replans_the_running_positioning_to_stop():
     assert j2.state == JobState.ABORTED and ax.blends[-1] == (j1, None, 0.0) and j1.active
 
 
-def test_family_transition_velocity_replaces_the_plcopen_choice():
+def test_kernel_family_transition_velocity_replaces_the_plcopen_choice():
     ax = FakeAxis()
     j1, j2 = move(1000.0, 50.0), move(500.0, 30.0)
     ax.queue.submit(j1)
@@ -282,7 +282,7 @@ def velocity(ctl, axis):
     return float(ctl.bank.sp_v[axis.index])
 
 
-def test_buffered_moves_run_back_to_back_and_end_done_in_order():
+def test_kernel_buffered_moves_run_back_to_back_and_end_done_in_order():
     """S7-Technology MC_MoveAbsolute "Append motion": the axis stops at 1000 (Done_1), the second job starts
     without gap from standstill and ends Done at 1500; Busy_2 from the start, not Active before."""
     ctl, axis = sim_axis()
@@ -310,7 +310,7 @@ def test_buffered_moves_run_back_to_back_and_end_done_in_order():
                                   BufferMode.BLENDING_NEXT, BufferMode.BLENDING_HIGH])
 @pytest.mark.parametrize("v2", [30.0, 70.0])
 @pytest.mark.parametrize("jerk", [None, 40.0])
-def test_blend_passes_the_first_target_at_the_transition_velocity(mode, v2, jerk):
+def test_kernel_blend_passes_the_first_target_at_the_transition_velocity(mode, v2, jerk):
     """S7-Technology "Overlay motion 1/2" generalised to the four PLCopen blending modes: the first target
     (1000) is passed without stopping at min / previous / next / max of 50 and v2; job 1 is Done there."""
     ctl, axis = sim_axis(jerk)
@@ -335,7 +335,7 @@ def test_blend_passes_the_first_target_at_the_transition_velocity(mode, v2, jerk
     assert max(abs(s[2]) for s in rec.samples) <= max(50.0, v2) * (1 + 1e-9)
 
 
-def test_reversing_blend_stops_at_the_first_target():
+def test_kernel_reversing_blend_stops_at_the_first_target():
     """S7-Technology "Overlay motion 3": second target 700 < 1000: v = 0 exactly at 1000, then -30 to 700."""
     ctl, axis = sim_axis()
     j1 = Job(JobKind.RELATIVE, position=1000.0, velocity=50.0)
@@ -354,7 +354,7 @@ def test_reversing_blend_stops_at_the_first_target():
     assert j1.state == j2.state == JobState.DONE and position(ctl, axis) == pytest.approx(700.0, abs=1e-9)
 
 
-def test_blend_is_lowered_to_what_the_next_distance_can_stop_from():
+def test_kernel_blend_is_lowered_to_what_the_next_distance_can_stop_from():
     """A short second move (5 units, deceleration 10) can only be entered at sqrt(2 * 10 * 5) = 10, less what
     the axis travels in the servo cycle before the second job takes over."""
     ctl, axis = sim_axis()
@@ -371,7 +371,7 @@ def test_blend_is_lowered_to_what_the_next_distance_can_stop_from():
     assert max(s[1] for s in rec.samples) == pytest.approx(1005.0, abs=1e-9)
 
 
-def test_late_blend_is_lowered_to_what_the_remaining_distance_can_reach():
+def test_kernel_late_blend_is_lowered_to_what_the_remaining_distance_can_reach():
     """Submitted while job 1 already brakes 50 units before its target: from v0 the axis can at most speed up
     over those 50 units, v^2 = v0^2 + 2 * 10 * 50, below the 70 BlendingHigh asks for."""
     ctl, axis = sim_axis()
@@ -390,7 +390,7 @@ def test_late_blend_is_lowered_to_what_the_remaining_distance_can_reach():
     assert position(ctl, axis) == pytest.approx(1500.0, abs=1e-9)
 
 
-def test_aborting_job_aborts_active_and_pending_jobs_on_the_axis():
+def test_kernel_aborting_job_aborts_active_and_pending_jobs_on_the_axis():
     ctl, axis = sim_axis()
     axis.queue.depth = 2
     j1, j2, j3 = (Job(JobKind.RELATIVE, position=1000.0, velocity=50.0) for _ in range(3))
@@ -406,7 +406,7 @@ def test_aborting_job_aborts_active_and_pending_jobs_on_the_axis():
     assert position(ctl, axis) < 1000.0
 
 
-def test_full_queue_rejects_on_the_axis():
+def test_kernel_full_queue_rejects_on_the_axis():
     ctl, axis = sim_axis()
     j1, j2, j3 = (Job(JobKind.RELATIVE, position=100.0, velocity=50.0) for _ in range(3))
     axis.submit(j1)
@@ -417,7 +417,7 @@ def test_full_queue_rejects_on_the_axis():
     assert j1.state == j2.state == JobState.DONE and position(ctl, axis) == pytest.approx(200.0, abs=1e-9)
 
 
-def test_buffered_move_after_velocity_job_starts_at_in_velocity():
+def test_kernel_buffered_move_after_velocity_job_starts_at_in_velocity():
     """PLCopen: behind MC_MoveVelocity the buffered job starts when InVelocity is reached (ramp 0 -> 20 with
     acceleration 10 takes 2 s), from the moving state."""
     ctl, axis = sim_axis()
@@ -434,7 +434,7 @@ def test_buffered_move_after_velocity_job_starts_at_in_velocity():
     assert position(ctl, axis) == pytest.approx(120.0, abs=ACC * DT)
 
 
-def test_buffered_job_waits_for_positioning_monitoring_on_a_servo_axis():
+def test_kernel_buffered_job_waits_for_positioning_monitoring_on_a_servo_axis():
     """On a drive with positioning monitoring "Done" needs the actual position in the window for the dwell
     time; the buffered job starts only then (PLCopen: after Done)."""
     ctl = Controller()
@@ -455,7 +455,7 @@ def test_buffered_job_waits_for_positioning_monitoring_on_a_servo_axis():
     assert j2.state == JobState.DONE and position(ctl, axis) == pytest.approx(100.0, abs=1e-9)
 
 
-def test_axis_alarm_aborts_waiting_jobs():
+def test_kernel_axis_alarm_aborts_waiting_jobs():
     ctl, axis = sim_axis()
     j1, j2 = (Job(JobKind.RELATIVE, position=1000.0, velocity=50.0) for _ in range(2))
     axis.submit(j1)
@@ -466,7 +466,7 @@ def test_axis_alarm_aborts_waiting_jobs():
     assert velocity(ctl, axis) == 0.0 and axis.queue.pending == ()
 
 
-def test_disabling_the_axis_aborts_waiting_jobs():
+def test_kernel_disabling_the_axis_aborts_waiting_jobs():
     ctl, axis = sim_axis()
     j1, j2 = (Job(JobKind.RELATIVE, position=1000.0, velocity=50.0) for _ in range(2))
     axis.submit(j1)
@@ -478,7 +478,7 @@ def test_disabling_the_axis_aborts_waiting_jobs():
     assert axis.state == "disabled" and velocity(ctl, axis) == 0.0
 
 
-def test_cancelled_blend_stops_at_the_first_target():
+def test_kernel_cancelled_blend_stops_at_the_first_target():
     ctl, axis = sim_axis()
     j1 = Job(JobKind.RELATIVE, position=1000.0, velocity=50.0)
     j2 = Job(JobKind.RELATIVE, position=500.0, velocity=50.0)
@@ -494,7 +494,7 @@ def test_cancelled_blend_stops_at_the_first_target():
     assert max(s[1] for s in rec.samples) == pytest.approx(1000.0, abs=1e-9)
 
 
-def test_queued_job_is_checked_when_it_is_accepted():
+def test_kernel_queued_job_is_checked_when_it_is_accepted():
     ctl, axis = sim_axis()
     j1 = Job(JobKind.RELATIVE, position=100.0, velocity=50.0)
     j2 = Job(JobKind.ABSOLUTE, position=300.0, velocity=50.0)
@@ -503,7 +503,7 @@ def test_queued_job_is_checked_when_it_is_accepted():
     assert j2.state == JobState.ERROR and j2.fault.kind == F.NOT_HOMED and j1.active
 
 
-def test_blend_within_software_limits_is_not_a_move_to_the_limit():
+def test_kernel_blend_within_software_limits_is_not_a_move_to_the_limit():
     """With software limit switches active the motion beyond the first target belongs to the next job: the
     blend passes 1000 and ends at 1500 without a limit alarm."""
     ctl, axis = sim_axis(**{"PositionLimits_SW.Active": True, "PositionLimits_SW.MinPosition": -10.0,
@@ -530,7 +530,7 @@ _moves = st.lists(st.tuples(st.floats(-400.0, 400.0).filter(lambda d: abs(d) >= 
 
 @settings(max_examples=25, deadline=None)
 @given(moves=_moves, jerk=st.sampled_from([None, 60.0]))
-def test_random_buffered_and_blended_sequences(moves, jerk):
+def test_kernel_random_buffered_and_blended_sequences(moves, jerk):
     """Never above the maximum velocity, always at the last target at the end, every job ends exactly once
     (all Done: each waits until the queue has room, so none is rejected or aborted), in order."""
     ctl, axis = sim_axis(jerk)

@@ -108,7 +108,7 @@ JERK_CASES = [
 
 
 @pytest.mark.parametrize("distance,velocity,acc,dec,jerk", JERK_CASES)
-def test_jerk_limited_duration_matches_ruckig_5_4_4_4(distance, velocity, acc, dec, jerk):
+def test_kernel_jerk_limited_duration_matches_ruckig_5_4_4_4(distance, velocity, acc, dec, jerk):
     """§5.4.4.4 jerk limit + §11.1.6: from standstill the jerk-limited MC_MoveRelative reaches its
     target in the time-optimal duration for Velocity / Acceleration / Deceleration / Jerk (ruckig
     reference) within one servo cycle, and never exceeds any of the limits."""
@@ -138,7 +138,7 @@ TRAPEZ_CASES = [
 
 
 @pytest.mark.parametrize("distance,velocity,acc,dec", TRAPEZ_CASES)
-def test_trapezoidal_profile_without_jerk_5_4_4_4(distance, velocity, acc, dec):
+def test_kernel_trapezoidal_profile_without_jerk_5_4_4_4(distance, velocity, acc, dec):
     """§5.4.4.4: Jerk = 0.0 disables the jerk limit: the acceleration is piecewise constant and takes
     only the values +Acceleration, 0 and -Deceleration; the duration is the time-optimal trapezoidal
     one (ruckig with infinite jerk) within one servo cycle."""
@@ -161,7 +161,7 @@ def test_trapezoidal_profile_without_jerk_5_4_4_4(distance, velocity, acc, dec):
 
 @pytest.mark.parametrize("acc,dec", [(20.0, 80.0), (80.0, 20.0), (25.0, 50.0)])
 @pytest.mark.parametrize("jerk", [0.0, 400.0], ids=["trapezoidal", "jerk"])
-def test_separate_acceleration_and_deceleration_5_4_4_4(acc, dec, jerk):
+def test_kernel_separate_acceleration_and_deceleration_5_4_4_4(acc, dec, jerk):
     """§5.4.4.4: ramp-up uses Acceleration, ramp-down uses Deceleration; with the jerk limit the
     ramp-up lasts v/acc + acc/jerk (smoothing time t1 = acc/jerk) and the ramp-down v/dec + dec/jerk
     (t2 = dec/jerk); without it v/acc and v/dec."""
@@ -182,7 +182,7 @@ def test_separate_acceleration_and_deceleration_5_4_4_4(acc, dec, jerk):
 
 @pytest.mark.parametrize("acc,dec", [(20.0, 80.0), (80.0, 20.0)])
 @pytest.mark.parametrize("jerk", [0.0, 400.0], ids=["trapezoidal", "jerk"])
-def test_separate_acceleration_and_deceleration_pto_5_4_4_4(acc, dec, jerk):
+def test_kernel_separate_acceleration_and_deceleration_pto_5_4_4_4(acc, dec, jerk):
     """§5.4.4.4 on a PTO axis (start/stop velocity 1.0): the acceleration never exceeds Acceleration
     when speeding up nor Deceleration when slowing down, and both are used; the target is reached."""
     ctl, axis = make(actor=2, acc=acc, dec=dec, jerk=jerk, vmax=100.0, vmin=1.0)
@@ -196,7 +196,7 @@ def test_separate_acceleration_and_deceleration_pto_5_4_4_4(acc, dec, jerk):
             assert min(abs(a - x) for x in (acc, 0.0, -dec)) <= 1e-9 * max(acc, dec)
 
 
-def test_pd_done_after_positioning_monitoring_5_4_4_6():
+def test_kernel_pd_done_after_positioning_monitoring_5_4_4_6():
     """§5.4.4.6 positioning monitoring (PROFIdrive): after the setpoint interpolation has ended the actual
     position must be in the positioning window for the minimum dwell time before the command is Done;
     Done therefore comes no earlier than MinDwellTime after the setpoint reached the target."""

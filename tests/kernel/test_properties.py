@@ -263,7 +263,7 @@ def run_scenario(cfg: Axis, cmds, finish: bool = False, limits=None, check_vmin=
 
 @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(cfg=axes(), cmds=st.lists(commands, min_size=1, max_size=8))
-def test_random_command_sequences_keep_manual_invariants(cfg, cmds):
+def test_kernel_random_command_sequences_keep_manual_invariants(cfg, cmds):
     """§5.4.4.4, §9.5.2-§9.5.4, §9.6, §11.1.4-§11.1.8: invariants of every random sequence of valid
     MC_MoveAbsolute / MC_MoveRelative / MC_MoveVelocity / MC_Halt / MC_MoveJog commands."""
     errors = run_scenario(cfg, cmds)
@@ -274,7 +274,7 @@ def test_random_command_sequences_keep_manual_invariants(cfg, cmds):
 @given(cfg=axes(), cmds=st.lists(st.tuples(st.just("abs"), st.integers(0, 30), st.just(True),
                                            st.floats(-100.0, 100.0), st.floats(0.3, 1.0)),
                                  min_size=2, max_size=6))
-def test_rapid_absolute_overrides(cfg, cmds):
+def test_kernel_rapid_absolute_overrides(cfg, cmds):
     """§11.1.5 override: MC_MoveAbsolute started while another one runs (S-MABS-2) -- each new command
     aborts the previous one and the last one ends Done exactly at its target, within the limits."""
     errors = run_scenario(cfg, cmds, finish=True)
@@ -288,11 +288,11 @@ limit_commands = st.one_of(commands, st.tuples(st.just("reset"), gap, held))
 @given(cfg=axes(), cmds=st.lists(limit_commands, min_size=1, max_size=10),
        lo=st.floats(-150.0, -5.0), hi=st.floats(5.0, 150.0))
 # found by this property: a slower MC_MoveAbsolute to the limit position overriding the limit braking
-# of a PTO axis passes the limit (see test_override_during_limit_braking_never_passes_limit_5_4_4_3)
+# of a PTO axis passes the limit (see test_s7_1200_override_during_limit_braking_never_passes_limit_5_4_4_3)
 @example(cfg=Axis(kind="pto", vmax=20.0, vmin=2.0, acc=103.0, dec=17.0, jerk=0.0),
          cmds=[("vel", 0, False, 1.0, 1, 0, False), ("abs", 25, False, 0.0, 0.0), ("abs", 0, False, 5.0, 0.0)],
          lo=-5.0, hi=5.0)
-def test_random_commands_with_sw_limits(cfg, cmds, lo, hi):
+def test_kernel_random_commands_with_sw_limits(cfg, cmds, lo, hi):
     """§5.4.4.3 / §12.8 / §12.4: with active SW limit switches on a homed axis and unchanged dynamics,
     every motion is stopped at the latest at the limit with the configured deceleration: the setpoint
     never leaves [MinPosition, MaxPosition], the only errors are 16#8001/16#8002 ErrorInfo 16#000E
@@ -308,7 +308,7 @@ def test_random_commands_with_sw_limits(cfg, cmds, lo, hi):
 # the jerk limit on overshoots and returns at velocities below the start/stop velocity
 @example(cfg=Axis(kind="pto", vmax=20.0, vmin=1.0, acc=10.0, dec=10.0, jerk=50.0),
          cmds=[("vel", 0, True, 0.0, 1, 0, False), ("rel", 30, True, 0.0, 0.0)])
-def test_pto_velocity_zero_or_at_least_start_stop(cfg, cmds):
+def test_kernel_pto_velocity_zero_or_at_least_start_stop(cfg, cmds):
     """§5.4.4.4: "The start/stop velocity is the minimum permissible velocity of the axis" -- the
     setpoint velocity of a PTO axis is 0 or at least DynamicLimits.MinVelocity in every servo cycle,
     for any sequence of valid commands (and all invariants of the first property hold)."""

@@ -1,4 +1,4 @@
-"""Retentive data (§11.1.3 modes 6/7: StatusSensor.AbsEncoderOffset) is written atomically: a crash during
+"""Retentive data (S7-1200 V6 §11.1.3 modes 6/7: StatusSensor.AbsEncoderOffset) is written atomically: a crash during
 the write keeps the previous file intact."""
 from __future__ import annotations
 
@@ -26,7 +26,7 @@ def adjust(state_file, position):
     return axis
 
 
-def test_offset_survives_a_new_controller_11_1_3(tmp_path):
+def test_kernel_offset_survives_a_new_controller_11_1_3(tmp_path):
     sf = tmp_path / "machine.state.json"
     axis = adjust(sf, 10.0)
     data = json.loads(sf.read_text())
@@ -36,7 +36,7 @@ def test_offset_survives_a_new_controller_11_1_3(tmp_path):
     assert again.StatusBits.HomingDone
 
 
-def test_crash_during_write_keeps_the_old_file(tmp_path, monkeypatch):
+def test_kernel_crash_during_write_keeps_the_old_file(tmp_path, monkeypatch):
     sf = tmp_path / "machine.state.json"
     adjust(sf, 10.0)
     before = sf.read_bytes()
@@ -50,7 +50,7 @@ def test_crash_during_write_keeps_the_old_file(tmp_path, monkeypatch):
     assert [p.name for p in tmp_path.iterdir()] == [sf.name]   # no temporary file left behind
 
 
-def test_unreadable_state_file_is_a_clear_error(tmp_path):
+def test_kernel_unreadable_state_file_is_a_clear_error(tmp_path):
     sf = tmp_path / "broken.state.json"
     sf.write_text("{not json")
     with pytest.raises(ValueError, match="broken.state.json"):
@@ -88,7 +88,7 @@ def state(tmp_path, entry, name="machine.state.json"):
     ({"AbsEncoderOffset": 10.0}, "missing HomingDone"),
     ([10.0, True], "not a table"),
 ])
-def test_invalid_retentive_data_is_not_used_defect_8_s11_1_3(tmp_path, entry, what):
+def test_kernel_invalid_retentive_data_is_not_used_defect_8_s11_1_3(tmp_path, entry, what):
     """An invalid entry (NaN offset, "false" as text, ...) is reported and the axis starts as not adjusted
     and not homed, with a finite position: it is never taken as homed (§11.1.3 modes 6/7)."""
     sf = state(tmp_path, entry)
@@ -101,7 +101,7 @@ def test_invalid_retentive_data_is_not_used_defect_8_s11_1_3(tmp_path, entry, wh
     assert axis.StatusSensor.AbsEncoderOffset == 0.0
 
 
-def test_valid_retentive_data_loads_without_warning_s11_1_3(tmp_path):
+def test_kernel_valid_retentive_data_loads_without_warning_s11_1_3(tmp_path):
     sf = state(tmp_path, ADJUSTED)
     with warnings.catch_warnings():
         warnings.simplefilter("error")
@@ -110,14 +110,14 @@ def test_valid_retentive_data_loads_without_warning_s11_1_3(tmp_path):
 
 
 @pytest.mark.parametrize("text", ['[1, 2]', '"axes"', '{"format": "other", "axes": {}}', "[" * 100000])
-def test_a_file_that_is_no_state_file_is_a_clear_error_defect_8(tmp_path, text):
+def test_kernel_a_file_that_is_no_state_file_is_a_clear_error_defect_8(tmp_path, text):
     sf = tmp_path / "other.json"
     sf.write_text(text)
     with pytest.raises(ValueError, match="other.json"):
         Controller(state_file=str(sf))
 
 
-def test_the_directory_is_flushed_after_the_rename_defect_8(tmp_path, monkeypatch):
+def test_kernel_the_directory_is_flushed_after_the_rename_defect_8(tmp_path, monkeypatch):
     flushed = []
     real = os.fsync
 
@@ -142,7 +142,7 @@ while True:
 """
 
 
-def test_kill_during_writes_leaves_old_or_new_content_and_no_orphans_defect_8(tmp_path):
+def test_kernel_kill_during_writes_leaves_old_or_new_content_and_no_orphans_defect_8(tmp_path):
     """A writer SIGKILLed at random moments of a stream of saves: the file is always one complete
     version (all axes of one save), and the next load/save removes what the killed writer left."""
     sf = tmp_path / "machine.state.json"
@@ -174,7 +174,7 @@ def test_kill_during_writes_leaves_old_or_new_content_and_no_orphans_defect_8(tm
     assert [p.name for p in tmp_path.iterdir()] == [sf.name]
 
 
-def test_a_state_file_that_never_ends_is_a_clear_error_defect_8(tmp_path):
+def test_kernel_a_state_file_that_never_ends_is_a_clear_error_defect_8(tmp_path):
     """Review of issue 8: the size limit looked at st_size only (0 for a device), so a state_file that is an
     endless device (/dev/zero, allowed with --allow-outside-paths) was read until memory ran out."""
     import threading

@@ -9,7 +9,7 @@ from plcmotion import ConfigurationError, Controller, ControllerStopped, Program
 from plcmotion.s7_1200 import MC_MoveRelative, MC_Power
 
 
-def test_cycles_and_virtual_time():
+def test_kernel_cycles_and_virtual_time():
     ctl = Controller(servo_cycle=0.001, app_cycle=0.004)
     calls = []
     servo = []
@@ -25,12 +25,12 @@ def test_cycles_and_virtual_time():
 
 
 @pytest.mark.parametrize("servo, app", [(0.001, 0.0025), (0.0, 0.004), (0.001, -1.0), (float("nan"), 0.004)])
-def test_invalid_cycles_rejected(servo, app):
+def test_kernel_invalid_cycles_rejected(servo, app):
     with pytest.raises(ValueError):
         Controller(servo_cycle=servo, app_cycle=app)
 
 
-def test_run_until_returns_time_and_times_out():
+def test_kernel_run_until_returns_time_and_times_out():
     ctl = Controller()
     t = ctl.run_until(lambda: ctl.time >= 0.05, timeout=1.0)
     assert t == pytest.approx(0.052)
@@ -38,8 +38,8 @@ def test_run_until_returns_time_and_times_out():
         ctl.run_until(lambda: False, timeout=0.1)
 
 
-def test_faulty_program_stops_controller_and_disables_axes():
-    """A program that raises puts the controller in STOP with the reason; TOs are disabled (§2.2.7.4)."""
+def test_kernel_faulty_program_stops_controller_and_disables_axes():
+    """A program that raises puts the controller in STOP with the reason; TOs are disabled (S7-1200 V6 §2.2.7.4)."""
     ctl = Controller()
     axis = ctl.add_positioning_axis("Axis_1")
     power = MC_Power()
@@ -68,7 +68,7 @@ def test_faulty_program_stops_controller_and_disables_axes():
     assert ctl.mode == "RUN" and ctl.stop_reason is None
 
 
-def test_unknown_instruction_input_is_a_program_error():
+def test_kernel_unknown_instruction_input_is_a_program_error():
     ctl = Controller()
     axis = ctl.add_positioning_axis("Axis_1")
     move = MC_MoveRelative()
@@ -101,14 +101,14 @@ def _trace_run(servo_type: int) -> list[tuple[float, ...]]:
 
 
 @pytest.mark.parametrize("actor", [1, 2])
-def test_same_program_same_trace_bit_for_bit(actor):
+def test_kernel_same_program_same_trace_bit_for_bit(actor):
     a, b = _trace_run(actor), _trace_run(actor)
     assert len(a) == 3000
     assert a == b                                      # exact float equality, not approx
     assert all(math.isfinite(x) for row in a for x in row)
 
 
-def test_axis_configuration_errors_name_path_value_and_range():
+def test_kernel_axis_configuration_errors_name_path_value_and_range():
     ctl = Controller()
     with pytest.raises(ConfigurationError) as info:
         ctl.add_positioning_axis("Axis_1", {"DynamicLimits": {"MaxVelocity": -5.0},
@@ -122,8 +122,8 @@ def test_axis_configuration_errors_name_path_value_and_range():
         ctl.add_positioning_axis("Axis 1")
 
 
-def test_tag_access_by_attribute_and_path():
-    """Tags of §12.9 read as attributes and by path; access rights are enforced."""
+def test_kernel_tag_access_by_attribute_and_path():
+    """Tags of S7-1200 V6 §12.9 read as attributes and by path; access rights are enforced."""
     ctl = Controller()
     axis = ctl.add_positioning_axis("Axis_1", {"DynamicDefaults": {"Jerk": 1234.0},
                                                "Sensor[1]": {"ActiveHoming": {"Mode": 2}}})

@@ -43,7 +43,7 @@ def _enabled_controller():
                                  GeneratorExit(), BaseException("plain base")],
                          ids=["str-raises", "str-raises-SystemExit", "sys.exit(0)", "sys.exit(text)",
                               "GeneratorExit", "BaseException"])
-def test_defect6_any_program_exception_stops_the_controller(exc):
+def test_kernel_defect6_any_program_exception_stops_the_controller(exc):
     """Defect 6: a program raising an exception whose __str__ raises, SystemExit, GeneratorExit or another
     BaseException: step() returns, the controller is in STOP with the program's name and the exception type
     in stop_reason, the axis lost its enable (S7-1200 V6 §2.2.7.4) and a ProgramErrorWarning says so."""
@@ -65,7 +65,7 @@ def test_defect6_any_program_exception_stops_the_controller(exc):
         ctl.run_until(lambda: False, timeout=1.0)
 
 
-def test_defect6_keyboard_interrupt_reaches_the_user_after_stop():
+def test_kernel_defect6_keyboard_interrupt_reaches_the_user_after_stop():
     """Defect 6: Ctrl-C while a program runs: the controller goes to STOP first (the program was cut off
     half-way), then KeyboardInterrupt reaches the person at the terminal."""
     ctl, axis = _enabled_controller()
@@ -82,7 +82,7 @@ def test_defect6_keyboard_interrupt_reaches_the_user_after_stop():
 
 @pytest.mark.parametrize("exc", [Unprintable(), SystemExit(3), GeneratorExit()],
                          ids=["str-raises", "SystemExit", "GeneratorExit"])
-def test_defect6_servo_hook_faults_stop_the_controller(exc):
+def test_kernel_defect6_servo_hook_faults_stop_the_controller(exc):
     """Defect 6 (`_run_hooks`): a servo hook is user code too; any exception from it -> STOP with reason."""
     ctl, axis = _enabled_controller()
 
@@ -96,7 +96,7 @@ def test_defect6_servo_hook_faults_stop_the_controller(exc):
     assert not axis.StatusBits.Enable
 
 
-def test_defect6_keyboard_interrupt_in_a_servo_hook():
+def test_kernel_defect6_keyboard_interrupt_in_a_servo_hook():
     ctl, _ = _enabled_controller()
     ctl.on_pre_servo(lambda t: (_ for _ in ()).throw(KeyboardInterrupt()))
     with pytest.raises(KeyboardInterrupt):
@@ -105,7 +105,7 @@ def test_defect6_keyboard_interrupt_in_a_servo_hook():
 
 
 # --- cycle-time watchdog ------------------------------------------------------------------------------------
-def test_defect6_watchdog_reports_a_slow_program_and_keeps_virtual_time():
+def test_kernel_defect6_watchdog_reports_a_slow_program_and_keeps_virtual_time():
     """Defect 6: a program that takes longer than cycle_watchdog x app_cycle (wall clock) is counted and
     warned about; by default the controller stays in RUN and virtual time is unaffected (deterministic)."""
     ctl = Controller(servo_cycle=0.001, app_cycle=0.002, cycle_watchdog=15.0)   # limit 30 ms
@@ -130,7 +130,7 @@ def test_defect6_watchdog_reports_a_slow_program_and_keeps_virtual_time():
     assert ctl.time == pytest.approx(0.012)           # virtual time: one application cycle, as always
 
 
-def test_defect6_watchdog_stop_like_s7_overflow():
+def test_kernel_defect6_watchdog_stop_like_s7_overflow():
     """A CPU goes to STOP when its cycle time is exceeded (S7-1200 V6 §2.2.7.3, Overflows, for the motion
     OBs).  With cycle_watchdog_stop=True an
     overrun does the same: STOP with the reason, axes disabled."""
@@ -147,7 +147,7 @@ def test_defect6_watchdog_stop_like_s7_overflow():
     assert not axis.StatusBits.Enable
 
 
-def test_defect6_watchdog_off():
+def test_kernel_defect6_watchdog_off():
     ctl = Controller(cycle_watchdog=None)
     ctl.program(lambda: time.sleep(0.01))
     with warnings.catch_warnings():
@@ -159,7 +159,7 @@ def test_defect6_watchdog_off():
 
 
 @pytest.mark.parametrize("off", [0, None])
-def test_defect6_watchdog_stop_without_a_watchdog_is_refused(off):
+def test_kernel_defect6_watchdog_stop_without_a_watchdog_is_refused(off):
     """Issue 8 review: STOP on overruns with the watchdog off was accepted and silently did nothing."""
     with pytest.raises(ValueError, match="cycle_watchdog_stop = True needs a cycle watchdog"):
         Controller(cycle_watchdog=off, cycle_watchdog_stop=True)
@@ -167,12 +167,12 @@ def test_defect6_watchdog_stop_without_a_watchdog_is_refused(off):
 
 
 @pytest.mark.parametrize("value", [0.5, -1.0, float("nan"), float("inf"), "10", True, 1e9])
-def test_defect6_watchdog_multiple_validated(value):
+def test_kernel_defect6_watchdog_multiple_validated(value):
     with pytest.raises(ValueError, match="cycle_watchdog"):
         Controller(cycle_watchdog=value)
 
 
-def test_defect11_injected_cycle_overrun_is_deterministic():
+def test_kernel_defect11_injected_cycle_overrun_is_deterministic():
     """Defect 11 (application-cycle overrun for virtual commissioning): inject_cycle_overrun(n) makes the next
     n application cycles count as overruns, whatever the wall clock says; with cycle_watchdog_stop the
     controller goes to STOP at the first one."""
@@ -201,13 +201,13 @@ def test_defect11_injected_cycle_overrun_is_deterministic():
 
 
 @pytest.mark.parametrize("kw", [{"cycles": 0}, {"cycles": 1.5}, {"duration": 0.01}, {"duration": float("nan")}])
-def test_defect11_inject_cycle_overrun_validated(kw):
+def test_kernel_defect11_inject_cycle_overrun_validated(kw):
     ctl = Controller(cycle_watchdog=10.0)             # limit 40 ms: 10 ms would be no overrun
     with pytest.raises(ValueError):
         ctl.inject_cycle_overrun(**kw)
 
 
-def test_defect6_watchdog_from_project_file(tmp_path):
+def test_kernel_defect6_watchdog_from_project_file(tmp_path):
     from plcmotion.project import ProjectError, load_project
 
     good = tmp_path / "p.toml"
@@ -224,7 +224,7 @@ def test_defect6_watchdog_from_project_file(tmp_path):
             load_project(bad)
 
 
-def test_defect6_hook_fault_with_warnings_as_errors_is_not_an_internal_error():
+def test_kernel_defect6_hook_fault_with_warnings_as_errors_is_not_an_internal_error():
     """With a filter that turns warnings into errors, a faulty hook's ProgramErrorWarning reaches the caller;
     the controller is in STOP for the hook, not for an 'internal error in the servo cycle'."""
     ctl, _ = _enabled_controller()
@@ -240,7 +240,7 @@ def test_defect6_hook_fault_with_warnings_as_errors_is_not_an_internal_error():
     assert ctl.mode == "RUN"
 
 
-def test_defect6_watchdog_default_reports_only():
+def test_kernel_defect6_watchdog_default_reports_only():
     """Default: watchdog time 100 application cycles (0.4 s at 4 ms), report only (virtual time and the
     controller's mode never depend on the wall clock unless cycle_watchdog_stop is chosen)."""
     ctl = Controller()

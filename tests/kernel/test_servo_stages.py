@@ -55,26 +55,26 @@ def move(axis, distance: float, velocity: float = 200.0) -> Job:
 
 
 # --- the list of stages -------------------------------------------------------------------------------------------
-def test_stage_names_are_public_and_in_the_documented_order():
+def test_kernel_stage_names_are_public_and_in_the_documented_order():
     ctl = Controller()
     assert ctl.servo_stages == DOCUMENTED
     assert len(set(ctl.servo_stages)) == len(ctl.servo_stages)
 
 
-def test_the_order_the_issue_asks_for_holds():
+def test_kernel_the_order_the_issue_asks_for_holds():
     names = Controller().servo_stages
     positions = [names.index(stage) for stage in REQUIRED_ORDER]
     assert positions == sorted(positions)
     assert names[0] == "read_drives" and names[-1] == "post_servo"
 
 
-def test_every_stage_is_described_for_docs_and_trace_tools():
+def test_kernel_every_stage_is_described_for_docs_and_trace_tools():
     described = servo_cycle.describe()
     assert [name for name, _ in described] == list(DOCUMENTED)
     assert all(len(text) > 20 for _, text in described)
 
 
-def test_a_malformed_stage_table_is_refused():
+def test_kernel_a_malformed_stage_table_is_refused():
     def noop(ctl, t):
         pass
     for bad in ((servo_cycle.ServoStage("x", noop), servo_cycle.ServoStage("x", noop)),     # name twice
@@ -85,7 +85,7 @@ def test_a_malformed_stage_table_is_refused():
 
 
 # --- what a hook sees, by its place in the cycle ---------------------------------------------------------------------
-def test_pre_servo_sees_this_cycles_actuals_but_last_cycles_setpoints_and_commands():
+def test_kernel_pre_servo_sees_this_cycles_actuals_but_last_cycles_setpoints_and_commands():
     ctl = Controller()
     axis = enabled_axis(ctl)
     i = axis.index
@@ -114,7 +114,7 @@ def test_pre_servo_sees_this_cycles_actuals_but_last_cycles_setpoints_and_comman
     assert sum(pre[k][3] != post[k - 1][3] for k in range(1, len(pre))) > 200
 
 
-def test_post_servo_sees_this_cycles_setpoint_and_drive_command():
+def test_kernel_post_servo_sees_this_cycles_setpoint_and_drive_command():
     """The setpoint a post hook sees at t lies on the planned move at t (it is not one cycle old), and the
     speed setpoint word already on its way to the drive was made from this cycle's command."""
     ctl = Controller()
@@ -139,7 +139,7 @@ def test_post_servo_sees_this_cycles_setpoint_and_drive_command():
     assert all(w0 <= w1 for (_, w0), (_, w1) in zip(pairs, pairs[1:]))
 
 
-def test_pre_servo_sees_the_inputs_of_this_cycle():
+def test_kernel_pre_servo_sees_the_inputs_of_this_cycle():
     """The machine model writes the inputs from the positions read in this cycle before the pre-servo hooks."""
     ctl = Controller()
     axis = enabled_axis(ctl)
@@ -165,7 +165,7 @@ def _boom(*args, **kwargs):
     (monitoring, "standstill", "monitor"),
     (ServoDrives, "write", "write_drives"),
 ])
-def test_a_failing_stage_stops_the_controller_and_names_the_stage(monkeypatch, owner, attribute, stage):
+def test_kernel_a_failing_stage_stops_the_controller_and_names_the_stage(monkeypatch, owner, attribute, stage):
     ctl = Controller()
     axis = enabled_axis(ctl)
     move(axis, 100.0)
@@ -186,7 +186,7 @@ def test_a_failing_stage_stops_the_controller_and_names_the_stage(monkeypatch, o
     assert len(after) == n and ctl.time > t
 
 
-def test_deferred_work_that_fails_names_its_stage():
+def test_kernel_deferred_work_that_fails_names_its_stage():
     ctl = Controller()
     enabled_axis(ctl)
     ctl._defer(_boom)
@@ -194,7 +194,7 @@ def test_deferred_work_that_fails_names_its_stage():
     assert ctl.mode == "STOP" and "stage 'accept_jobs'" in ctl.stop_reason
 
 
-def test_a_defect_in_one_axis_stops_only_that_axis(monkeypatch):
+def test_kernel_a_defect_in_one_axis_stops_only_that_axis(monkeypatch):
     ctl = Controller()
     a = enabled_axis(ctl, "A")
     b = enabled_axis(ctl, "B")
@@ -218,7 +218,7 @@ def test_a_defect_in_one_axis_stops_only_that_axis(monkeypatch):
     assert b.state == "enabled"
 
 
-def test_a_raising_hook_stops_the_controller_as_a_program_fault_and_the_cycle_completes():
+def test_kernel_a_raising_hook_stops_the_controller_as_a_program_fault_and_the_cycle_completes():
     from plcmotion import ProgramErrorWarning
     ctl = Controller()
     axis = enabled_axis(ctl)

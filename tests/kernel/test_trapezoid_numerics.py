@@ -15,7 +15,7 @@ def _samples(profile, n=2001):
     return [profile.at(t) for t in ts]
 
 
-def test_tiny_acceleration_cruises_and_brakes_onto_the_target():
+def test_kernel_tiny_acceleration_cruises_and_brakes_onto_the_target():
     p, v = -6.958255661393161, -48.873257968615015
     target = -91.31988089920466
     lim = Limits(velocity=50.30190380482262, acceleration=1e-300, deceleration=14.156883166566857, jerk=INF)
@@ -29,7 +29,7 @@ def test_tiny_acceleration_cruises_and_brakes_onto_the_target():
     assert abs(prof.t_end - abs(v) / 14.156883166566857) < 1e-6
 
 
-def test_ordinary_trapezoid_is_unchanged():
+def test_kernel_ordinary_trapezoid_is_unchanged():
     """The fallback only replaces what used to raise: a normal trapezoid keeps its three phases."""
     lim = Limits(velocity=100.0, acceleration=1000.0, deceleration=500.0, jerk=INF)
     prof = Planner().position(0.0, 0.0, 0.0, 0.0, 100.0, lim)

@@ -63,7 +63,7 @@ def only_problem(path: Path) -> str:
 
 # --- a valid file ---------------------------------------------------------------------------------------
 
-def test_valid_file_loads_with_the_configured_values(tmp_path):
+def test_project_valid_file_loads_with_the_configured_values(tmp_path):
     path = write(tmp_path, VALID)
     assert check_project(path) == []
     ctl = load_project(path)
@@ -89,7 +89,7 @@ def test_valid_file_loads_with_the_configured_values(tmp_path):
         "signals": ["Axis_1.Position", "Axis_2.ActualPosition", "Axis_2.StatusBits.Enable"], "every": 2}}
 
 
-def test_defaults_without_controller_and_trace_sections(tmp_path):
+def test_project_defaults_without_controller_and_trace_sections(tmp_path):
     path = write(tmp_path, '[axes.X]\n"Actor.Type" = 2\n')
     ctl = load_project(str(path))
     assert (ctl.servo_cycle, ctl.app_cycle) == (0.001, 0.004)
@@ -97,40 +97,40 @@ def test_defaults_without_controller_and_trace_sections(tmp_path):
     assert ctl.axes["X"].DynamicLimits.MaxVelocity == 250.0
 
 
-def test_empty_tables_of_tag_groups_are_allowed(tmp_path):
+def test_project_empty_tables_of_tag_groups_are_allowed(tmp_path):
     path = write(tmp_path, '[axes.A]\n[axes.A.Homing]\n[axes.A."Sensor[1]".PassiveHoming]\n[axes.B]\n')
     assert list(load_project(path).axes) == ["A", "B"]
 
 
-def test_empty_file_gives_a_controller_without_axes(tmp_path):
+def test_project_empty_file_gives_a_controller_without_axes(tmp_path):
     ctl = load_project(write(tmp_path, ""))
     assert ctl.axes == {}
 
 
-def test_package_level_load_project(tmp_path):
+def test_project_package_level_load_project(tmp_path):
     ctl = plcmotion.load_project(write(tmp_path, VALID))
     assert isinstance(ctl, plcmotion.Controller)
 
 
-def test_loaded_controller_runs(tmp_path):
+def test_project_loaded_controller_runs(tmp_path):
     ctl = load_project(write(tmp_path, VALID))
     ctl.run(0.1)
     assert ctl.mode == "RUN" and ctl.time == pytest.approx(0.102)
 
 
 @pytest.mark.parametrize("name", sorted(p.name for p in EXAMPLES.glob("*.toml")))
-def test_example_projects_are_valid(name):
+def test_project_example_projects_are_valid(name):
     assert check_project(EXAMPLES / name) == []
     ctl = load_project(EXAMPLES / name)
     assert ctl.axes and ctl.project["trace"]["signals"]
 
 
-def test_examples_exist():
+def test_project_examples_exist():
     names = {p.name for p in EXAMPLES.glob("*.toml")}
     assert {"pto_stepper.toml", "profidrive_servo.toml"} <= names
 
 
-def test_example_servo_velocity_is_reachable_with_max_speed():
+def test_project_example_servo_velocity_is_reachable_with_max_speed():
     axis = load_project(EXAMPLES / "profidrive_servo.toml").axes["Spindle"]
     drive = axis.Actor.DriveParameter
     assert axis.Actor.Type == 1 and drive.ReferenceSpeed == 3000.0
@@ -138,7 +138,7 @@ def test_example_servo_velocity_is_reachable_with_max_speed():
     assert axis.Sensor[1].System == 1                               # rotary encoder
 
 
-def test_example_stepper_mechanics():
+def test_project_example_stepper_mechanics():
     axis = load_project(EXAMPLES / "pto_stepper.toml").axes["Shuttle"]
     assert axis.Actor.Type == 2
     assert axis.Mechanics.LeadScrew == 5.0
@@ -149,7 +149,7 @@ def test_example_stepper_mechanics():
 
 # --- reading the file -----------------------------------------------------------------------------------
 
-def test_missing_file(tmp_path):
+def test_project_missing_file(tmp_path):
     path = tmp_path / "nowhere.toml"
     assert check_project(path) == [f"{path}: file not found"]
     with pytest.raises(ProjectError) as err:
@@ -157,18 +157,18 @@ def test_missing_file(tmp_path):
     assert err.value.problems == [f"{path}: file not found"]
 
 
-def test_directory_instead_of_file(tmp_path):
+def test_project_directory_instead_of_file(tmp_path):
     assert check_project(tmp_path) == [f"{tmp_path}: is a directory, not a project file"]
 
 
-def test_file_that_is_not_utf8(tmp_path):
+def test_project_file_that_is_not_utf8(tmp_path):
     path = tmp_path / "latin1.toml"
     path.write_bytes('[axes.Achse_1]\n# Stra\xdfe\n'.encode("latin-1"))
     message = only_problem(path)
     assert message.startswith(f"{path}: not UTF-8 text")
 
 
-def test_toml_syntax_error_names_line_and_column(tmp_path):
+def test_project_toml_syntax_error_names_line_and_column(tmp_path):
     path = write(tmp_path, """
         [axes.Axis_1]
         "Actor.Type" = 2
@@ -333,7 +333,7 @@ CASES = {
 
 
 @pytest.mark.parametrize("case", list(CASES))
-def test_each_problem_gives_one_clear_message(tmp_path, case):
+def test_project_each_problem_gives_one_clear_message(tmp_path, case):
     text, key_and_value, allowed = CASES[case]
     path = write(tmp_path, text, name="case.toml")
     message = only_problem(path)
@@ -345,13 +345,13 @@ def test_each_problem_gives_one_clear_message(tmp_path, case):
     assert message in str(err.value)
 
 
-def test_message_for_a_value_out_of_range(tmp_path):
+def test_project_message_for_a_value_out_of_range(tmp_path):
     path = write(tmp_path, "[axes.Axis_1.DynamicLimits]\nMaxVelocity = -5.0\n", name="x.toml")
     assert check_project(path) == [
         f"{path}: axes.Axis_1.DynamicLimits.MaxVelocity = -5.0: allowed: real in (0.0, 1000000000000.0]"]
 
 
-def test_relative_path_is_named_as_given(tmp_path, monkeypatch):
+def test_project_relative_path_is_named_as_given(tmp_path, monkeypatch):
     write(tmp_path, "[axes.Axis_1.DynamicLimits]\nMaxVelocity = -5.0\n", name="x.toml")
     monkeypatch.chdir(tmp_path)
     assert check_project("x.toml")[0].startswith("x.toml: axes.Axis_1.DynamicLimits.MaxVelocity = -5.0")
@@ -390,7 +390,7 @@ every = -1
 """
 
 
-def test_all_problems_are_reported_at_once(tmp_path):
+def test_project_all_problems_are_reported_at_once(tmp_path):
     path = write(tmp_path, MANY, name="many.toml")
     problems = check_project(path)
     expected = [
@@ -420,7 +420,7 @@ def test_all_problems_are_reported_at_once(tmp_path):
     assert all(p in str(error) for p in problems)
 
 
-def test_valid_axes_of_a_bad_file_are_still_checked_against_a_bad_controller(tmp_path):
+def test_project_valid_axes_of_a_bad_file_are_still_checked_against_a_bad_controller(tmp_path):
     path = write(tmp_path, """
         [controller]
         servo_cycle = "fast"
@@ -437,7 +437,7 @@ def test_valid_axes_of_a_bad_file_are_still_checked_against_a_bad_controller(tmp
     "[[axes.A]]\n", "[axes.A]\n\"Actor.Type\" = 1979-05-27\n", "[trace]\nsignals = [[1]]\n",
     "[axes.A]\n\"Actor.Type\" = nan\n", "[axes.A]\n\"DynamicLimits.MaxVelocity\" = inf\n",
 ])
-def test_odd_files_give_messages_not_tracebacks(tmp_path, text):
+def test_project_odd_files_give_messages_not_tracebacks(tmp_path, text):
     path = write(tmp_path, text)
     problems = check_project(path)
     assert problems and all(p.startswith(f"{path}: ") for p in problems)
@@ -446,7 +446,7 @@ def test_odd_files_give_messages_not_tracebacks(tmp_path, text):
 
 
 @pytest.mark.parametrize("value", ['"500"', "true"])
-def test_quoted_number_or_bool_for_a_real_tag_is_rejected(tmp_path, value):
+def test_project_quoted_number_or_bool_for_a_real_tag_is_rejected(tmp_path, value):
     path = write(tmp_path, f"[axes.Axis_1.DynamicLimits]\nMaxVelocity = {value}\n")
     message = only_problem(path)
     assert message.startswith(f"{path}: axes.Axis_1.DynamicLimits.MaxVelocity = {value}: allowed: real")
@@ -543,7 +543,7 @@ DEFECT_7 = {
 
 
 @pytest.mark.parametrize("case", list(DEFECT_7))
-def test_configuration_that_must_not_be_accepted_defect_7(tmp_path, case):
+def test_project_configuration_that_must_not_be_accepted_defect_7(tmp_path, case):
     """Issue 8 defect 7: each gives one clear problem naming the file, the key path and what is allowed."""
     text, key_and_value, allowed = DEFECT_7[case]
     path = tmp_path / "case.toml"
@@ -555,7 +555,7 @@ def test_configuration_that_must_not_be_accepted_defect_7(tmp_path, case):
         load_project(path)
 
 
-def test_valid_cycles_at_the_ends_of_the_ranges_load_defect_7(tmp_path):
+def test_project_valid_cycles_at_the_ends_of_the_ranges_load_defect_7(tmp_path):
     path = write(tmp_path, "[controller]\nservo_cycle = 0.0001\napp_cycle = 1.0\n")
     ctl = load_project(path)
     assert ctl.servo_cycle == 0.0001 and ctl.app_cycle == pytest.approx(1.0)
@@ -563,7 +563,7 @@ def test_valid_cycles_at_the_ends_of_the_ranges_load_defect_7(tmp_path):
     assert load_project(path).servo_cycle == 0.032
 
 
-def test_valid_cam_and_command_table_still_load_defect_7(tmp_path):
+def test_project_valid_cam_and_command_table_still_load_defect_7(tmp_path):
     path = write(tmp_path, T1500 + "[cams.C]\npoints = [[0.0, 0.0], [90, 1.0], [180.0, 0.0]]\n"
                  "segments = [{ xmin = 200.0, xmax = 300.0, a0 = 0.0, a1 = 0.01 }]\ninterpolation_mode = 1\n")
     assert check_project(path) == []
@@ -573,7 +573,7 @@ def test_valid_cam_and_command_table_still_load_defect_7(tmp_path):
     assert ctl.command_tables["T"].Command[3].Duration == 64800.0
 
 
-def test_paths_outside_the_project_folder_need_the_option_defect_8(tmp_path):
+def test_project_paths_outside_the_project_folder_need_the_option_defect_8(tmp_path):
     project = tmp_path / "project"
     project.mkdir()
     (tmp_path / "knife.csv").write_text("0,0\n180,50\n360,0\n")
@@ -592,7 +592,7 @@ def test_paths_outside_the_project_folder_need_the_option_defect_8(tmp_path):
     assert check_project(path) == []
 
 
-def test_a_link_that_points_out_of_the_project_folder_is_refused_defect_8(tmp_path):
+def test_project_a_link_that_points_out_of_the_project_folder_is_refused_defect_8(tmp_path):
     project = tmp_path / "project"
     project.mkdir()
     (tmp_path / "secret.csv").write_text("0,0\n1,1\n")
@@ -601,7 +601,7 @@ def test_a_link_that_points_out_of_the_project_folder_is_refused_defect_8(tmp_pa
     assert "allowed: a file in the project's folder" in only_problem(path)
 
 
-def test_a_cam_csv_that_is_no_point_list_is_not_echoed_defect_8(tmp_path):
+def test_project_a_cam_csv_that_is_no_point_list_is_not_echoed_defect_8(tmp_path):
     """The error names the line and the reason, never the content of the file."""
     (tmp_path / "notes.csv").write_text("root:x:0:0:root:/root:/bin/bash\nhunter2:secret-token-1234\n")
     path = write(tmp_path, T1500 + '[cams.C]\ncsv = "notes.csv"\n')
@@ -610,7 +610,7 @@ def test_a_cam_csv_that_is_no_point_list_is_not_echoed_defect_8(tmp_path):
     assert "hunter2" not in message and "secret-token" not in message and "/bin/bash" not in message
 
 
-def test_toml_syntax_error_excerpt_is_bounded(tmp_path):
+def test_project_toml_syntax_error_excerpt_is_bounded(tmp_path):
     path = write(tmp_path, '[axes.A]\n"Actor.Type" = ' + "x" * 5000 + "\n")
     message = only_problem(path)
     assert "line 2" in message and len(message) < 400
@@ -618,7 +618,7 @@ def test_toml_syntax_error_excerpt_is_bounded(tmp_path):
 
 # --- size limits, checked before the expensive work ------------------------------------------------------
 
-def test_a_too_large_project_file_is_refused_at_once_defect_7(tmp_path):
+def test_project_a_too_large_project_file_is_refused_at_once_defect_7(tmp_path):
     from plcmotion.project_rules import MAX_FILE_BYTES
     path = tmp_path / "big.toml"
     path.write_bytes(b"# padding\n" * (MAX_FILE_BYTES // 10 + 1))
@@ -628,7 +628,7 @@ def test_a_too_large_project_file_is_refused_at_once_defect_7(tmp_path):
     assert message.startswith(f"{path}: the file has ") and f"at most {MAX_FILE_BYTES} bytes" in message
 
 
-def test_a_project_file_of_too_many_lines_is_refused_before_parsing_defect_7(tmp_path):
+def test_project_a_project_file_of_too_many_lines_is_refused_before_parsing_defect_7(tmp_path):
     from plcmotion.project_rules import MAX_LINES
     path = write(tmp_path, "".join(f"[axes.A{i}]\n" for i in range(MAX_LINES + 1)))
     started = time.perf_counter()
@@ -637,7 +637,7 @@ def test_a_project_file_of_too_many_lines_is_refused_before_parsing_defect_7(tmp
     assert f"{MAX_LINES + 2} lines; allowed: at most {MAX_LINES} lines" in message
 
 
-def test_too_many_technology_objects_are_refused_before_creating_any_defect_7(tmp_path):
+def test_project_too_many_technology_objects_are_refused_before_creating_any_defect_7(tmp_path):
     path = write(tmp_path, "".join(f"[axes.A{i}]\n" for i in range(1001)) + "[command_tables.T]\n")
     started = time.perf_counter()
     message = only_problem(path)
@@ -650,12 +650,12 @@ def test_too_many_technology_objects_are_refused_before_creating_any_defect_7(tm
     ("[axes.A]\nx = " + "{ y = " * 30 + "1" + " }" * 30 + "\n", "levels deep; allowed: at most 12"),
     ("[trace]\nsignals = [" + ", ".join(['"A.Position"'] * 5000) + "]\n", "a list of 5000 items; allowed: at most 4096"),
 ])
-def test_deep_nesting_and_long_lists_are_refused_defect_7(tmp_path, text, expected):
+def test_project_deep_nesting_and_long_lists_are_refused_defect_7(tmp_path, text, expected):
     path = write(tmp_path, text)
     assert expected in only_problem(path)
 
 
-def test_cli_check_needs_the_flag_for_outside_paths_defect_8(tmp_path, capsys):
+def test_project_cli_check_needs_the_flag_for_outside_paths_defect_8(tmp_path, capsys):
     from plcmotion.cli import main
     project = tmp_path / "project"
     project.mkdir()
@@ -665,21 +665,22 @@ def test_cli_check_needs_the_flag_for_outside_paths_defect_8(tmp_path, capsys):
     assert main(["check", "--allow-outside-paths", str(path)]) == 0
 
 
-def test_an_axis_is_not_its_own_leading_value_s6_1_3(tmp_path):
+def test_project_an_axis_is_not_its_own_leading_value_s6_1_3(tmp_path):
+    """The leading values of a synchronous axis are other technology objects (S7-1500T V5 §6.1.3)."""
     path = write(tmp_path, T1500 + '[axes.M]\n[axes.S]\ntype = "synchronous"\nleading_values = ["S"]\n')
     assert only_problem(path).startswith(f'{path}: axes.S.leading_values: "S" is not a technology object of '
                                          f"this file; allowed: M")
 
 
 @pytest.mark.parametrize("value", ["[]", "{}", "1", "[[1]]"])
-def test_an_axis_type_of_the_wrong_kind_is_a_message_config_fuzz(tmp_path, value):
+def test_project_an_axis_type_of_the_wrong_kind_is_a_message_config_fuzz(tmp_path, value):
     """Found by the config fuzz: ``type = []`` raised TypeError (unhashable) before the checks."""
     path = write(tmp_path, f"[axes.A]\ntype = {value}\n")
     assert only_problem(path).startswith(f"{path}: axes.A.type = {value}: allowed: one of \"positioning\"")
 
 
 @pytest.mark.parametrize("value", ["0", '"M"', "true"])
-def test_leading_values_of_the_wrong_kind_are_a_message_config_fuzz(tmp_path, value):
+def test_project_leading_values_of_the_wrong_kind_are_a_message_config_fuzz(tmp_path, value):
     """Found by the config fuzz: ``leading_values = 0`` raised TypeError (int not iterable)."""
     path = write(tmp_path, T1500 + f'[axes.M]\n[axes.S]\ntype = "synchronous"\nleading_values = {value}\n')
     assert only_problem(path).startswith(f"{path}: axes.S.leading_values = {value}: allowed: a list of names")

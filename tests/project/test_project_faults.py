@@ -40,7 +40,7 @@ def enabled(ctl):
     return axis, power
 
 
-def test_defect11_project_switch_is_placed_with_the_public_api(tmp_path):
+def test_project_defect11_project_switch_is_placed_with_the_public_api(tmp_path):
     """A ``[[switches]]`` entry places a switch at machine positions of an axis (Controller.plant.place_switch):
     a program reads it as the load passes."""
     ctl = load_project(write(tmp_path, AXIS + '''
@@ -64,7 +64,7 @@ name = "part present"
     assert inside and min(inside) >= 10.0 and max(inside) <= 20.0 + 50.0 * 0.0074
 
 
-def test_defect11_project_faults_play_at_their_time(tmp_path):
+def test_project_defect11_project_faults_play_at_their_time(tmp_path):
     """``[[faults]]``: the bus of Axis_1 fails at 0.3 s (16#800C/16#003E, S7-1200 V6 §12.8, remove enable) and is
     back at 0.6 s; a stuck limit switch at 1.0 s (16#8004); the entries run through the public API."""
     ctl = load_project(write(tmp_path, AXIS + '''
@@ -119,7 +119,7 @@ switch = "stuck_actuated"
     ('[[switches]]\ninput = "I0.5"\naxis = "Axis_1"\nlow = inf', "switches[0].low = inf: allowed"),
     ('[[switches]]\ninput = "Q0.5"\naxis = "Axis_1"\nlow = 1.0', "is not an input"),
 ])
-def test_defect11_project_fault_entries_are_checked_with_clear_messages(tmp_path, text, expected):
+def test_project_defect11_project_fault_entries_are_checked_with_clear_messages(tmp_path, text, expected):
     # a top-level key must come before the first table
     path = write(tmp_path, AXIS + "\n" + text + "\n" if text.startswith("[[") else text + "\n" + AXIS)
     problems = check_project(path)
@@ -129,7 +129,7 @@ def test_defect11_project_fault_entries_are_checked_with_clear_messages(tmp_path
         load_project(path)
 
 
-def test_defect11_project_rejects_a_communication_loss_on_an_analog_axis(tmp_path):
+def test_project_defect11_project_rejects_a_communication_loss_on_an_analog_axis(tmp_path):
     path = write(tmp_path, '[axes.Axis_1]\n"Actor.Type" = 0\n[[faults]]\nat = 1\naxis = "Axis_1"\n'
                            'inject = "communication_loss"\n')
     assert any("faults[0]: axis Axis_1: communication_loss needs a PROFIdrive axis" in p
@@ -151,7 +151,7 @@ def _toml(value) -> str:
                                                           "active_high", "name", "x"]),
                                          st.sampled_from(_VALUES), max_size=6), max_size=3),
        section=st.sampled_from(["faults", "switches"]))
-def test_defect11_random_fault_and_switch_entries_never_raise(tmp_path_factory, entries, section):
+def test_project_defect11_random_fault_and_switch_entries_never_raise(tmp_path_factory, entries, section):
     """Config fuzz: whatever the entries hold, checking the file gives messages (or none), never a traceback."""
     body = "".join(f"\n[[{section}]]\n" + "".join(f"{k} = {_toml(v)}\n" for k, v in e.items()) for e in entries)
     path = write(tmp_path_factory.mktemp("p"), AXIS + body)
@@ -159,7 +159,7 @@ def test_defect11_random_fault_and_switch_entries_never_raise(tmp_path_factory, 
     assert all(isinstance(p, str) and p.startswith(str(path)) for p in problems)
 
 
-def test_defect11_docs_project_example_loads(tmp_path):
+def test_project_defect11_docs_project_example_loads(tmp_path):
     """The ``[[switches]]``/``[[faults]]`` example of docs/fault_injection.md is a valid project (with an axis)."""
     import re
 
@@ -171,7 +171,7 @@ def test_defect11_docs_project_example_loads(tmp_path):
     assert [w.split(":")[0] for _, w in ctl.plant.scenario.done] == [f"faults[{i}]" for i in range(4)]
 
 
-def test_defect11_project_faults_on_an_encoder_or_proxy_are_refused(tmp_path):
+def test_project_defect11_project_faults_on_an_encoder_or_proxy_are_refused(tmp_path):
     """Only axes have a simulated drive and load: an external encoder or a leading axis proxy named in
     ``[[faults]]`` or ``[[switches]]`` gives a message, not a silently ignored entry."""
     path = write(tmp_path, '''[controller]
@@ -211,7 +211,7 @@ HUGE = "1" + "0" * 400          # a TOML integer beyond float range
 ], ids=["at-beyond-the-scenario-range", "at-huge-int", "switch-low-huge-int", "chatter-period-huge-int",
         "watchdog-huge-int", "axis-with-a-switch-action", "persistent-with-clear", "period-with-inject",
         "period-without-chatter", "watchdog-stop-without-watchdog"])
-def test_defect11_project_fault_values_found_in_review(tmp_path, text, expected):
+def test_project_defect11_project_fault_values_found_in_review(tmp_path, text, expected):
     """Review of issue 8 (found by the config fuzz once it covered [[faults]]/[[switches]]/cycle_watchdog):
     ``at`` beyond 1e12 s gave a ValueError traceback, an integer beyond float range an OverflowError; a key the
     entry's action does not use (``axis`` of a switch action, ``persistent`` of a clear, ``period`` of an

@@ -218,32 +218,32 @@ FUZZ = settings(max_examples=EXAMPLES, deadline=None, derandomize="PLCMOTION_CON
 
 @FUZZ
 @given(documents)
-def test_random_documents_give_clear_messages(doc):
+def test_project_random_documents_give_clear_messages(doc):
     assert_clear(document(doc))
 
 
 @FUZZ
 @given(one_value_replaced())
-def test_valid_projects_with_one_value_replaced_give_clear_messages(text):
+def test_project_valid_projects_with_one_value_replaced_give_clear_messages(text):
     assert_clear(text)
 
 
 @FUZZ
 @given(edited_text())
-def test_edited_projects_give_clear_messages(text):
+def test_project_edited_projects_give_clear_messages(text):
     assert_clear(text)
 
 
 @FUZZ
 @given(fault_sections())
-def test_switch_fault_and_watchdog_sections_give_clear_messages(text):
+def test_project_switch_fault_and_watchdog_sections_give_clear_messages(text):
     """[[switches]], [[faults]] and the cycle watchdog keys (issue 8 defects 6 and 11, added in review)."""
     assert_clear(text)
 
 
 @settings(max_examples=40, deadline=None, derandomize=True, database=None)
 @given(st.binary(max_size=200))
-def test_random_bytes_give_clear_messages(data):
+def test_project_random_bytes_give_clear_messages(data):
     with tempfile.TemporaryDirectory() as folder:
         path = Path(folder) / "fuzz.toml"
         path.write_bytes(data)
@@ -251,7 +251,7 @@ def test_random_bytes_give_clear_messages(data):
         assert all(p.startswith(f"{path}: ") for p in problems)
 
 
-def test_the_bases_are_valid_projects():
+def test_project_the_bases_are_valid_projects():
     for base in (BASE_1200, BASE_1500):
         assert_clear(document(base))
         with tempfile.TemporaryDirectory() as folder:

@@ -16,7 +16,7 @@ from plcmotion.s7_1200 import MC_MoveVelocity
 @settings(max_examples=12)
 @given(filt=st.sampled_from([0.0004, 0.001, 0.0025, 0.0064, 0.0095]),
        velocity=st.floats(min_value=1.0, max_value=40.0), start=st.floats(min_value=99.0, max_value=99.5))
-def test_decision33_filtered_input_changes_within_filter_plus_one_servo_cycle(filt, velocity, start):
+def test_s7_1200_decision33_filtered_input_changes_within_filter_plus_one_servo_cycle(filt, velocity, start):
     """S7-1200 V6 §5.4.4.5 (input filter, 6.4 ms by default), decision 33: the homing switch input (as the CPU
     sees it, ``ctl.inputs``) changes in the first servo cycle at or after switch edge + filter time, i.e.
     filter time + [0, 1) servo cycle after the load crossed the end of the switch - for any filter time and
@@ -43,7 +43,7 @@ def _pto_axis():
     return ctl, axis
 
 
-def test_12_9_19_pto_simulation_mode_written_with_write_param_gives_8647_at_enable():
+def test_s7_1200_12_9_19_pto_simulation_mode_written_with_write_param_gives_8647_at_enable():
     """S7-1200 V6 §12.9.19: Simulation.Mode has access WP for a PTO axis (MC_WriteParam while the axis is
     disabled, effective at enable, code 2); §12.8 16#8647/16#0001 "simulation is not supported for PTO axes":
     enabling the PTO axis with Mode 1 fails with that code; writing 0 back, MC_Reset and enable work again."""
@@ -80,7 +80,7 @@ def test_12_9_19_pto_simulation_mode_written_with_write_param_gives_8647_at_enab
     assert power.Status and not power.Error and axis.StatusBits.Enable, (power.outputs, axis.alarms)
 
 
-def test_12_9_19_pto_simulation_mode_not_written_while_enabled_nor_directly():
+def test_s7_1200_12_9_19_pto_simulation_mode_not_written_while_enabled_nor_directly():
     """WP: only while the axis is disabled (16#8410/16#002C otherwise, §12.8); not by direct assignment."""
     from plcmotion import TagAccessError
     from plcmotion.s7_1200 import MC_Power, MC_WriteParam
@@ -112,7 +112,7 @@ def _pd_axis(version: int):
     return ctl, axis
 
 
-def test_v7_12_9_20_status_sensor_array_and_adaption_error_read_and_trace():
+def test_s7_1200_v7_12_9_20_status_sensor_array_and_adaption_error_read_and_trace():
     """S7-1200 V7 §12.9.20: the encoder status is the structure StatusSensor[1] (State 0/1/2, CommunicationOK,
     AbsEncoderOffset, AdaptionState); §12.9.22: ErrorBits.AdaptionError (error in the data transfer).  With
     technology_version=7 they read by path and attribute, trace, and MC_ReadParam reads them (RP)."""
@@ -140,7 +140,7 @@ def test_v7_12_9_20_status_sensor_array_and_adaption_error_read_and_trace():
     assert rp.Valid and value.value is False, rp.outputs
 
 
-def test_v6_12_9_22_has_no_status_sensor_array_nor_adaption_error():
+def test_s7_1200_v6_12_9_22_has_no_status_sensor_array_nor_adaption_error():
     """S7-1200 V6 §12.9.22 lists StatusSensor.State/CommunicationOK/AbsEncoderOffset (no array) and V6's
     ErrorBits (§12.9.24) have no AdaptionError: with technology_version=6 these V7 tags do not exist."""
     from plcmotion.trace import Trace, UnknownSignalError

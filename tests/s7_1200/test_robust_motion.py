@@ -30,7 +30,7 @@ def _change_dynamic(rig: Rig, **times: float) -> MC_ChangeDynamic:
 
 # --- defect 1: runaway above MaxVelocity ------------------------------------------------------------------
 @pytest.mark.parametrize("actor", ALL_ACTORS)
-def test_change_dynamic_8ms_into_a_move_relative_keeps_velocity_and_target_defect1(actor):
+def test_s7_1200_change_dynamic_8ms_into_a_move_relative_keeps_velocity_and_target_defect1(actor):
     """Issue 8 defect 1, first example: MaxVelocity 50, Acceleration 500, no jerk limit,
     MC_MoveRelative(445.3, 10), 8 ms later MC_ChangeDynamic with all Change inputs and RampDownTime 9.2:
     it was peak 797 and 16#800D at 623.  The velocity stays within the job's 10 and the move ends at
@@ -54,7 +54,7 @@ def test_change_dynamic_8ms_into_a_move_relative_keeps_velocity_and_target_defec
 
 
 @pytest.mark.parametrize("actor", ALL_ACTORS)
-def test_jerk_write_and_move_velocity_in_the_same_cycle_defect1(actor):
+def test_s7_1200_jerk_write_and_move_velocity_in_the_same_cycle_defect1(actor):
     """Issue 8 defect 1, second example: DynamicDefaults.Jerk written from 1e7 to 1e4 and
     MC_MoveVelocity(40) started in the same cycle.  The issue's peak of 1797 reproduces with
     Acceleration/Deceleration 1e5 (with 500 the acceleration reached is small enough for the new jerk).
@@ -72,7 +72,7 @@ def test_jerk_write_and_move_velocity_in_the_same_cycle_defect1(actor):
 
 
 @pytest.mark.parametrize("actor", SERVO_ACTORS)
-def test_lower_jerk_while_braking_does_not_reverse_defect1(actor):
+def test_s7_1200_lower_jerk_while_braking_does_not_reverse_defect1(actor):
     """A much smaller jerk written while MC_Halt brakes: the halt still ends at standstill without running
     backwards (the old plan would have swung to about -1000 mm/s)."""
     rig = Rig(actor, max_v=50.0, acc=500.0, dec=500.0, jerk=1e5)
@@ -136,7 +136,7 @@ def _move_relative_takes_over_move_velocity(write_tag: bool) -> dict:
 
 
 @pytest.mark.parametrize("write_tag", [False, True], ids=["plain", "tag-write"])
-def test_move_relative_taking_over_move_velocity_keeps_the_configured_jerk_defect1(write_tag):
+def test_s7_1200_move_relative_taking_over_move_velocity_keeps_the_configured_jerk_defect1(write_tag):
     """S7-1200 V6 §11.1.6.1 (MC_MoveRelative aborts a running MC_MoveVelocity), §2.4/§5.4.4.4 (the jerk is
     a configured limit of the motion, MaxVelocity the hard bound): the new profile may overshoot the new
     velocity 0.31 briefly with the configured jerk (as before issue 8), but neither the settling of defect
@@ -152,7 +152,7 @@ def test_move_relative_taking_over_move_velocity_keeps_the_configured_jerk_defec
 @pytest.mark.parametrize("actor", SERVO_ACTORS)
 @pytest.mark.parametrize("times", [dict(RampUpTime=5.0, RampDownTime=5.0, EmergencyRampTime=1e12, JerkTime=1e3),
                                    dict(RampUpTime=1e3, RampDownTime=1e3, EmergencyRampTime=1e6, JerkTime=1e3)])
-def test_power_off_with_stop_mode_2_after_large_ramp_times_defect5(actor, times):
+def test_s7_1200_power_off_with_stop_mode_2_after_large_ramp_times_defect5(actor, times):
     """Issue 8 defect 5: MC_ChangeDynamic with large ramp and jerk times during a move, then
     MC_Power(Enable = FALSE) with StopMode 2 (emergency stop with jerk, S7-1200 V6 §11.1.1): a ruckig
     planning error escaped MC_Power.  Now the axis brakes (never faster, never backwards) without error."""
@@ -169,7 +169,7 @@ def test_power_off_with_stop_mode_2_after_large_ramp_times_defect5(actor, times)
     assert all(math.isfinite(rig.axis.Position) for _ in [0])
 
 
-def test_kernel_exception_becomes_internal_error_not_an_exception_defect5(monkeypatch):
+def test_s7_1200_kernel_exception_becomes_internal_error_not_an_exception_defect5(monkeypatch):
     """Issue 8 defect 5: an unexpected exception of the kernel while an instruction hands it a job is
     the internal error 16#8FFF (S7-1200 V6 §12.8) at the instruction, the axis is stopped, and MC_Power
     shows the alarm; the user program sees no exception."""
@@ -194,7 +194,7 @@ def test_kernel_exception_becomes_internal_error_not_an_exception_defect5(monkey
     assert not fb.Error                                       # then shown for one call only
 
 
-def test_program_errors_still_raise_defect5():
+def test_s7_1200_program_errors_still_raise_defect5():
     """A non-boolean at a BOOL input and an unknown input name stay programming errors (docs/index.md)."""
     rig = Rig(1)
     with pytest.raises(ProgramError):
@@ -218,7 +218,7 @@ HUGE = 10 ** 400
     (lambda: MC_ChangeDynamic(ChangeJerkTime=True, JerkTime=HUGE), (0x840F, 0x0005)),
     (lambda: MC_ChangeDynamic(ChangeEmergency=True, EmergencyRampTime=-HUGE), (0x840E, 0x000A)),
 ])
-def test_real_input_beyond_real_range_gives_the_range_error_defect5(make, error):
+def test_s7_1200_real_input_beyond_real_range_gives_the_range_error_defect5(make, error):
     """S7-1200 V6 §12.8: a position beyond +-1.0E12 is 16#0005/16#0006, a velocity above the maximum
     16#0008, a MC_ChangeDynamic time above 1.0E12 16#0005 (V7 list) or <= 0 16#000A.  A Python int
     beyond the REAL range is such a value (it raised OverflowError)."""
@@ -229,7 +229,7 @@ def test_real_input_beyond_real_range_gives_the_range_error_defect5(make, error)
     assert fb.Error and (fb.ErrorID, fb.ErrorInfo) == error
 
 
-def test_write_param_and_tags_beyond_real_range_defect5():
+def test_s7_1200_write_param_and_tags_beyond_real_range_defect5():
     """MC_WriteParam with a REAL value beyond the REAL range: 16#8411/16#0005 (S7-1200 V6 §12.8); a tag
     assigned such a value holds +infinity, which is the tag's configuration error 16#8608 when it takes
     effect (§12.9.11, §9.6), like NaN; a command table step holds it until the step check rejects it."""
@@ -260,7 +260,7 @@ def test_write_param_and_tags_beyond_real_range_defect5():
 @pytest.mark.parametrize("dist, vmax, acc, dec, jerk", [
     (445.3, 40.0, 0.05, 0.05, 5e-8), (1e-3, 40.0, 500.0, 100.0, 1e4), (1e6, 10.0, 1e-3, 1e3, math.inf),
     (-3.0, 1.0, 2.0, 0.5, 0.1)])
-def test_closed_form_fallback_stays_within_the_limits_defect5(dist, vmax, acc, dec, jerk):
+def test_s7_1200_closed_form_fallback_stays_within_the_limits_defect5(dist, vmax, acc, dec, jerk):
     """Where ruckig gives up, the closed-form S-curve positioning takes over: it arrives at the target at
     standstill and never exceeds velocity, acceleration/deceleration or jerk (S7-1200 V6 §5.4.4.4)."""
     from plcmotion.kernel.profile_fallback import closed_form
@@ -282,7 +282,7 @@ def test_closed_form_fallback_stays_within_the_limits_defect5(dist, vmax, acc, d
     assert last.p + dur * (last.v + dur * (last.a / 2 + dur * last.j / 6)) == pytest.approx(dist, rel=1e-9, abs=1e-12)
 
 
-def test_planner_gives_a_profile_where_ruckig_fails_defect5():
+def test_s7_1200_planner_gives_a_profile_where_ruckig_fails_defect5():
     """The state of issue 8 defect 5 (acceleration 130 left over, new limits a = 0.05, j = 5e-8): ruckig
     raised; the velocity ramp and the positioning are planned within the velocity limit."""
     from plcmotion.kernel.profiles import Limits, Planner

@@ -120,7 +120,7 @@ def error_of(out: dict) -> tuple[int, int]:
 
 # ==========================================================================================================
 # §6.4.3.2 step types
-def test_6_4_3_2_steps_run_in_sequence_with_current_step_step_code_and_done():
+def test_s7_1200_6_4_3_2_steps_run_in_sequence_with_current_step_step_code_and_done():
     """§6.4.3.2 "The commands will be processed in sequence"; §11.1.9.1 CurrentStep = "step currently being
     executed", StepCode = the step code "output ... while the command is being processed", Busy while the
     table is executed, Done = "command table has been successfully executed"; §9.5.2 Done means the axis is
@@ -153,7 +153,7 @@ def test_6_4_3_2_steps_run_in_sequence_with_current_step_step_code_and_done():
     assert not b.scan()[id(ct)]["Done"]
 
 
-def test_9_5_2_done_for_one_call_when_execute_already_false():
+def test_s7_1200_9_5_2_done_for_one_call_when_execute_already_false():
     """§9.5.2: if Execute is already FALSE when the table ends, Done is TRUE for exactly one call."""
     b = Bench([{"Type": REL, "Position": 5.0, "Velocity": 50.0}])
     ct = b.table_fb(Execute=True)
@@ -165,7 +165,7 @@ def test_9_5_2_done_for_one_call_when_execute_already_false():
     assert b.axis.Position == pytest.approx(5.0)
 
 
-def test_6_4_3_2_empty_steps_are_ignored():
+def test_s7_1200_6_4_3_2_empty_steps_are_ignored():
     """§6.4.3.2 Empty: "The empty entry is ignored when the command table is processed." """
     b = Bench([
         {"Type": EMPTY, "StepCode": 1},
@@ -180,7 +180,7 @@ def test_6_4_3_2_empty_steps_are_ignored():
     assert b.axis.Position == pytest.approx(20.0)
 
 
-def test_6_4_3_2_positioning_relative_moves_by_the_travel_path_at_the_velocity():
+def test_s7_1200_6_4_3_2_positioning_relative_moves_by_the_travel_path_at_the_velocity():
     """§6.4.3.2 Positioning Relative: "The command will move the axis by the given travel path" "at the given
     velocity"; "The given velocity will not be reached if the travel path selected is not large enough."""
     b = Bench([{"Type": REL, "Position": 30.0, "Velocity": 40.0},
@@ -197,7 +197,7 @@ def test_6_4_3_2_positioning_relative_moves_by_the_travel_path_at_the_velocity()
     assert peak < 15.0, "1 mm at 100 mm/s^2 cannot reach 100 mm/s"
 
 
-def test_6_4_3_2_positioning_absolute_needs_homing():
+def test_s7_1200_6_4_3_2_positioning_absolute_needs_homing():
     """§6.4.3.2 Positioning Absolute: "the axis must be homed for this" -> 16#8204 "Axis is not homed"
     (§12.8); after MC_Home the step moves the axis to the position."""
     b = Bench([{"Type": ABS, "Position": 120.0, "Velocity": 40.0}])
@@ -213,7 +213,7 @@ def test_6_4_3_2_positioning_absolute_needs_homing():
     assert b.axis.Position == pytest.approx(120.0)
 
 
-def test_6_4_3_2_velocity_set_point_duration_includes_acceleration():
+def test_s7_1200_6_4_3_2_velocity_set_point_duration_includes_acceleration():
     """§6.4.3.2 Velocity set point: "The duration includes both the acceleration phase and the constant travel
     phase. The next command will be processed once the duration is over."  Acceleration to 50 mm/s takes
     0.49 s, so the following Halt starts 1.0 s (not 1.49 s) after the step started."""
@@ -232,7 +232,7 @@ def test_6_4_3_2_velocity_set_point_duration_includes_acceleration():
     assert v_at[round(t0 + 0.9, 6)] == pytest.approx(50.0)
 
 
-def test_6_4_3_2_velocity_set_point_not_reached_when_duration_too_short():
+def test_s7_1200_6_4_3_2_velocity_set_point_not_reached_when_duration_too_short():
     """§6.4.3.2: "The given velocity will not be reached during the command if too short a runtime is
     selected" -- 0.2 s at 100 mm/s^2 from the start/stop velocity 1 mm/s reaches about 21 mm/s."""
     b = Bench([{"Type": VEL, "Velocity": 100.0, "Duration": 0.2}, {"Type": HALT}])
@@ -242,7 +242,7 @@ def test_6_4_3_2_velocity_set_point_not_reached_when_duration_too_short():
     assert peak == pytest.approx(VMIN + ACC * 0.2, abs=0.5)
 
 
-def test_6_4_3_2_wait_does_not_stop_active_travel():
+def test_s7_1200_6_4_3_2_wait_does_not_stop_active_travel():
     """§6.4.3.2 Wait: "Waits until the given period is over. Wait does not stop active travel." """
     b = Bench([{"Type": VEL, "Velocity": 40.0, "Duration": 0.5, "StepCode": 1},
                {"Type": WAIT, "Duration": 0.5, "StepCode": 2},
@@ -260,7 +260,7 @@ def test_6_4_3_2_wait_does_not_stop_active_travel():
     assert all(v == pytest.approx(40.0) for v in waiting_velocities)
 
 
-def test_6_4_3_2_halt_after_velocity_set_point_brakes_with_configured_deceleration():
+def test_s7_1200_6_4_3_2_halt_after_velocity_set_point_brakes_with_configured_deceleration():
     """§6.4.3.2 Halt: "Stop axis (the command only takes effect after a 'Velocity set point' command)";
     braking with the configured deceleration (DynamicDefaults.Deceleration = 100 mm/s^2); the table is Done
     once the axis stands still (§9.5.2)."""
@@ -275,7 +275,7 @@ def test_6_4_3_2_halt_after_velocity_set_point_brakes_with_configured_decelerati
     assert (v1 - v2) / (t2 - t1) == pytest.approx(DEC, rel=0.02)
 
 
-def test_6_4_3_2_halt_after_completed_positioning_has_no_effect():
+def test_s7_1200_6_4_3_2_halt_after_completed_positioning_has_no_effect():
     """§6.4.3.2 Halt "only takes effect after a 'Velocity set point' command" (decision 44: after a completed
     positioning the axis is at standstill): the table goes on with the next step."""
     b = Bench([{"Type": REL, "Position": 20.0, "Velocity": 40.0},
@@ -287,7 +287,7 @@ def test_6_4_3_2_halt_after_completed_positioning_has_no_effect():
     assert b.axis.Position == pytest.approx(30.0)
 
 
-def test_decision_43_relative_step_after_velocity_set_point_counts_from_where_it_starts():
+def test_s7_1200_decision_43_relative_step_after_velocity_set_point_counts_from_where_it_starts():
     """Decision 43 (§6.4.3.2 "move the axis by the given travel path"): after a Velocity set point the
     relative step counts from the position where it starts.  Velocity 40 mm/s for 0.6 s from the start/stop
     velocity 1 mm/s at 100 mm/s^2 covers (40^2 - 1^2)/200 + 40 x 0.21 = 16.395 mm, so the table ends at
@@ -305,7 +305,7 @@ def test_decision_43_relative_step_after_velocity_set_point_counts_from_where_it
     assert not stalls, f"setpoint does not advance with the velocity: {stalls[:2]}"
 
 
-def test_decision_41_end_of_table_with_moving_axis_brakes_then_done():
+def test_s7_1200_decision_41_end_of_table_with_moving_axis_brakes_then_done():
     """Decision 41 (§9.5.2 Done = axis at standstill): a table that ends with a velocity set point brakes the
     axis with the configured deceleration, then shows Done."""
     b = Bench([{"Type": VEL, "Velocity": 40.0, "Duration": 0.5}])
@@ -322,7 +322,7 @@ def _velocity_near(trace, lo, hi):
     return [v for _, p, v in trace if lo <= p <= hi]
 
 
-def test_6_4_3_6_complete_command_stops_between_positioning_steps():
+def test_s7_1200_6_4_3_6_complete_command_stops_between_positioning_steps():
     """§6.4.3.2 "Complete command: The command will be completed. The next command will be processed
     immediately." -- the first positioning ends at its target (the PTO velocity falls to the start/stop
     velocity) before the second starts."""
@@ -336,7 +336,7 @@ def test_6_4_3_6_complete_command_stops_between_positioning_steps():
     assert min(abs(v) for v in _velocity_near(b.trace, 29.0, 31.0)) <= VMIN + ACC * SERVO + 1e-9
 
 
-def test_6_4_3_6_blend_motion_no_standstill_between_positioning_steps():
+def test_s7_1200_6_4_3_6_blend_motion_no_standstill_between_positioning_steps():
     """§6.4.3.2 "Blend motion: The motion of the current command will be blended with the motion of the
     following command"; §6.4.3.6 chart / decision 42: the first target is passed at the velocity of the
     following step, without standstill; a relative step counts from the previous target (decision 43)."""
@@ -351,7 +351,7 @@ def test_6_4_3_6_blend_motion_no_standstill_between_positioning_steps():
     assert v_at_30 == pytest.approx(20.0, abs=0.5)
 
 
-def test_6_4_3_6_blend_positioning_into_velocity_set_point():
+def test_s7_1200_6_4_3_6_blend_positioning_into_velocity_set_point():
     """§6.4.3.2: positioning steps are blended with a following "Velocity set point" step (§6.4.3.6 chart:
     no standstill)."""
     b = Bench([{"Type": REL, "Position": 30.0, "Velocity": 40.0, "NextStep": BLEND},
@@ -363,7 +363,7 @@ def test_6_4_3_6_blend_positioning_into_velocity_set_point():
     assert near and min(near) >= 20.0 - 1e-6
 
 
-def test_6_4_3_6_velocity_set_point_followed_by_velocity_set_point_without_stop():
+def test_s7_1200_6_4_3_6_velocity_set_point_followed_by_velocity_set_point_without_stop():
     """§6.4.3.6 (velocity job followed by velocity job): the duration of the first ends, the next command
     takes over the moving axis (no standstill in between)."""
     b = Bench([{"Type": VEL, "Velocity": 40.0, "Duration": 0.5},
@@ -378,7 +378,7 @@ def test_6_4_3_6_velocity_set_point_followed_by_velocity_set_point_without_stop(
     assert max(moving) == pytest.approx(40.0) and any(v == pytest.approx(20.0) for v in moving)
 
 
-def test_6_4_3_2_no_blending_with_other_command_types():
+def test_s7_1200_6_4_3_2_no_blending_with_other_command_types():
     """§6.4.3.2: "No blending occurs with other command types" -- Blend motion followed by a Wait is not an
     error; the positioning completes (stops) at its target."""
     b = Bench([{"Type": REL, "Position": 10.0, "Velocity": 40.0, "NextStep": BLEND},
@@ -390,7 +390,7 @@ def test_6_4_3_2_no_blending_with_other_command_types():
     assert min(abs(v) for v in _velocity_near(b.trace, 9.5, 10.5)) <= VMIN + ACC * SERVO + 1e-9
 
 
-def test_decision_42_blend_into_opposite_direction_stops_at_target():
+def test_s7_1200_decision_42_blend_into_opposite_direction_stops_at_target():
     """Decision 42: a blended step whose successor moves back stops at its target, then reverses."""
     b = Bench([{"Type": REL, "Position": 30.0, "Velocity": 40.0, "NextStep": BLEND},
                {"Type": REL, "Position": -10.0, "Velocity": 40.0}])
@@ -408,7 +408,7 @@ def _binary_table():
 
 @pytest.mark.parametrize("start, end, visited", [(2, 4, [2, 3, 4]), (1, 32, [1, 2, 3, 4, 5]), (5, 5, [5]),
                                                  (3, 32, [3, 4, 5])])
-def test_11_1_9_1_start_step_to_end_step(start, end, visited):
+def test_s7_1200_11_1_9_1_start_step_to_end_step(start, end, visited):
     """§11.1.9.1 StartStep "step at which the execution ... should begin", EndStep "step up to which the
     execution ... should take place"; steps outside the range are not executed."""
     b = Bench(_binary_table())
@@ -426,7 +426,7 @@ def test_11_1_9_1_start_step_to_end_step(start, end, visited):
     (1, 0, (0x840B, 0x000A)), (1, -1, (0x840B, 0x000A)),
     (1, 33, (0x840B, 0x001E)),
 ])
-def test_12_8_840A_840B_invalid_start_end_step(start, end, codes):
+def test_s7_1200_12_8_840A_840B_invalid_start_end_step(start, end, codes):
     """§12.8 16#840A StartStep (16#000A <= 0, 16#001D > EndStep, 16#001E > 32), 16#840B EndStep (16#000A
     <= 0, 16#001E > 32); block parameter errors: the axis does not move, nothing else is affected.  Where
     two limits are violated the specific code is expected (EndStep <= 0 is 16#840B/16#000A, StartStep > 32
@@ -473,7 +473,7 @@ NAN = math.nan
     ({"Type": WAIT, "Duration": 0.1, "NextStep": BLEND}, (0x8704, 0x0023)),
     ({"Type": HALT, "NextStep": BLEND}, (0x8704, 0x0023)),
 ], ids=lambda x: repr(x) if isinstance(x, dict) else None)
-def test_12_8_8700_8704_invalid_step(row, codes):
+def test_s7_1200_12_8_8700_8704_invalid_step(row, codes):
     """§12.8 16#8700 command type, 16#8701 position (format, > 1E+12, < -1E+12), 16#8702 velocity (format,
     > maximum velocity, < start/stop velocity; positioning needs 1.0e-12 <= v), 16#8703 duration (format,
     > 64800 s, < 0.001 s), 16#8704 next step (invalid selection; "Blend motion" only for Positioning
@@ -489,7 +489,7 @@ def test_12_8_8700_8704_invalid_step(row, codes):
                                  _rel(Position=0.0), _rel(Position=1.0e-12, Velocity=100.0),
                                  {"Type": WAIT, "Duration": 64800.0}, _rel(NextStep=BLEND)],
                          ids=["vel0", "vel-max", "dur-min", "pos0", "pos-tiny", "wait-max", "blend-last"])
-def test_6_4_3_2_limit_values_accepted(row):
+def test_s7_1200_6_4_3_2_limit_values_accepted(row):
     """§6.4.3.2 limit values: velocity set point 0.0 and -1.0e12..-1.0e-12 allowed, duration 0.001 s .. 64800 s,
     position exactly 0.0 or >= 1.0e-12, Blend motion on a positioning step."""
     b = Bench([row])
@@ -499,7 +499,7 @@ def test_6_4_3_2_limit_values_accepted(row):
     assert outs[0]["Busy"] or outs[0]["Done"]
 
 
-def test_9_6_table_error_in_later_step_motion_continues():
+def test_s7_1200_9_6_table_error_in_later_step_motion_continues():
     """§9.6 "Configuration error of command table TO": the axis motion continues, the error is only shown at
     MC_CommandTable (not at MC_Power, no axis error); the remedy needs no MC_Reset: correct the value
     online and restart the command (§12.8)."""
@@ -522,7 +522,7 @@ def test_9_6_table_error_in_later_step_motion_continues():
 
 # ==========================================================================================================
 # §6.4.3.7 runtime editing
-def test_6_4_3_7_step_values_changed_by_user_program_while_table_runs():
+def test_s7_1200_6_4_3_7_step_values_changed_by_user_program_while_table_runs():
     """§6.4.3.7: Command[n].Type/Position/Velocity/Duration/NextStep/StepCode can be changed during runtime;
     decision 45: a step is checked (and taken) when it is about to run."""
     b = Bench([{"Type": REL, "Position": 10.0, "Velocity": 20.0, "StepCode": 1},
@@ -542,7 +542,7 @@ def test_6_4_3_7_step_values_changed_by_user_program_while_table_runs():
     assert max(v for _, _, v in b.trace) == pytest.approx(50.0)
 
 
-def test_12_10_8_1_table_has_32_steps():
+def test_s7_1200_12_10_8_1_table_has_32_steps():
     """§6.4.3.2 "Up to 32 commands"; tags Command[1..32]."""
     b = Bench()
     assert b.table.Command[32].Type == 0 and b.table.Command[1].Velocity == 0.0
@@ -554,7 +554,7 @@ def test_12_10_8_1_table_has_32_steps():
 # ==========================================================================================================
 # §11.1.9.1 requirements
 @pytest.mark.parametrize("actor", [1, 0], ids=["PROFIdrive", "analog"])
-def test_11_1_9_1_only_for_pto_axes(actor):
+def test_s7_1200_11_1_9_1_only_for_pto_axes(actor):
     """§11.1.9.1: MC_CommandTable "is available for axes with drive connection via PTO"; requirement "The
     drive is connected via PTO" -> 16#8408/16#001B "Axis does not match the required TO type" (§12.8)."""
     b = Bench([{"Type": REL, "Position": 5.0, "Velocity": 20.0}], actor=actor)
@@ -567,7 +567,7 @@ def test_11_1_9_1_only_for_pto_axes(actor):
 
 
 @pytest.mark.parametrize("value, info", [("axis", 0x001B), (None, 0x001C), (42, 0x001C)])
-def test_12_8_8409_invalid_command_table_input(value, info):
+def test_s7_1200_12_8_8409_invalid_command_table_input(value, info):
     """§12.8 16#8409: invalid CommandTable (16#001B wrong TO type, 16#001C not a technology DB)."""
     b = Bench()
     ct = b.table_fb(Execute=True)
@@ -575,7 +575,7 @@ def test_12_8_8409_invalid_command_table_input(value, info):
     assert error_of(b.scan()[id(ct)]) == (0x8409, info)
 
 
-def test_11_1_9_1_axis_must_be_enabled():
+def test_s7_1200_11_1_9_1_axis_must_be_enabled():
     """§11.1.9.1 requirement "The axis is enabled" -> 16#8200 "Axis is not enabled"."""
     b = Bench([{"Type": REL, "Position": 5.0, "Velocity": 20.0}], enable=False)
     ct = b.table_fb(Execute=True, EndStep=1)
@@ -584,7 +584,7 @@ def test_11_1_9_1_axis_must_be_enabled():
 
 # ==========================================================================================================
 # §11.1.9.1 override response
-def test_11_1_9_1_running_command_aborted_only_when_first_motion_step_starts():
+def test_s7_1200_11_1_9_1_running_command_aborted_only_when_first_motion_step_starts():
     """§11.1.9.1: "The active Motion Control command is canceled by the start of the first 'Positioning
     Relative', 'Positioning Absolute', 'Velocity set point' or 'Halt' command" -- leading Wait steps leave
     the running MC_MoveVelocity alone (it keeps Busy and its velocity)."""
@@ -626,7 +626,7 @@ def _aborters(b: Bench):
 
 @pytest.mark.parametrize("name", ["MC_Halt", "MC_MoveRelative", "MC_MoveAbsolute", "MC_MoveVelocity",
                                   "MC_MoveJog", "MC_CommandTable"])
-def test_11_1_9_1_another_command_aborts_the_table(name):
+def test_s7_1200_11_1_9_1_another_command_aborts_the_table(name):
     """§11.1.9.1: MC_CommandTable "can be aborted by" MC_Halt, MC_MoveAbsolute, MC_MoveRelative,
     MC_MoveVelocity, MC_MoveJog, MC_CommandTable -> CommandAborted (latched while Execute is TRUE),
     Busy FALSE; StatusBits.CommandTableActive FALSE afterwards."""
@@ -649,7 +649,7 @@ def test_11_1_9_1_another_command_aborts_the_table(name):
     assert not b.scan()[id(ct)]["CommandAborted"]
 
 
-def test_11_1_9_1_table_aborts_running_motion_command():
+def test_s7_1200_11_1_9_1_table_aborts_running_motion_command():
     """§11.1.9.1: the new MC_CommandTable aborts an active MC_MoveRelative (when its first motion step
     starts)."""
     b = Bench([{"Type": VEL, "Velocity": 20.0, "Duration": 0.2}])
@@ -663,7 +663,7 @@ def test_11_1_9_1_table_aborts_running_motion_command():
 
 
 @pytest.mark.parametrize("mode", [0, 1])
-def test_12_8_8207_0019_direct_homing_rejected_while_table_runs(mode):
+def test_s7_1200_12_8_8207_0019_direct_homing_rejected_while_table_runs(mode):
     """§11.1.3 MC_Home requirement "no MC_CommandTable may be active upon start with Mode = 0, 1 or 2";
     §12.8 16#8207/16#0019; the table goes on (decision 46)."""
     b = Bench([{"Type": VEL, "Velocity": 20.0, "Duration": 1.0}])
@@ -680,7 +680,7 @@ HOMING = {"Sensor[1].ActiveHoming.DigitalInputAddress": "I0.2",
           "Sensor[1].PassiveHoming.DigitalInputAddress": "I0.2", "Plant.HomingSwitchPosition": 200.0, "Homing": {"ApproachVelocity": 50.0, "ReferencingVelocity": 10.0}}
 
 
-def test_12_8_8207_0018_table_rejected_while_passively_homed():
+def test_s7_1200_12_8_8207_0018_table_rejected_while_passively_homed():
     """§12.8 16#8207/16#0018 "axis cannot be moved with a command table while being actively or passively
     homed"; decision 46: rejected while passive homing (MC_Home Mode 2) is armed; the homing goes on."""
     b = Bench([{"Type": VEL, "Velocity": 20.0, "Duration": 1.0}], extra=HOMING)
@@ -693,7 +693,7 @@ def test_12_8_8207_0018_table_rejected_while_passively_homed():
     assert out[id(home)]["Busy"] and b.axis.Velocity == 0.0
 
 
-def test_11_1_9_1_active_homing_aborts_table_and_table_aborts_active_homing():
+def test_s7_1200_11_1_9_1_active_homing_aborts_table_and_table_aborts_active_homing():
     """§11.1.9.1 override response: MC_CommandTable is aborted by "MC_Home command Mode = 3" and aborts an
     active "MC_Home command Mode = 3" (decision 46)."""
     b = Bench([{"Type": VEL, "Velocity": 20.0, "Duration": 5.0}], extra=HOMING)
@@ -713,7 +713,7 @@ def test_11_1_9_1_active_homing_aborts_table_and_table_aborts_active_homing():
 
 # ==========================================================================================================
 # the table moves the axis like a motion command: status tags, direction and SW limits
-def test_10_2_target_position_during_table_positioning_step():
+def test_s7_1200_10_2_target_position_during_table_positioning_step():
     """§10.2 "Target position ... indicates the current target position of an active positioning command or
     of the axis command table"; "Remaining travel distance ... for an active positioning command or the axis
     command table" (StatusPositioning.TargetPosition / .Distance)."""
@@ -728,7 +728,7 @@ def test_10_2_target_position_during_table_positioning_step():
 
 @pytest.mark.parametrize("row", [{"Type": REL, "Position": -10.0, "Velocity": 20.0},
                                  {"Type": VEL, "Velocity": -20.0, "Duration": 0.5}], ids=["rel", "vel"])
-def test_12_8_8008_direction_mode_applies_to_table_steps(row):
+def test_s7_1200_12_8_8008_direction_mode_applies_to_table_steps(row):
     """§5.4.4.1 Actor.DirectionMode = 1 (positive only); §12.8 16#8008/16#002E "The selected motion direction
     is not allowed" (operating error with axis stop: at the instruction and MC_Power, §9.6) -- the axis
     never moves in the forbidden direction, whichever instruction commands it."""
@@ -741,7 +741,7 @@ def test_12_8_8008_direction_mode_applies_to_table_steps(row):
     assert (b.power.ErrorID, b.power.ErrorInfo) == (0x8008, 0x002E)
 
 
-def test_5_4_4_3_sw_limit_switch_stops_table_motion():
+def test_s7_1200_5_4_4_3_sw_limit_switch_stops_table_motion():
     """§6.4.3.2 note: the trend view does not show "movements in response to software limit switches being
     reached" -- the real axis does react: §5.4.4.3 the motion is stopped at the SW limit with the configured
     deceleration, 16#8002/16#000E at the triggering instruction and MC_Power."""
@@ -758,7 +758,7 @@ def test_5_4_4_3_sw_limit_switch_stops_table_motion():
     assert b.power.ErrorID == 0x8002 and b.axis.StatusBits.SWLimitMaxActive
 
 
-def test_5_4_4_3_hw_limit_switch_stops_table_motion():
+def test_s7_1200_5_4_4_3_hw_limit_switch_stops_table_motion():
     """§5.4.4.3 "Response of the axis when position limits are triggered": a PTO axis that approaches a hardware
     limit switch brakes to standstill with the emergency deceleration; "HW limit switch approached" (16#8004/
     16#000E) is shown at the initiating instruction (here MC_CommandTable) and at MC_Power."""
@@ -776,7 +776,7 @@ def test_5_4_4_3_hw_limit_switch_stops_table_motion():
     assert 30.0 <= b.axis.Position <= 30.0 + 20.0 * (0.0064 + 2 * SERVO) + 20.0 ** 2 / (2 * 1000.0)
 
 
-def test_11_1_1_power_disable_aborts_table():
+def test_s7_1200_11_1_1_power_disable_aborts_table():
     """§11.1.1 MC_Power Enable = FALSE "aborts all commands" of the axis: the running table shows
     CommandAborted and the axis is stopped and disabled."""
     b = Bench([{"Type": VEL, "Velocity": 30.0, "Duration": 5.0}])
@@ -790,7 +790,7 @@ def test_11_1_1_power_disable_aborts_table():
     assert b.axis.Velocity == 0.0 and not b.axis.StatusBits.CommandTableActive
 
 
-def test_command_table_field_beyond_lreal_gives_16_8701_not_overflow_s12_8():
+def test_s7_1200_command_table_field_beyond_lreal_gives_16_8701_not_overflow_s12_8():
     """A Python int beyond the LREAL range in a command table REAL field is stored as an invalid value:
     the step gives the manual's configuration error 16#8701 (ErrorInfo 16#0002), it never raises."""
     ctl = Controller()

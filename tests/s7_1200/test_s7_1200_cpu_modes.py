@@ -89,7 +89,7 @@ class Cpu:
 
 # ==========================================================================================================
 # RUN -> STOP
-def test_2_2_7_4_run_to_stop_pto_axis_disabled_pulse_output_stopped():
+def test_s7_1200_2_2_7_4_run_to_stop_pto_axis_disabled_pulse_output_stopped():
     """§2.2.7.4 row 4 "RUN -> STOP: all technology objects are disabled in accordance with the error response
     'remove enablement'. Running Motion Control jobs are terminated."  §12.8 "Remove enable": setpoint zero,
     enable removed (PTO: the pulse output stops).  §9.4: the drive enable output is reset."""
@@ -108,7 +108,7 @@ def test_2_2_7_4_run_to_stop_pto_axis_disabled_pulse_output_stopped():
     assert not cpu.axis.StatusBits.VelocityCommand and cpu.axis.StatusBits.Done
 
 
-def test_2_2_7_4_run_to_stop_profidrive_remove_enable_and_db_still_updated():
+def test_s7_1200_2_2_7_4_run_to_stop_profidrive_remove_enable_and_db_still_updated():
     """§2.2.7.4: RUN -> STOP disables the axis with "remove enable" (§12.8: setpoint zero, enable removed, the
     drive brakes by its own configuration); "In STOP mode ... The technology data blocks of the
     position-controlled axes are updated" -- the actual values follow the drive as it coasts down."""
@@ -129,7 +129,7 @@ def test_2_2_7_4_run_to_stop_profidrive_remove_enable_and_db_still_updated():
     assert positions[-1] == positions[-2]
 
 
-def test_2_2_7_4_user_program_not_processed_in_stop_servo_keeps_running():
+def test_s7_1200_2_2_7_4_user_program_not_processed_in_stop_servo_keeps_running():
     """§2.2.7.4 "In STOP mode the user program is not processed"; §2.2.7.3 MC-Servo and MC-Interpolator run
     in every application cycle also in CPU STOP (virtual time goes on)."""
     cpu = Cpu(pto_params())
@@ -146,7 +146,7 @@ def test_2_2_7_4_user_program_not_processed_in_stop_servo_keeps_running():
     assert cpu.calls == n + 5
 
 
-def test_2_2_7_4_no_motion_jobs_outside_run():
+def test_s7_1200_2_2_7_4_no_motion_jobs_outside_run():
     """§2.2.7.4: STOP "no Motion Control jobs are executed", STARTUP "Motion Control jobs are rejected" --
     instructions called while the CPU is not in RUN neither enable nor move the axis."""
     cpu = Cpu(pto_params())
@@ -162,7 +162,7 @@ def test_2_2_7_4_no_motion_jobs_outside_run():
     assert cpu.axis.Velocity == 0.0 and cpu.axis.Position == 0.0
 
 
-def test_9_4_cpu_stop_resets_all_cpu_outputs():
+def test_s7_1200_9_4_cpu_stop_resets_all_cpu_outputs():
     """§9.4 "A POWER OFF or CPU-STOP aborts all active motion control jobs. All CPU outputs, including pulse
     and direction outputs, are reset."; §2.2.7.4 "In STOP mode ... all process outputs are disabled"."""
     cpu = Cpu(pto_params())
@@ -174,7 +174,7 @@ def test_9_4_cpu_stop_resets_all_cpu_outputs():
     assert not cpu.ctl.outputs["Q0.5"]
 
 
-def test_9_4_stop_terminates_command_table():
+def test_s7_1200_9_4_stop_terminates_command_table():
     """§2.2.7.4 / §9.4: running Motion Control jobs are terminated -- also a command table; after the restart
     the axis is no longer controlled by MC_CommandTable (StatusBits.CommandTableActive FALSE)."""
     cpu = Cpu(pto_params())
@@ -191,7 +191,7 @@ def test_9_4_stop_terminates_command_table():
 
 # ==========================================================================================================
 # STOP -> RUN
-def test_9_4_instance_status_reset_after_restart():
+def test_s7_1200_9_4_instance_status_reset_after_restart():
     """§9.4: after a restart (CPU RUN) "all status and error information of the previously active motion
     control jobs are reset to their initial values"."""
     cpu = Cpu(pto_params())
@@ -209,7 +209,7 @@ def test_9_4_instance_status_reset_after_restart():
     assert not cpu.power.Status and not cpu.power.Error
 
 
-def test_9_4_axis_must_be_enabled_again_after_stop_run():
+def test_s7_1200_9_4_axis_must_be_enabled_again_after_stop_run():
     """§9.4 "Before the axis can be reused, it must be enabled again using ... MC_Power": after STOP -> RUN
     the axis is disabled; a motion command before the enable gives 16#8200; the enable output stays reset
     until MC_Power enables the axis again."""
@@ -233,7 +233,7 @@ def test_9_4_axis_must_be_enabled_again_after_stop_run():
     assert cpu.axis.Position == pytest.approx(5.0)
 
 
-def test_2_2_7_4_startup_initialises_tos_with_start_values():
+def test_s7_1200_2_2_7_4_startup_initialises_tos_with_start_values():
     """§2.2.7.4 row 2 "STOP -> STARTUP: The technology objects are initialized with the start values of the
     CPU" (row 1 for POWER ON: values from the load memory); §9.7: runtime changes are only kept if written to
     the start values with WRIT_DBL."""
@@ -248,7 +248,7 @@ def test_2_2_7_4_startup_initialises_tos_with_start_values():
 
 
 @pytest.mark.parametrize("transition", ["start", "power_cycle"])
-def test_2_2_7_4_command_table_restarts_with_its_start_values(transition):
+def test_s7_1200_2_2_7_4_command_table_restarts_with_its_start_values(transition):
     """§2.2.7.4 rows 1 and 2: at POWER ON the technology objects are re-initialised from the load memory, at
     STOP -> STARTUP with their start values -- this includes the command table technology object (§6): step
     values changed by the user program (§6.4.3.7) are back at their configured values (§9.7: runtime changes
@@ -264,7 +264,7 @@ def test_2_2_7_4_command_table_restarts_with_its_start_values(transition):
     assert table.Command[2].Type == 0
 
 
-def test_9_4_pending_errors_reset_after_restart():
+def test_s7_1200_9_4_pending_errors_reset_after_restart():
     """§9.4: "all status and error information ... reset to their initial values" -- an axis error waiting for
     MC_Reset (16#8008, direction not permitted) is gone after STOP -> RUN; the axis can be enabled at once."""
     cpu = Cpu(pto_params(Actor={"Type": 2, "DirectionMode": 1, "Interface": {"EnableDriveOutput": ENABLE_OUT}}))
@@ -290,7 +290,7 @@ def _home(cpu: Cpu, mode: int = 0, position: float = 10.0) -> None:
 
 
 @pytest.mark.parametrize("transition", ["start", "power_cycle"])
-def test_2_5_pto_axis_loses_homing_after_restart_and_power_cycle(transition):
+def test_s7_1200_2_5_pto_axis_loses_homing_after_restart_and_power_cycle(transition):
     """§2.5 "Resetting the Homed status" for PTO: "After POWER OFF -> POWER ON of the CPU", "After CPU restart
     (RUN-STOP -> STOP-RUN)"; §9.4: the axis must be homed again (MC_MoveAbsolute: 16#8204); not homed, the
     position counts from the position at enable (§12.9.1)."""
@@ -311,7 +311,7 @@ def test_2_5_pto_axis_loses_homing_after_restart_and_power_cycle(transition):
     assert ma.Error and (ma.ErrorID, ma.ErrorInfo) == (0x8204, 0x0001)
 
 
-def test_2_5_incremental_encoder_loses_homing_at_power_cycle():
+def test_s7_1200_2_5_incremental_encoder_loses_homing_at_power_cycle():
     """§2.5 incremental actual values: "After POWER OFF -> POWER ON of the CPU" the Homed status is reset;
     §9.4 the axis must be enabled and homed again."""
     cpu = Cpu(pd_params())
@@ -325,7 +325,7 @@ def test_2_5_incremental_encoder_loses_homing_at_power_cycle():
     assert not cpu.axis.StatusBits.HomingDone
 
 
-def test_9_4_absolute_encoder_keeps_homing_after_power_off():
+def test_s7_1200_9_4_absolute_encoder_keeps_homing_after_power_off():
     """§9.4 "When an absolute encoder is used, homing is retained after POWER OFF" (adjusted with MC_Home
     Mode 7, §11.1.3); the actual position is that of the adjustment, not reset."""
     cpu = Cpu(pd_params(absolute=True))
@@ -340,7 +340,7 @@ def test_9_4_absolute_encoder_keeps_homing_after_power_off():
     assert cpu.axis.ActualPosition == pytest.approx(pos, abs=0.01)
 
 
-def test_9_4_power_cycle_aborts_jobs_resets_outputs_and_needs_new_enable():
+def test_s7_1200_9_4_power_cycle_aborts_jobs_resets_outputs_and_needs_new_enable():
     """§9.4: POWER OFF aborts all jobs and resets all CPU outputs (the drive enable output); after POWER ON
     the TOs and jobs are re-initialised (instance outputs reset, axis disabled) and MC_Power has to enable the
     axis again."""
@@ -358,7 +358,7 @@ def test_9_4_power_cycle_aborts_jobs_resets_outputs_and_needs_new_enable():
     assert cpu.ctl.outputs[ENABLE_OUT] and cpu.axis.StatusBits.Enable
 
 
-def test_11_1_2_reset_not_needed_but_possible_after_restart():
+def test_s7_1200_11_1_2_reset_not_needed_but_possible_after_restart():
     """§9.4 / §11.1.2: after the restart there is nothing to acknowledge: MC_Reset completes with Done and
     StatusBits.Error stays FALSE."""
     cpu = Cpu(pto_params())

@@ -96,7 +96,7 @@ def analog_word(axis) -> int:
 
 # ==========================================================================================================
 # STW1 / ZSW1
-def test_11_1_1_enable_stw1_047F_and_zsw1_operation_enabled():
+def test_s7_1200_11_1_1_enable_stw1_047F_and_zsw1_operation_enabled():
     """§11.1.1: with Enable = TRUE the drive is switched on; Status becomes TRUE only once the drive reports
     ready.  PROFIdrive (decision 51): STW1 = 16#047F (ON, no OFF2, no OFF3, enable operation, ramp generator
     enable/unfreeze, setpoint enable, control by PLC); "drive ready" is ZSW1 bit 2 OperationEnabled (with
@@ -123,7 +123,7 @@ def test_11_1_1_enable_stw1_047F_and_zsw1_operation_enabled():
 
 
 @pytest.mark.parametrize("telegram", [1, 3])
-def test_11_1_1_disable_switches_drive_off(telegram):
+def test_s7_1200_11_1_1_disable_switches_drive_off(telegram):
     """§11.1.1 Enable = FALSE: the axis is stopped (StopMode 0: emergency stop) and disabled; the drive is
     switched off (STW1 bit 0 ON = 0, i.e. 16#047E), and reports ready to switch on but not operating
     (ZSW1 bit 0 set, bits 1 and 2 clear); Status and StatusBits.Enable FALSE."""
@@ -142,7 +142,7 @@ def test_11_1_1_disable_switches_drive_off(telegram):
     assert speed_word == 0
 
 
-def test_12_8_800C_drive_fault_in_zsw1_disables_and_reset_reenables():
+def test_s7_1200_12_8_800C_drive_fault_in_zsw1_disables_and_reset_reenables():
     """§12.8 16#800C "Alarm message from drive" (reaction remove enable, ErrorBits.DriveFault) with ZSW1 bit 3
     FaultPresent and no OperationEnabled; §11.1.1: the axis disabled by an error is enabled again
     automatically after MC_Reset when Enable stayed TRUE -- STW1 16#047F and ZSW1 OperationEnabled again."""
@@ -165,7 +165,7 @@ def test_12_8_800C_drive_fault_in_zsw1_disables_and_reset_reenables():
 # ==========================================================================================================
 # speed setpoint words
 @pytest.mark.parametrize("v", [250.0, 123.4, -77.7, 999.0])
-def test_5_4_3_2_nsoll_b_32_bit_scaling_telegram_3(v):
+def test_s7_1200_5_4_3_2_nsoll_b_32_bit_scaling_telegram_3(v):
     """§5.4.3.2 / §12.9.5: the speed setpoint is transmitted as a standardised value of the reference speed;
     in the 32-bit words of telegram 3 100 % = 16#40000000: NSOLL_B = round(n / ReferenceSpeed x 2^30).
     Non-position-controlled (MC_MoveVelocity PositionControlled = FALSE, §12.7) the setpoint is exactly the
@@ -179,7 +179,7 @@ def test_5_4_3_2_nsoll_b_32_bit_scaling_telegram_3(v):
 
 
 @pytest.mark.parametrize("v", [250.0, 123.4, -77.7])
-def test_5_4_3_2_nsoll_a_16_bit_scaling_telegram_1(v):
+def test_s7_1200_5_4_3_2_nsoll_a_16_bit_scaling_telegram_1(v):
     """§5.4.3.2 "On the bus, the value 16#4000 is transferred ... which corresponds to 100 % of the reference
     speed" (V7: "16#4000 (16 bit, for telegram 1) = 100 %"): NSOLL_A = round(n / ReferenceSpeed x 16#4000)."""
     d = Drive(drive_params(telegram=1))
@@ -191,7 +191,7 @@ def test_5_4_3_2_nsoll_a_16_bit_scaling_telegram_1(v):
 
 @pytest.mark.parametrize("telegram, field, hi, lo", [(3, "NSOLL_B", 0x7FFFFFFF, -0x80000000),
                                                      (1, "NSOLL_A", 0x7FFF, -0x8000)])
-def test_5_4_3_2_200_percent_saturates_the_word(telegram, field, hi, lo):
+def test_s7_1200_5_4_3_2_200_percent_saturates_the_word(telegram, field, hi, lo):
     """§5.4.3.2: "A maximum of -200% to +200% of the reference speed can be transmitted over the bus" -- at
     MaxSpeed = 2 x ReferenceSpeed the word is at its limit (+200 % is one count short of 2 x 16#4000...)."""
     d = Drive(drive_params(telegram=telegram, max_speed=2 * REF, vmax=1000.0))
@@ -203,7 +203,7 @@ def test_5_4_3_2_200_percent_saturates_the_word(telegram, field, hi, lo):
 
 
 @pytest.mark.parametrize("v", [250.0, -300.0, 50.0])
-def test_5_4_3_2_analog_setpoint_scaling(v):
+def test_s7_1200_5_4_3_2_analog_setpoint_scaling(v):
     """§5.4.3.2 analog drive: the reference speed is the speed at 100 % of the analog output; 100 % is the
     nominal value of the S7 analog output (27648)."""
     d = Drive(drive_params(actor=0, max_speed=3510.0, vmax=500.0))
@@ -211,7 +211,7 @@ def test_5_4_3_2_analog_setpoint_scaling(v):
     assert analog_word(d.axis) == round(rpm(v) / REF * 27648)
 
 
-def test_5_4_3_2_analog_setpoint_limited_to_max_speed_within_117_percent():
+def test_s7_1200_5_4_3_2_analog_setpoint_limited_to_max_speed_within_117_percent():
     """§5.4.3.2: "Analog outputs can be overloaded by approximately 17%" (-117 % .. 117 %) and the maximum speed
     limits the setpoint: with MaxSpeed = 1.17 x ReferenceSpeed the position controller's correction during
     acceleration cannot drive the word beyond round(1.17 x 27648) = 32348, below the overrange limit 32511."""
@@ -234,7 +234,7 @@ def test_5_4_3_2_analog_setpoint_limited_to_max_speed_within_117_percent():
 
 # ==========================================================================================================
 # encoder value G1_XIST1
-def test_5_4_3_3_g1_xist1_is_the_encoder_count_with_fine_resolution_modulo_2_32():
+def test_s7_1200_5_4_3_3_g1_xist1_is_the_encoder_count_with_fine_resolution_modulo_2_32():
     """§5.4.3.3 / §2.2.2: rotary encoder with StepsPerRevolution (2048) and fine resolution Gx_XIST1 (11 bits):
     one count = 10 mm / (2048 x 2^11); §10.4 G1_XIST1 is the cyclic incremental actual value (a 32-bit
     counter, so a negative count wraps modulo 2^32).  The actual position changes by the counted increments."""
@@ -253,7 +253,7 @@ def test_5_4_3_3_g1_xist1_is_the_encoder_count_with_fine_resolution_modulo_2_32(
     assert d.axis.ActualPosition - a1 == pytest.approx(12.5, abs=1.0)      # positioning window 1.0 mm
 
 
-def test_5_4_3_3_fine_resolution_changes_the_count():
+def test_s7_1200_5_4_3_3_fine_resolution_changes_the_count():
     """§5.4.3.3: the count per revolution is StepsPerRevolution x 2^FineResolutionXist1 -- 1000 steps without
     fine resolution: one count = 0.01 mm."""
     d = Drive(drive_params(telegram=3, **{"Sensor[1].Parameter.StepsPerRevolution": 1000,
@@ -268,7 +268,7 @@ def test_5_4_3_3_fine_resolution_changes_the_count():
 
 # ==========================================================================================================
 # telegram layout
-def test_2_2_3_telegram_3_pack_unpack():
+def test_s7_1200_2_2_3_telegram_3_pack_unpack():
     """§2.2.3 telegram 3 (32-bit NSET, 32-bit NACT, 1 encoder, sign of life): the PROFIdrive standard layout
     out = STW1, NSOLL_B, STW2, G1_STW (5 words), in = ZSW1, NIST_B, ZSW2, G1_ZSW, G1_XIST1, G1_XIST2
     (9 words), big-endian; unpack(pack()) gives the same telegram."""
@@ -287,7 +287,7 @@ def test_2_2_3_telegram_3_pack_unpack():
                                                          "G1_XIST2"]
 
 
-def test_2_2_3_telegram_1_pack_unpack():
+def test_s7_1200_2_2_3_telegram_1_pack_unpack():
     """§2.2.3 telegram 1 (16-bit NSET, 16-bit NACT): out = STW1, NSOLL_A; in = ZSW1, NIST_A (2 words each)."""
     d = Drive(drive_params(telegram=1))
     d.run_velocity(300.0)
@@ -299,7 +299,7 @@ def test_2_2_3_telegram_1_pack_unpack():
     assert [name for name, *_ in type(out).fields()] == ["STW1", "NSOLL_A"]
 
 
-def test_2_2_3_telegram_3_sign_of_life_counts_every_cycle():
+def test_s7_1200_2_2_3_telegram_3_sign_of_life_counts_every_cycle():
     """§2.2.3: telegram 3 carries a sign of life (§12.8 16#800C/16#003F if it fails): the controller's life
     sign in STW2 bits 12-15 advances by one every cycle, 1..15 (0 is skipped)."""
     d = Drive(drive_params(telegram=3))
@@ -315,7 +315,7 @@ def test_2_2_3_telegram_3_sign_of_life_counts_every_cycle():
 # configuration rules
 @pytest.mark.parametrize("actor, max_speed, ok", [(1, 6000.0, True), (1, 6001.0, False), (1, 3000.0, True),
                                                   (0, 3510.0, True), (0, 3511.0, False), (0, 6000.0, False)])
-def test_12_8_863F_max_speed_limited_by_reference_speed(actor, max_speed, ok):
+def test_s7_1200_12_8_863F_max_speed_limited_by_reference_speed(actor, max_speed, ok):
     """§5.4.3.2: "The maximum speed can thus be twice the reference speed at maximum" (PROFIdrive), analog
     -117 % .. 117 %; §12.8 16#863F/16#0030 invalid Actor.DriveParameter.MaxSpeed (remedy: reference value
     MaxSpeed/2 resp. MaxSpeed/1.17)."""
@@ -326,7 +326,7 @@ def test_12_8_863F_max_speed_limited_by_reference_speed(actor, max_speed, ok):
 @pytest.mark.parametrize("actor", [1, 0])
 @pytest.mark.parametrize("lead, vmax, ok", [(10.0, 500.0, True), (10.0, 501.0, False), (5.0, 250.0, True),
                                             (5.0, 260.0, False)])
-def test_12_8_8645_max_velocity_must_be_reachable(actor, lead, vmax, ok):
+def test_s7_1200_12_8_8645_max_velocity_must_be_reachable(actor, lead, vmax, ok):
     """§12.8 16#8645/16#0001 "The maximum velocity cannot be reached with the configured drive and axis
     parameters": MaxSpeed 3000 1/min with LeadScrew mm per revolution reaches 3000/60 x LeadScrew mm/s."""
     errors = config_errors(drive_params(actor, max_speed=3000.0, vmax=vmax, Mechanics={"LeadScrew": lead}))
@@ -334,7 +334,7 @@ def test_12_8_8645_max_velocity_must_be_reachable(actor, lead, vmax, ok):
 
 
 @pytest.mark.parametrize("value, ok", [(0, True), (1, True), (2, False)])
-def test_v7_12_8_864B_behavior_gx_xist1(value, ok):
+def test_s7_1200_v7_12_8_864B_behavior_gx_xist1(value, ok):
     """V7 §12.9 Sensor[1].Parameter.BehaviorGx_XIST1 0..1; V7 §12.8 16#864B/16#0001 invalid value."""
     errors = config_errors(drive_params(1, **{"Sensor[1].Parameter.BehaviorGx_XIST1": value}))
     assert (errors == set()) if ok else ((0x864B, 0x0001) in errors)
@@ -350,7 +350,7 @@ def sim_params(actor: int = 1, **extra) -> dict:
 
 
 @pytest.mark.parametrize("actor", [1, 0])
-def test_5_4_3_1_simulation_enables_immediately(actor):
+def test_s7_1200_5_4_3_1_simulation_enables_immediately(actor):
     """§5.4.3.1: in simulation "MC_Power enables immediately without waiting for drive feedback" (here: a drive
     ready input that is FALSE and a drive that needs 0.5 s); StatusBits.AxisSimulation (§12.9.23)."""
     d = Drive(sim_params(actor), enable=False)
@@ -360,13 +360,13 @@ def test_5_4_3_1_simulation_enables_immediately(actor):
     assert d.axis.StatusBits.AxisSimulation
 
 
-def test_12_9_23_axis_simulation_false_without_simulation():
+def test_s7_1200_12_9_23_axis_simulation_false_without_simulation():
     """§12.9.23 StatusBits.AxisSimulation is FALSE in normal operation (Simulation.Mode = 0)."""
     d = Drive(drive_params(1))
     assert not d.axis.StatusBits.AxisSimulation
 
 
-def test_5_4_3_1_simulation_ideal_actual_values():
+def test_s7_1200_5_4_3_1_simulation_ideal_actual_values():
     """§5.4.3.1: in simulation no setpoints are output and no actual values are read -- the axis behaves
     ideally: ActualPosition equals Position in every servo cycle, the following error is 0."""
     d = Drive(sim_params(1))
@@ -384,7 +384,7 @@ SIM_SWITCHES = {"Sensor[1].ActiveHoming.DigitalInputAddress": "I0.2",
                                       "MinSwitchLevel": True, "MaxSwitchLevel": True}}
 
 
-def test_5_4_3_1_simulation_active_homing_completes_without_motion():
+def test_s7_1200_5_4_3_1_simulation_active_homing_completes_without_motion():
     """§5.4.3.1 table "Motion Control instructions with adapted behavior in simulation mode": MC_Home "Homing
     jobs are executed immediately without simulated axis motion" -- active homing (Mode 3) is Done at once
     with the axis at Position, it does not travel to look for the (ignored) homing switch."""
@@ -398,7 +398,7 @@ def test_5_4_3_1_simulation_active_homing_completes_without_motion():
     assert d.axis.Position == pytest.approx(100.0) and d.axis.Velocity == 0.0
 
 
-def test_5_4_3_1_simulation_hw_limit_switches_have_no_effect():
+def test_s7_1200_5_4_3_1_simulation_hw_limit_switches_have_no_effect():
     """§5.4.3.1: "Hardware limit switches and homing switches have no effect" in simulation."""
     d = Drive(sim_params(1, **SIM_SWITCHES))
     d.ctl.inputs["I0.4"] = True                     # high HW limit switch "approached"
@@ -408,7 +408,7 @@ def test_5_4_3_1_simulation_hw_limit_switches_have_no_effect():
     assert not d.axis.StatusBits.HWLimitMaxActive
 
 
-def test_12_8_8647_simulation_not_supported_for_pto():
+def test_s7_1200_12_8_8647_simulation_not_supported_for_pto():
     """§5.4.3.1 simulation only for PROFIdrive/analog; §12.8 16#8647/16#0001 "Simulation is not supported for
     PTO axes"."""
     cfg = {"Actor": {"Type": 2}, "DynamicLimits": {"MaxVelocity": 100.0, "MinVelocity": 1.0},
@@ -418,7 +418,7 @@ def test_12_8_8647_simulation_not_supported_for_pto():
     assert config_errors(cfg) == set()
 
 
-def test_decision_50_simulation_mode_not_written_at_runtime():
+def test_s7_1200_decision_50_simulation_mode_not_written_at_runtime():
     """§12.9.19 Simulation.Mode (PROFIdrive/analog: via the load memory and a restart); decision 50: MC_WriteParam
     refuses it with 16#8410/16#002B "Value at VARIANT 'Parameter' cannot be written"."""
     d = Drive(drive_params(1), enable=False)
@@ -428,7 +428,7 @@ def test_decision_50_simulation_mode_not_written_at_runtime():
     assert not d.axis.StatusBits.AxisSimulation
 
 
-def test_12_8_8000_drive_ready_lost_removes_enable_output():
+def test_s7_1200_12_8_8000_drive_ready_lost_removes_enable_output():
     """§5.4.3.2 enable output / ready input; §12.8 16#8000 "Drive error, loss of 'Drive ready'" (ErrorBits.
     DriveFault), decision 38: the enable is removed -- the "Drive enabled" output drops; after the ready
     signal returns MC_Reset re-enables the axis (Enable stayed TRUE, §11.1.1)."""

@@ -46,7 +46,7 @@ def _stop_time(home_during_stop: bool) -> float:
     return float("inf")
 
 
-def test_error_stop_ramp_kept_after_direct_home_during_stop():
+def test_s7_1200_error_stop_ramp_kept_after_direct_home_during_stop():
     """15 / 40 = 0.375 s down the emergency ramp; the dynamic defaults would take far longer."""
     assert _stop_time(False) < 0.45
     assert _stop_time(True) < 0.45

@@ -209,7 +209,7 @@ def _row_id(row):
 
 
 @pytest.mark.parametrize("row", BLOCK_PARAMETER_ERRORS, ids=_row_id)
-def test_block_parameter_error_12_8(row):
+def test_s7_1200_block_parameter_error_12_8(row):
     """§12.8 block parameter errors (16#84xx): shown at the instruction, latched while the start input
     stays TRUE (§9.5.2), NOT at MC_Power, StatusBits.Error stays FALSE (§9.6), no MC_Reset needed."""
     cls, kind, homed, inputs, error_id, error_info = row
@@ -231,7 +231,7 @@ MOTION_CLASSES = [MC_Halt, MC_MoveAbsolute, MC_MoveRelative, MC_MoveVelocity, MC
 
 @pytest.mark.parametrize("bad_axis", [None, 42, "Axis_1", object()], ids=["None", "int", "str", "object"])
 @pytest.mark.parametrize("cls", MOTION_CLASSES + [MC_Power], ids=lambda c: c.__name__)
-def test_invalid_axis_8408(cls, bad_axis):
+def test_s7_1200_invalid_axis_8408(cls, bad_axis):
     """§12.8 16#8408/16#001C: the Axis parameter is not a Motion Control technology DB."""
     ctl = Controller()
     fb = cls()
@@ -252,7 +252,7 @@ def test_invalid_axis_8408(cls, bad_axis):
 
 @pytest.mark.parametrize("kind", ["pd", "pto"])
 @pytest.mark.parametrize("stop_mode", [3, -1, 17])
-def test_mc_power_invalid_stopmode_8405(kind, stop_mode):
+def test_s7_1200_mc_power_invalid_stopmode_8405(kind, stop_mode):
     """§11.1.1 StopMode 0/1/2; §12.8 16#8405/16#0011 invalid StopMode, shown at MC_Power."""
     ctl, axis = make_axis(kind)
     power = MC_Power()
@@ -262,7 +262,7 @@ def test_mc_power_invalid_stopmode_8405(kind, stop_mode):
 
 
 @pytest.mark.parametrize("start_mode", [2, -1, 9])
-def test_mc_power_invalid_startmode_8412(start_mode):
+def test_s7_1200_mc_power_invalid_startmode_8412(start_mode):
     """§11.1.1 StartMode 0/1 (PROFIdrive axis); §12.8 16#8412/16#0011 invalid StartMode."""
     ctl, axis = make_axis("pd")
     power = MC_Power()
@@ -271,7 +271,7 @@ def test_mc_power_invalid_startmode_8412(start_mode):
     assert_error(power, 0x8412, 0x0011)
 
 
-def test_mc_power_invalid_stopmode_while_enabled_not_axis_error():
+def test_s7_1200_mc_power_invalid_stopmode_while_enabled_not_axis_error():
     """§9.6: a block parameter error (16#8405) is not an axis error: StatusBits.Error stays FALSE and a
     running motion continues."""
     ctl, axis, power = ready_axis("pd", homed=False)
@@ -320,7 +320,7 @@ ACCEPTED = [
 
 @pytest.mark.parametrize("row", ACCEPTED, ids=lambda r: f"{r[0].__name__}-{r[1]}-"
                          + ",".join(f"{k}={v}" for k, v in r[3].items()))
-def test_valid_limit_values_accepted_11_1(row):
+def test_s7_1200_valid_limit_values_accepted_11_1(row):
     """§11.1.x: values inside (and at the edge of) the documented ranges give no error."""
     cls, kind, homed, inputs = row
     ctl, axis, power = ready_axis(kind, homed=homed)
@@ -348,7 +348,7 @@ NOT_ENABLED = [
 @pytest.mark.parametrize("kind", ["pd", "pto"])
 @pytest.mark.parametrize("cls,inputs", NOT_ENABLED, ids=lambda x: getattr(x, "__name__", None)
                          or ",".join(f"{k}={v}" for k, v in x.items()) or "-")
-def test_not_enabled_8200(kind, cls, inputs):
+def test_s7_1200_not_enabled_8200(kind, cls, inputs):
     """§12.8 16#8200/16#0001 "Axis is not enabled" (requirement "axis enabled" of §11.1.3-§11.1.8);
     an operating error without axis stop: only at the instruction (§9.6)."""
     ctl, axis = make_axis(kind)
@@ -362,7 +362,7 @@ def test_not_enabled_8200(kind, cls, inputs):
     assert not axis.StatusBits.Error
 
 
-def test_not_enabled_8200_homed_pd_axis_move_absolute():
+def test_s7_1200_not_enabled_8200_homed_pd_axis_move_absolute():
     """§12.8 16#8200: MC_MoveAbsolute on a homed but disabled PROFIdrive axis (incremental encoder:
     disabling does not reset "homed", §11.1.3.1 list of resets)."""
     ctl, axis, power = ready_axis("pd", homed=True)
@@ -376,7 +376,7 @@ def test_not_enabled_8200_homed_pd_axis_move_absolute():
 
 
 @pytest.mark.parametrize("kind", ["pd", "pto"])
-def test_second_mc_power_8201(kind):
+def test_s7_1200_second_mc_power_8201(kind):
     """§12.8 16#8201/16#0001: axis already enabled by another MC_Power instance (§9.3 one MC_Power per
     axis).  Without axis stop: the first instance keeps the axis, the motion continues (§9.6)."""
     ctl, axis, power = ready_axis(kind, homed=False)
@@ -393,7 +393,7 @@ def test_second_mc_power_8201(kind):
 
 
 @pytest.mark.parametrize("kind", ["pd", "pto"])
-def test_not_homed_8204(kind):
+def test_s7_1200_not_homed_8204(kind):
     """§11.1.5 requirement "homed"; §12.8 16#8204/16#0001; without stop: a running motion continues,
     shown only at MC_MoveAbsolute (§9.6)."""
     ctl, axis, power = ready_axis(kind, homed=False)
@@ -464,7 +464,7 @@ WITHOUT_STOP = [_bad_relative, _bad_absolute_velocity, _bad_velocity_direction, 
 
 @pytest.mark.parametrize("kind", ["pd", "pto"])
 @pytest.mark.parametrize("trigger", WITHOUT_STOP, ids=lambda f: f.__name__.strip("_"))
-def test_error_class_without_axis_stop_9_6(kind, trigger):
+def test_s7_1200_error_class_without_axis_stop_9_6(kind, trigger):
     """§9.6: operating errors without axis stop and block parameter errors: "If the axis is in motion,
     the motion is continued.  The errors are only indicated in the Motion Control instruction which
     triggers the error" -- not at MC_Power, no StatusBits.Error, no MC_Reset needed."""
@@ -503,7 +503,7 @@ def _limit_move(cls, direction):
 @pytest.mark.parametrize("direction,error_id", [(+1, 0x8002), (-1, 0x8001)], ids=["high", "low"])
 @pytest.mark.parametrize("cls", [MC_MoveAbsolute, MC_MoveRelative, MC_MoveVelocity, MC_MoveJog],
                          ids=lambda c: c.__name__)
-def test_sw_limit_error_with_stop_8001_8002(kind, cls, direction, error_id):
+def test_s7_1200_sw_limit_error_with_stop_8001_8002(kind, cls, direction, error_id):
     """§12.8 16#8001/16#8002 ErrorInfo 16#000E (SW limit reached with the configured deceleration);
     §9.6 operating error with axis stop: shown at the triggering instruction AND at MC_Power,
     StatusBits.Error TRUE, ErrorBits.SWLimit TRUE; needs MC_Reset (§11.1.2)."""
@@ -554,7 +554,7 @@ def _decel_profile(ctl, axis, power, *fbs, timeout=1.0):
 @pytest.mark.parametrize("value,infos", [(-1.0, (0x0004, 0x0030)), (0.0, (0x0004, 0x0030)),
                                          (NAN, (0x0002, 0x0030)), (INF, (0x0002, 0x0003, 0x0030))],
                          ids=["minus1", "zero", "nan", "inf"])
-def test_runtime_invalid_acceleration_8608_pd(value, infos):
+def test_s7_1200_runtime_invalid_acceleration_8608_pd(value, infos):
     """§9.6 configuration error on the TO ("Value for Acceleration is invalid"), §12.8 16#8608:
     an invalid runtime write of DynamicDefaults.Acceleration (effective next servo cycle on a PROFIdrive
     axis, §12.9 code 10) stops the moving axis with the emergency stop deceleration (without jerk limit,
@@ -602,7 +602,7 @@ def test_runtime_invalid_acceleration_8608_pd(value, infos):
 
 @pytest.mark.parametrize("path,error_id", [("Acceleration", 0x8608), ("Deceleration", 0x8609),
                                            ("EmergencyDeceleration", 0x860A)])
-def test_runtime_invalid_dynamics_pto_at_next_command(path, error_id):
+def test_s7_1200_runtime_invalid_dynamics_pto_at_next_command(path, error_id):
     """§12.9 effective code 5 (PTO: at the next start of a motion command) + §9.6/§12.8: the invalid
     value gives a configuration error at the triggering instruction and at MC_Power; MC_Reset does not
     clear it until the value is valid again."""
@@ -634,7 +634,7 @@ def test_runtime_invalid_dynamics_pto_at_next_command(path, error_id):
     assert mr.Done
 
 
-def test_mc_reset_without_pending_error_done():
+def test_s7_1200_mc_reset_without_pending_error_done():
     """§11.1.2.1: MC_Reset with nothing to acknowledge completes with Done (StatusBits.Error FALSE)."""
     ctl, axis, power = ready_axis("pd", homed=False)
     reset = MC_Reset()
@@ -644,7 +644,7 @@ def test_mc_reset_without_pending_error_done():
 
 
 @pytest.mark.parametrize("kind", ["pd", "pto"])
-def test_jog_both_directions_while_jogging_8406(kind):
+def test_s7_1200_jog_both_directions_while_jogging_8406(kind):
     """§11.1.8: JogForward and JogBackward TRUE at the same time: "the axis stops with the configured
     deceleration" and Error 16#8406/16#0001 (a block parameter error: not at MC_Power, §9.6); Error is
     latched while a jog input is TRUE (§9.5.4)."""
@@ -667,7 +667,7 @@ def test_jog_both_directions_while_jogging_8406(kind):
     assert not jog.Error and jog.ErrorID == 0
 
 
-def test_pto_disable_resets_homed_8204():
+def test_s7_1200_pto_disable_resets_homed_8204():
     """§2.5 / §11.1.3.1: disabling a PTO axis with MC_Power resets "homed"; after enabling again
     MC_MoveAbsolute gives 16#8204/16#0001."""
     ctl, axis, power = ready_axis("pto", homed=True)
@@ -682,7 +682,7 @@ def test_pto_disable_resets_homed_8204():
 
 
 @pytest.mark.parametrize("row", [r for r in BLOCK_PARAMETER_ERRORS if r[0] is not MC_MoveJog][::6], ids=_row_id)
-def test_parameter_error_latched_while_execute_9_5_2(row):
+def test_s7_1200_parameter_error_latched_while_execute_9_5_2(row):
     """§9.5.2: Error is TRUE for at least one cycle, latched while Execute stays TRUE and reset together
     with Execute (ErrorID back to 16#0000)."""
     cls, kind, homed, inputs, error_id, error_info = row

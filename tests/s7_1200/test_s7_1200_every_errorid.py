@@ -415,7 +415,7 @@ CASES = [
 
 @pytest.mark.parametrize("error_id, error_info, scenario, at_power, disabled", CASES,
                          ids=[f"16#{c[0]:04X}-16#{c[1]:04X}" for c in CASES])
-def test_12_8_error_id(error_id, error_info, scenario, at_power, disabled):
+def test_s7_1200_12_8_error_id(error_id, error_info, scenario, at_power, disabled):
     """§12.8 / §9.6: the ErrorID/ErrorInfo appears at the triggering instruction; errors with axis stop and
     configuration errors of the axis also at MC_Power, and their reaction (remove enable or not)."""
     inst, rig = scenario()
@@ -434,7 +434,7 @@ def test_12_8_error_id(error_id, error_info, scenario, at_power, disabled):
         assert rig.axis.StatusBits.Enable is (not disabled)
 
 
-def test_positioning_window_left_during_dwell_12_8_800F_0046():
+def test_s7_1200_positioning_window_left_during_dwell_12_8_800F_0046():
     """§5.4.4.6 / §12.8 16#800F/16#0046: the actual value leaves the positioning window during the
     minimum dwell time (pushed by a disturbance: the simulated load is moved)."""
     r = Rig(merge(SERVO, {"PositioningMonitoring": {"Window": 0.05, "ToleranceTime": 1.0, "MinDwellTime": 0.5}}))
@@ -465,7 +465,7 @@ NOT_PRODUCIBLE = {
 }
 
 
-def test_not_producible_codes_are_documented():
+def test_s7_1200_not_producible_codes_are_documented():
     """Every code listed as not producible is explained in docs/errorids.md."""
     from pathlib import Path
 

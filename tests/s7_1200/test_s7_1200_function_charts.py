@@ -352,7 +352,7 @@ def check_enable(ch: Chart, e: int) -> int:
 
 
 @pytest.mark.parametrize("drive", DRIVE_IDS)
-def test_mc_power_chart_1_enable_then_disable(drive):
+def test_s7_1200_mc_power_chart_1_enable_then_disable(drive):
     """S-PWR-1, §11.1.1.2 ①/③: 'An axis is enabled and then disabled again. When the drive has signaled
     "Drive ready" back to the CPU, the successful enable can be read out via "Status_1".'  The axis moves
     at 20.0 when Enable_1 goes FALSE: StopMode 0 brakes with the emergency deceleration and Status_1 goes
@@ -412,7 +412,7 @@ def test_mc_power_chart_1_enable_then_disable(drive):
 
 
 @pytest.mark.parametrize("drive", DRIVE_IDS)
-def test_mc_power_chart_2_error_reset_reenable(drive):
+def test_s7_1200_mc_power_chart_2_error_reset_reenable(drive):
     """S-PWR-2, §11.1.1.2 ②: 'Following an axis enable, an error has occurred that caused the axis to be
     disabled. The error is eliminated and acknowledged with "MC_Reset". The axis is then enabled again.'
     (§11.1.1.1: re-enabled automatically because Enable stayed TRUE).  The error: PTO 'Drive ready' lost
@@ -502,7 +502,7 @@ def halt_chart(name: str, drive: str, description: str):
 
 
 @pytest.mark.parametrize("drive", DRIVE_IDS)
-def test_mc_halt_chart_1_halt_with_done(drive):
+def test_s7_1200_mc_halt_chart_1_halt_with_done(drive):
     """S-HALT-1, §11.1.4.2 ①: 'The axis is braked by an MC_Halt command until it comes to a standstill. The
     axis standstill is signaled via "Done_2".'  MC_Halt brakes 'with the configured deceleration'
     (§11.1.4.1) 5.0.  The moving command is MC_MoveVelocity_1 at 20.0 whose Execute_1 is already FALSE:
@@ -548,7 +548,7 @@ def test_mc_halt_chart_1_halt_with_done(drive):
 
 
 @pytest.mark.parametrize("drive", DRIVE_IDS)
-def test_mc_halt_chart_2_halt_aborted(drive):
+def test_s7_1200_mc_halt_chart_2_halt_aborted(drive):
     """S-HALT-2, §11.1.4.2 ②: 'While an MC_Halt command is braking the axis, this command is aborted by
     another motion command. The abort is signaled via "Abort_2".'  The other command: a new
     MC_MoveVelocity_1 (20.0) 1.0 s into the braking; the axis follows it without stopping."""
@@ -759,7 +759,7 @@ def override_positioning(ch: Chart, v2: float, target_of: Callable[[float], floa
 
 
 @pytest.mark.parametrize("drive", DRIVE_IDS)
-def test_mc_move_absolute_chart_1_sequential(drive):
+def test_s7_1200_mc_move_absolute_chart_1_sequential(drive):
     """S-MABS-1, §11.1.5.2 ①: 'An axis is moved to absolute position 1000.0 ... signaled via "Done_1". When
     "Done_1" = TRUE, another MC_MoveAbsolute command, with target position 1500.0, is started. Because of
     the response times ... the axis comes to a standstill briefly. When the axis reaches the new target
@@ -770,7 +770,7 @@ def test_mc_move_absolute_chart_1_sequential(drive):
 
 
 @pytest.mark.parametrize("drive", DRIVE_IDS)
-def test_mc_move_absolute_chart_2_override(drive):
+def test_s7_1200_mc_move_absolute_chart_2_override(drive):
     """S-MABS-2, §11.1.5.2 ②: 'An active MC_MoveAbsolute command is aborted by another MC_MoveAbsolute
     command. The abort is signaled via "Abort_1". The axis is then moved at the new velocity to the new
     target position 1500.0.'  Instance 1: 1000.0 at 50.0; instance 2: 1500.0 at 80.0, started at
@@ -782,7 +782,7 @@ def test_mc_move_absolute_chart_2_override(drive):
 
 
 @pytest.mark.parametrize("drive", DRIVE_IDS)
-def test_mc_move_relative_chart_1_sequential(drive):
+def test_s7_1200_mc_move_relative_chart_1_sequential(drive):
     """S-MREL-1, §11.1.6.2 ①: 'The axis is moved by an MC_MoveRelative command by the distance 1000.0 ...
     "Done_1". When "Done_1" = TRUE, another MC_MoveRelative command, with travel distance 500.0, is
     started ... the axis comes to a standstill briefly ... "Done_2".'  From Position 0.0: 1000.0, 1500.0."""
@@ -793,7 +793,7 @@ def test_mc_move_relative_chart_1_sequential(drive):
 
 
 @pytest.mark.parametrize("drive", DRIVE_IDS)
-def test_mc_move_relative_chart_2_override(drive):
+def test_s7_1200_mc_move_relative_chart_2_override(drive):
     """S-MREL-2, §11.1.6.2 ②: 'An active MC_MoveRelative command is aborted by another MC_MoveRelative
     command. The abort is signaled via "Abort_1". The axis is then moved at the new velocity by the new
     distance 500.0.'  The distance counts from the position at the override (§11.1.6.1 'relative to the
@@ -840,7 +840,7 @@ def check_second_velocity(ch: Chart, o: int, x2: int) -> int:
 
 
 @pytest.mark.parametrize("drive", DRIVE_IDS)
-def test_mc_move_velocity_chart_1_reached_then_overridden(drive):
+def test_s7_1200_mc_move_velocity_chart_1_reached_then_overridden(drive):
     """S-MVEL-1, §11.1.7.2 ①: 'An active MC_MoveVelocity command signals via "InVel_1" that its target
     velocity has been reached. It is then aborted by another MC_MoveVelocity command. The abort is
     signaled via "Abort_1". When the new target velocity 15.0 is reached, this is signaled via "InVel_2".
@@ -876,7 +876,7 @@ def test_mc_move_velocity_chart_1_reached_then_overridden(drive):
 
 
 @pytest.mark.parametrize("drive", DRIVE_IDS)
-def test_mc_move_velocity_chart_2_overridden_before_reached(drive):
+def test_s7_1200_mc_move_velocity_chart_2_overridden_before_reached(drive):
     """S-MVEL-2, §11.1.7.2 ②: 'An active MC_MoveVelocity command is aborted by another MC_MoveVelocity
     command prior to reaching its target velocity. The abort is signaled via "Abort_1". When the new
     target velocity 15.0 is reached, this is signaled via "InVel_2".'  Instance 1 (30.0) is started with
@@ -948,7 +948,7 @@ def check_release(ch: Chart, r: int, v: float) -> None:
 
 
 @pytest.mark.parametrize("drive", DRIVE_IDS)
-def test_mc_move_jog_chart_1_forward(drive):
+def test_s7_1200_mc_move_jog_chart_1_forward(drive):
     """S-JOG-1, §11.1.8.2 ①: 'The axis is moved in the positive direction in jog mode via "Jog_F". When the
     target velocity 50.0 is reached, this is signaled via "InVel_1". After "Jog_F" is reset, the axis is
     braked to a standstill.'  Acceleration 10.0: 5 s (PTO 4.9 s from the start/stop velocity), deceleration
@@ -975,7 +975,7 @@ def test_mc_move_jog_chart_1_forward(drive):
 
 
 @pytest.mark.parametrize("drive", DRIVE_IDS)
-def test_mc_move_jog_chart_2_backward_velocity_change(drive):
+def test_s7_1200_mc_move_jog_chart_2_backward_velocity_change(drive):
     """S-JOG-2, §11.1.8.2 ②: 'The axis is moved in the negative direction in jog mode via "Jog_B". When the
     target velocity -50.0 is reached, this is signaled via "InVel_1". When "Jog_B" is set, the value at
     parameter "Velocity" changes to 25.0. "InVel_1" is reset and the axis is braked. When the new target

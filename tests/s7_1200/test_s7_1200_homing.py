@@ -177,7 +177,7 @@ ACTIVE_CASES = [
 
 
 @pytest.mark.parametrize("positive,upper,start,mark,direction", ACTIVE_CASES)
-def test_5_4_4_5_active_homing_direction_and_side(positive, upper, start, mark, direction):
+def test_s7_1200_5_4_4_5_active_homing_direction_and_side(positive, upper, start, mark, direction):
     """§5.4.4.5 'Sequence - Active homing' and 'Approach/homing direction', 'Side of homing switch';
     §2.5 (HomingDone reset at the start of active homing, set again on success); §11.1.3.1
     (Done + HomingDone, ReferenceMarkPosition).  The axis searches at the approach velocity in the approach
@@ -208,7 +208,7 @@ def test_5_4_4_5_active_homing_direction_and_side(positive, upper, start, mark, 
     assert b.axis.Position == pytest.approx(42.0 + direction * V_REF ** 2 / (2 * 200.0), abs=0.02)
 
 
-def test_5_4_4_5_active_homing_status_while_searching():
+def test_s7_1200_5_4_4_5_active_homing_status_while_searching():
     """§11.1.3.1 / §9.5.2: Busy TRUE while homing; §12.9.23 StatusBits.HomingCommand TRUE while MC_Home
     runs; §2.5: HomingDone FALSE from the start of active homing."""
     b = Bench()
@@ -227,7 +227,7 @@ def test_5_4_4_5_active_homing_status_while_searching():
     pytest.param(True, 5.0, CAM_HI, id="S-HOME-3-upper-offset+5"),
     pytest.param(False, -5.0, CAM_LO, id="lower-offset-5"),
 ])
-def test_5_4_4_5_home_position_offset(upper, offset, mark):
+def test_s7_1200_5_4_4_5_home_position_offset(upper, offset, mark):
     """§5.4.4.5 'Home position offset' / 'Travel to home position offset': after homing at the switch the
     axis moves at the homing velocity by the offset; there it is at MC_Home.Position.  Decision #32: the
     switch end gets Position - HomePositionOffset; ReferenceMarkPosition shows Position - offset."""
@@ -247,7 +247,7 @@ def test_5_4_4_5_home_position_offset(upper, offset, mark):
 
 
 @pytest.mark.parametrize("upper,mark", [(False, CAM_LO), (True, CAM_HI)], ids=["lower", "upper"])
-def test_5_4_4_5_active_homing_starting_on_the_switch(upper, mark):
+def test_s7_1200_5_4_4_5_active_homing_starting_on_the_switch(upper, mark):
     """§5.4.4.5 (and §12.10.2.1 'the actual sequence can differ depending on the start position'): an axis
     standing on the homing switch is homed on the configured end, crossed in the homing direction
     (decision #31: brake, reposition as needed, cross that end)."""
@@ -268,7 +268,7 @@ def test_5_4_4_5_active_homing_starting_on_the_switch(upper, mark):
     pytest.param(True, 200.0, False, CAM_LO, +1.0, id="positive-reverses-at-high-limit"),
     pytest.param(False, 50.0, False, CAM_LO, -1.0, id="negative-reverses-at-low-limit"),
 ])
-def test_5_4_4_5_auto_reversal_at_hw_limit(positive, start, upper, mark, direction):
+def test_s7_1200_5_4_4_5_auto_reversal_at_hw_limit(positive, start, upper, mark, direction):
     """§5.4.4.5 'Permit auto reverse at HW limit switch': when the HW limit switch is reached during active
     homing the axis brakes with the configured deceleration (not the emergency deceleration), reverses and
     senses the homing switch in the reverse direction; homing then completes without error."""
@@ -296,7 +296,7 @@ def test_5_4_4_5_auto_reversal_at_hw_limit(positive, start, upper, mark, directi
     pytest.param(True, 200.0, 0x8004, id="high-limit-16#8004"),
     pytest.param(False, 50.0, 0x8003, id="low-limit-16#8003"),
 ])
-def test_5_4_4_5_hw_limit_without_auto_reversal(positive, start, error_id):
+def test_s7_1200_5_4_4_5_hw_limit_without_auto_reversal(positive, start, error_id):
     """§5.4.4.5: without direction reversal, reaching the HW limit switch during active homing aborts homing
     with an error and the axis is braked with the emergency stop deceleration; §12.8 16#8003/16#8004 with
     ErrorInfo 16#000E ('during active homing: homing switch not found'), shown at MC_Home and MC_Power
@@ -317,7 +317,7 @@ def test_5_4_4_5_hw_limit_without_auto_reversal(positive, start, error_id):
     assert overrun < V_APP ** 2 / (2 * 1000.0) + V_APP * 2 * SERVO + 1e-6
 
 
-def test_12_8_8009_switch_not_found_between_the_limits():
+def test_s7_1200_12_8_8009_switch_not_found_between_the_limits():
     """§12.8 16#8009/16#0033 'Reference switch / encoder zero mark not found' (reaction: stop with emergency stop
     ramp); decision #35: with auto reversal, reaching the second HW limit switch gives 16#8009/16#0033.  Here the
     homing switch input never becomes TRUE (no switch in the machine)."""
@@ -334,7 +334,7 @@ def test_12_8_8009_switch_not_found_between_the_limits():
     assert not b.axis.StatusBits.HomingDone
 
 
-def test_12_8_8404_0017_auto_reversal_with_hw_limits_disabled():
+def test_s7_1200_12_8_8404_0017_auto_reversal_with_hw_limits_disabled():
     """§12.8 16#8404/16#0017 'Direction reversal at HW limit activated although HW limits are disabled'
     (remedy: set <axis>.PositionLimits_HW.Active = TRUE); §5.4.4.5: the HW limit switches must be enabled
     for the reversal.  A block parameter error: only at MC_Home, the axis does not move."""
@@ -352,7 +352,7 @@ def test_12_8_8404_0017_auto_reversal_with_hw_limits_disabled():
     ("Homing.ApproachVelocity", 0x8011),
     ("Homing.ReferencingVelocity", 0x8012),
 ])
-def test_12_8_zero_homing_velocity(path, error_id):
+def test_s7_1200_12_8_zero_homing_velocity(path, error_id):
     """§12.8 16#8011/16#000A 'approach velocity ... is zero', 16#8012/16#000A 'homing velocity ... is zero':
     operating errors with axis stop, reaction remove enable; shown at MC_Home and MC_Power (§9.6);
     decision #39: checked when active homing starts."""
@@ -371,7 +371,7 @@ def test_12_8_zero_homing_velocity(path, error_id):
     pytest.param(0.5, V_REF, 0x8610, 0x0009, id="approach-below-start-stop"),
     pytest.param(V_APP, 0.5, 0x8611, 0x0009, id="homing-below-start-stop"),
 ])
-def test_12_8_homing_velocity_outside_start_stop_to_max(approach, referencing, error_id, error_info):
+def test_s7_1200_12_8_homing_velocity_outside_start_stop_to_max(approach, referencing, error_id, error_info):
     """§5.4.4.5 'Start/stop velocity <= approach (homing) velocity <= maximum velocity'; §12.8
     16#8610/16#8611 with 16#0008 (> maximum velocity) / 16#0009 (< start/stop velocity); configuration
     errors are shown at the triggering instruction and at MC_Power (§9.6); decision #39."""
@@ -386,7 +386,7 @@ def test_12_8_homing_velocity_outside_start_stop_to_max(approach, referencing, e
 # ---------------------------------------------------------------------------------------------------------
 # override behaviour of active homing
 @pytest.mark.parametrize("kind", ["MC_MoveVelocity", "MC_MoveRelative"])
-def test_11_1_3_active_homing_aborts_running_motion(kind):
+def test_s7_1200_11_1_3_active_homing_aborts_running_motion(kind):
     """§2.5 'Active homing ... Active traversing motions are aborted'; §11.1.3.1 override response Mode 3:
     aborts MC_MoveVelocity, MC_MoveRelative, ... (the aborted instance shows CommandAborted)."""
     b = Bench()
@@ -404,7 +404,7 @@ def test_11_1_3_active_homing_aborts_running_motion(kind):
     assert hm.Done and b.axis.StatusBits.HomingDone
 
 
-def test_11_1_3_mc_halt_aborts_active_homing():
+def test_s7_1200_11_1_3_mc_halt_aborts_active_homing():
     """§11.1.3.1 override response Mode 3: can be aborted by MC_Halt (CommandAborted at MC_Home); §12.8
     16#8207/16#0016 remedy 'abort active homing with a motion command (e.g. MC_Halt)'.  The axis stops and is
     not homed (HomingDone was reset at the start, §2.5)."""
@@ -423,7 +423,7 @@ def test_11_1_3_mc_halt_aborts_active_homing():
 
 
 @pytest.mark.parametrize("mode", [0, 1, 2])
-def test_12_8_8207_0016_other_homing_while_active_homing(mode):
+def test_s7_1200_12_8_8207_0016_other_homing_while_active_homing(mode):
     """§12.8 16#8207/16#0016 'active homing running; another homing method cannot be started'; §11.1.3.1:
     Mode 0/1 do not abort and Mode 2 is not listed as aborting Mode 3.  Active homing goes on."""
     b = Bench()
@@ -438,7 +438,7 @@ def test_12_8_8207_0016_other_homing_while_active_homing(mode):
     assert b.coordinate_of(CAM_LO) == pytest.approx(0.0, abs=V_REF * SERVO + PULSE + 1e-9)
 
 
-def test_11_1_3_active_homing_aborts_passive_homing():
+def test_s7_1200_11_1_3_active_homing_aborts_passive_homing():
     """§11.1.3.1 override response: Mode 3 aborts an active MC_Home Mode 2 (CommandAborted), and a new Mode 2
     aborts a Mode 2 command."""
     b = Bench()
@@ -467,7 +467,7 @@ PASSIVE_CASES = [
 
 
 @pytest.mark.parametrize("positive,upper,start,distance,mark", PASSIVE_CASES)
-def test_5_4_4_5_passive_homing_with_move_relative(positive, upper, start, distance, mark):
+def test_s7_1200_5_4_4_5_passive_homing_with_move_relative(positive, upper, start, distance, mark):
     """§5.4.4.5 'Sequence - Passive homing': MC_Home Mode 2 makes no motion; the user moves the axis with
     MC_MoveRelative; when the configured side of the switch is reached (in the homing direction, decision
     #34) the current position is set to Position, HomingDone TRUE, MC_Home Done; the travel is not
@@ -496,7 +496,7 @@ def test_5_4_4_5_passive_homing_with_move_relative(positive, upper, start, dista
     assert b.axis.Position == pytest.approx(50.0 + (start + distance - mark), abs=20.0 * SERVO + 2 * PULSE)
 
 
-def test_5_4_4_5_passive_homing_only_in_the_homing_direction():
+def test_s7_1200_5_4_4_5_passive_homing_only_in_the_homing_direction():
     """§5.4.4.5 'Use homing mark via digital input': the input is checked as soon as the axis moves in the
     assigned homing direction; decision #34: while moving, only the configured end crossed in the homing
     direction counts.  Crossing the switch against the homing direction does not home the axis."""
@@ -510,7 +510,7 @@ def test_5_4_4_5_passive_homing_only_in_the_homing_direction():
     assert not b.axis.StatusBits.HomingDone
 
 
-def test_5_4_4_5_passive_homing_keeps_homingdone_true():
+def test_s7_1200_5_4_4_5_passive_homing_keeps_homingdone_true():
     """§5.4.4.5: 'The tag StatusBits.HomingDone remains TRUE during passive homing if the axis has already been
     homed'; §2.5 lists no reset for passive homing."""
     b = Bench()
@@ -528,7 +528,7 @@ def test_5_4_4_5_passive_homing_keeps_homingdone_true():
     pytest.param(0.0, True, id="rising-edge"),
     pytest.param(110.0, False, id="falling-edge"),
 ])
-def test_5_4_4_5_passive_homing_at_standstill_next_edge(start, level):
+def test_s7_1200_5_4_4_5_passive_homing_at_standstill_next_edge(start, level):
     """§5.4.4.5 note: 'If passive homing is carried out without an axis motion command (axis at a standstill),
     homing will be executed upon the next rising or falling edge at the homing switch.'  The current position
     becomes Position (decision #34: whatever the side)."""
@@ -547,7 +547,7 @@ def test_5_4_4_5_passive_homing_at_standstill_next_edge(start, level):
 
 # ---------------------------------------------------------------------------------------------------------
 # input filter (§5.4.4.5 note on the 6.4 ms filter)
-def test_5_4_4_5_homing_error_grows_with_filter_time():
+def test_s7_1200_5_4_4_5_homing_error_grows_with_filter_time():
     """§5.4.4.5 note: the default filter time of 6.4 ms can result in inaccuracies.  Decision #33: the position
     is latched in the servo cycle in which the filtered input changes, so the error of the homed coordinate is
     homing velocity x (filter time + up to one servo cycle).  PROFIdrive axis (fine encoder, the switch sees the
@@ -576,7 +576,7 @@ def test_5_4_4_5_homing_error_grows_with_filter_time():
     pytest.param(0.2, 0.001, True, id="4ms-signal-filter-1ms"),
     pytest.param(0.075, 0.002, False, id="1.5ms-signal-filter-2ms"),
 ])
-def test_5_4_4_5_short_switch_missed_by_the_filter_passive(length, filt, found):
+def test_s7_1200_5_4_4_5_short_switch_missed_by_the_filter_passive(length, filt, found):
     """§5.4.4.5 note: 'Depending on the homing velocity and extent of the homing switch, the home position may
     not be detected ... The specified filter time must be less than the duration of the input signal at the
     homing switch.'  The switch is passed at 50 mm/s (0.2 mm: 4 ms, 0.075 mm: 1.5 ms); a signal shorter than
@@ -590,7 +590,7 @@ def test_5_4_4_5_short_switch_missed_by_the_filter_passive(length, filt, found):
     assert hm.Done is found and hm.Busy is not found
 
 
-def test_5_4_4_5_short_switch_missed_by_the_filter_active():
+def test_s7_1200_5_4_4_5_short_switch_missed_by_the_filter_active():
     """§5.4.4.5 note (filter longer than the switch signal: the home position may not be detected) with
     §5.4.4.5 'Permit auto reverse': without reversal the search ends at the HW limit switch with
     16#8004/16#000E ('homing switch not found', §12.8)."""
@@ -605,7 +605,7 @@ def test_5_4_4_5_short_switch_missed_by_the_filter_active():
 ZM = {"Sensor[1].Interface.Type": 2, "Plant.ZeroMarkOffset": 3.0}
 
 
-def test_5_4_4_5_zero_mark_homing_exact():
+def test_s7_1200_5_4_4_5_zero_mark_homing_exact():
     """§5.4.4.5 'Use zero mark via PROFIdrive telegram' (ActiveHoming.Mode 0): the axis is homed at the encoder
     zero mark in the homing direction; decision #33: zero marks are latched exactly (no input filter).  Zero
     marks every encoder revolution (LeadScrew 10) from machine position 3.0."""
@@ -618,7 +618,7 @@ def test_5_4_4_5_zero_mark_homing_exact():
     assert hm.ReferenceMarkPosition == pytest.approx(42.0)
 
 
-def test_5_4_4_5_proximity_switch_and_zero_mark_homing_exact():
+def test_s7_1200_5_4_4_5_proximity_switch_and_zero_mark_homing_exact():
     """§5.4.4.5 'Use zero mark via PROFIdrive telegram and proximity switch' (Mode 1): after the proximity
     switch is reached and left again in the homing direction, the next zero mark homes the axis.  Switch
     [100, 120], zero marks at 3 + 10k -> homed at 123.0 exactly even with the 6.4 ms input filter."""
@@ -637,7 +637,7 @@ ABS = {"Sensor[1].Type": 1, "Sensor[1].Interface.Type": 2, "Sensor[1].Parameter.
        "Plant.InitialPosition": 37.5}
 
 
-def test_11_1_3_absolute_encoder_adjustment_retentive(tmp_path):
+def test_s7_1200_11_1_3_absolute_encoder_adjustment_retentive(tmp_path):
     """§11.1.3.1 Mode 7 (current position set to Position) and Mode 6 (offset by Position); the absolute value
     offset is stored retentively (StatusSensor.AbsEncoderOffset); §2.5 / §9.4: with absolute actual values the
     homed status survives POWER OFF -> ON; decision #52 (state file)."""
@@ -681,7 +681,7 @@ def test_11_1_3_absolute_encoder_adjustment_retentive(tmp_path):
 
 
 @pytest.mark.parametrize("mode", [6, 7])
-def test_12_8_8404_0055_modes_6_7_on_incremental_encoder(mode):
+def test_s7_1200_12_8_8404_0055_modes_6_7_on_incremental_encoder(mode):
     """§12.8 16#8404/16#0055 'Invalid mode for incremental encoder (use Mode 0, 1, 2, 3)'; decision #28."""
     b = Bench(actor=1)
     hm = b.start(MC_Home(), Mode=mode, Position=1.0)
@@ -691,7 +691,7 @@ def test_12_8_8404_0055_modes_6_7_on_incremental_encoder(mode):
 
 
 @pytest.mark.parametrize("mode", [6, 7])
-def test_11_1_3_modes_6_7_not_on_pto(mode):
+def test_s7_1200_11_1_3_modes_6_7_not_on_pto(mode):
     """§11.1.3.1 'Mode 6 and 7 can only be used with drives with an analog interface and PROFIdrive drive';
     decision #28: PTO gives 16#8404/16#0011."""
     b = Bench()
@@ -701,7 +701,7 @@ def test_11_1_3_modes_6_7_not_on_pto(mode):
 
 
 @pytest.mark.parametrize("mode", [2, 3])
-def test_12_8_8404_0056_modes_2_3_on_absolute_encoder(mode, tmp_path):
+def test_s7_1200_12_8_8404_0056_modes_2_3_on_absolute_encoder(mode, tmp_path):
     """§12.8 16#8404/16#0056 'Invalid mode for absolute encoder (Mode 2/3 impossible; use Mode 0, 1)'."""
     b = Bench(actor=1, extra=ABS, state_file=str(tmp_path / "r.json"))
     hm = b.start(MC_Home(), Mode=mode, Position=1.0)
@@ -719,7 +719,7 @@ def _disable_enable(b: Bench) -> None:
     b.until(lambda: b.power.Status, 1.0, "enabled")
 
 
-def test_2_5_pto_homed_reset_by_disabling():
+def test_s7_1200_2_5_pto_homed_reset_by_disabling():
     """§2.5 PTO: 'Disabling of axis by the MC_Power Motion Control instruction' resets HomingDone; §11.1.1
     MC_Power Status FALSE: 'PTO: axis not homed'."""
     b = Bench()
@@ -728,7 +728,7 @@ def test_2_5_pto_homed_reset_by_disabling():
     assert not b.axis.StatusBits.HomingDone
 
 
-def test_2_5_pto_homed_reset_by_power_cycle_and_cpu_restart():
+def test_s7_1200_2_5_pto_homed_reset_by_power_cycle_and_cpu_restart():
     """§2.5 PTO: 'After POWER OFF -> POWER ON of the CPU' and 'After CPU restart (RUN-STOP -> STOP-RUN)'."""
     b = Bench()
     b.direct_home(0.0)
@@ -743,7 +743,7 @@ def test_2_5_pto_homed_reset_by_power_cycle_and_cpu_restart():
     assert not b.axis.StatusBits.HomingDone
 
 
-def test_2_5_incremental_homed_kept_when_disabled_reset_by_power_cycle():
+def test_s7_1200_2_5_incremental_homed_kept_when_disabled_reset_by_power_cycle():
     """§2.5 'Technology objects with incremental actual values': disabling is not a reset condition (only for
     PTO); 'After POWER OFF -> POWER ON of the CPU' resets HomingDone."""
     b = Bench(actor=1)
@@ -755,7 +755,7 @@ def test_2_5_incremental_homed_kept_when_disabled_reset_by_power_cycle():
     assert not b.axis.StatusBits.HomingDone
 
 
-def test_2_5_incremental_homed_reset_by_to_restart():
+def test_s7_1200_2_5_incremental_homed_reset_by_to_restart():
     """§2.5 incremental actual values: 'Restart of the technology object' (§9.7: MC_Reset with Restart = TRUE,
     axis disabled) resets HomingDone."""
     b = Bench(actor=1)
@@ -769,7 +769,7 @@ def test_2_5_incremental_homed_reset_by_to_restart():
     assert not b.axis.StatusBits.HomingDone
 
 
-def test_2_5_absolute_homed_kept(tmp_path):
+def test_s7_1200_2_5_absolute_homed_kept(tmp_path):
     """§2.5 'Technology objects with absolute actual values': the reset conditions are encoder errors, CPU
     replacement, encoder configuration change, factory settings, another project -- not disabling, TO restart
     or POWER OFF -> ON (§9.4: 'With an absolute encoder the homed status survives POWER OFF')."""

@@ -145,7 +145,7 @@ def drive_into_switch(b: Bench, velocity: float) -> tuple[MC_MoveVelocity, int]:
 # ---------------------------------------------------------------------------------------------------------
 # reaction when a HW limit switch is approached
 @pytest.mark.parametrize("side,start,velocity,error_id,status_bit", SIDES)
-def test_5_4_4_3_pto_hw_limit_emergency_stop_axis_stays_enabled(side, start, velocity, error_id, status_bit):
+def test_s7_1200_5_4_4_3_pto_hw_limit_emergency_stop_axis_stays_enabled(side, start, velocity, error_id, status_bit):
     """§5.4.4.3 'Drive connection via PTO': when the hardware limit switch is approached the axis brakes to a
     standstill at the configured emergency deceleration; the error 'HW limit switch approached' is shown at
     the initiating instruction, at MC_Power and in the TO tags; §12.8 16#8003/16#8004 with 16#000E, PTO
@@ -169,7 +169,7 @@ def test_5_4_4_3_pto_hw_limit_emergency_stop_axis_stays_enabled(side, start, vel
 
 @pytest.mark.parametrize("actor", [1, 0], ids=["PROFIdrive", "analog"])
 @pytest.mark.parametrize("side,start,velocity,error_id,status_bit", SIDES)
-def test_5_4_4_3_servo_hw_limit_removes_enable(actor, side, start, velocity, error_id, status_bit):
+def test_s7_1200_5_4_4_3_servo_hw_limit_removes_enable(actor, side, start, velocity, error_id, status_bit):
     """§5.4.4.3 'Drive connection via PROFIdrive / analog output': when a hardware limit switch is approached
     the axis is disabled and braked by the drive; §12.8 16#8003/16#8004 reaction PD/AQ 'remove enable':
     MC_Power.Status FALSE, the drive enable output FALSE; error at the instruction and at MC_Power."""
@@ -187,7 +187,7 @@ def test_5_4_4_3_servo_hw_limit_removes_enable(actor, side, start, velocity, err
     assert not b.power.Status
 
 
-def test_5_4_4_3_hw_limit_error_at_the_initiating_instruction():
+def test_s7_1200_5_4_4_3_hw_limit_error_at_the_initiating_instruction():
     """§5.4.4.3: 'The HW limit switch approached error is displayed in the initiating Motion Control
     instruction, at MC_Power, and in the technology object variables' (here MC_MoveRelative)."""
     b = Bench(1, extra={"Plant.InitialPosition": 280.0})
@@ -202,7 +202,7 @@ def test_5_4_4_3_hw_limit_error_at_the_initiating_instruction():
 # freeing the axis
 @pytest.mark.parametrize("actor", [2, 1], ids=["PTO", "PROFIdrive"])
 @pytest.mark.parametrize("side,start,velocity,error_id,status_bit", SIDES)
-def test_12_8_free_only_in_the_opposite_direction(actor, side, start, velocity, error_id, status_bit):
+def test_s7_1200_12_8_free_only_in_the_opposite_direction(actor, side, start, velocity, error_id, status_bit):
     """§12.8 16#8003/16#8004 remedy: acknowledge, then move out of the limit in the opposite direction;
     16#800E/16#0042 'illegal free-travel direction with active HW limit switch' (reaction remove enable);
     §5.4.4.3 the switch stays actuated until the axis is back in the valid range; §11.1.1.1 auto re-enable
@@ -236,7 +236,7 @@ def test_12_8_free_only_in_the_opposite_direction(actor, side, start, velocity, 
     assert not b.axis.StatusBits.Error and not b.power.Error
 
 
-def test_12_8_800E_0044_both_switches_active():
+def test_s7_1200_12_8_800E_0044_both_switches_active():
     """§12.8 16#800E/16#0044 'Both HW limit switches active; axis cannot be freed', reaction remove enable.
     Both NC contacts open at once (low level = approached, §5.4.4.3)."""
     b = Bench(1)
@@ -256,7 +256,7 @@ def test_12_8_800E_0044_both_switches_active():
         assert mr.Error and (mr.ErrorID, mr.ErrorInfo) == (0x800E, 0x0044), (distance, mr.outputs)
 
 
-def test_decision_36_800E_0043_switch_approached_while_moving_away():
+def test_s7_1200_decision_36_800E_0043_switch_approached_while_moving_away():
     """§12.8 16#800E/16#0043 'HW limit switch polarity reversed; axis cannot be freed', reaction remove
     enable; decision #36: a HW limit switch that becomes actuated while the axis moves away from it."""
     b = Bench(1)
@@ -273,7 +273,7 @@ def test_decision_36_800E_0043_switch_approached_while_moving_away():
 # ---------------------------------------------------------------------------------------------------------
 # enabling the switches, levels
 @pytest.mark.parametrize("actor", [2, 1], ids=["PTO", "PROFIdrive"])
-def test_5_4_4_3_hw_limits_ignored_when_not_active(actor):
+def test_s7_1200_5_4_4_3_hw_limits_ignored_when_not_active(actor):
     """§5.4.4.3 'Enable HW limit switches' (PositionLimits_HW.Active = FALSE): the switches have no function;
     the axis passes them without error and the status bits stay FALSE."""
     b = Bench(actor, extra={"PositionLimits_HW.Active": False, "Plant.InitialPosition": 280.0})
@@ -287,7 +287,7 @@ def test_5_4_4_3_hw_limits_ignored_when_not_active(actor):
 
 
 @pytest.mark.parametrize("actor", [2, 1], ids=["PTO", "PROFIdrive"])
-def test_5_4_4_3_hw_limits_deactivated_at_runtime(actor):
+def test_s7_1200_5_4_4_3_hw_limits_deactivated_at_runtime(actor):
     """§5.4.4.3 'Changing the configuration of the position limits in the user program': the HW limit
     switches can be deactivated at runtime with <axis>.PositionLimits_HW.Active (RW)."""
     b = Bench(actor, extra={"Plant.InitialPosition": 280.0})
@@ -299,7 +299,7 @@ def test_5_4_4_3_hw_limits_deactivated_at_runtime(actor):
     assert not b.axis.ErrorBits.HWLimit and not b.power.Error
 
 
-def test_5_4_4_3_low_level_nc_contact():
+def test_s7_1200_5_4_4_3_low_level_nc_contact():
     """§5.4.4.3 'Select level': 'Low level' (normally closed contact): 0 V (FALSE) at the CPU input = hardware
     limit switch approached.  Inside the travel range the inputs are TRUE; a broken wire (0 V) counts as
     approached."""
@@ -312,7 +312,7 @@ def test_5_4_4_3_low_level_nc_contact():
     assert (b.power.ErrorID, b.power.ErrorInfo) == (0x8003, 0x000E)
 
 
-def test_5_4_4_3_high_level_no_contact():
+def test_s7_1200_5_4_4_3_high_level_no_contact():
     """§5.4.4.3 'Select level': 'High level' (normally open contact): TRUE at the CPU input = approached.
     Inside the travel range the inputs are FALSE; the switch reached by the load sets the input."""
     b = Bench(extra={"PositionLimits_HW.MinSwitchLevel": True, "PositionLimits_HW.MaxSwitchLevel": True,
@@ -324,7 +324,7 @@ def test_5_4_4_3_high_level_no_contact():
     assert b.ctl.inputs["I0.2"] and b.axis.StatusBits.HWLimitMaxActive
 
 
-def test_5_4_4_3_status_bits_follow_the_switch_without_error_bits_after_reset():
+def test_s7_1200_5_4_4_3_status_bits_follow_the_switch_without_error_bits_after_reset():
     """§10.1 / §12.9.23: StatusBits.HWLimitMaxActive 'high HW limit reached or exceeded' while the switch is
     actuated; ErrorBits.HWLimit (§12.9.24) only while the error is pending."""
     b = Bench(1, extra={"Plant.InitialPosition": 250.0})

@@ -140,7 +140,7 @@ READY = {"Actor.Interface.DriveReadyInput": "I0.3"}
 
 
 @pytest.mark.parametrize("actor", [2, 1], ids=["PTO", "PROFIdrive"])
-def test_11_1_1_enable_waits_for_drive_ready_input(actor):
+def test_s7_1200_11_1_1_enable_waits_for_drive_ready_input(actor):
     """§11.1.1.1 'Enabling an axis with configured drive interface': the enable output is set, the CPU waits for
     'Drive ready'; Status (and StatusBits.Enable) TRUE only once the ready input is TRUE; §5.4.3.2."""
     b = Bench(actor, READY, enable=False)
@@ -157,7 +157,7 @@ def test_11_1_1_enable_waits_for_drive_ready_input(actor):
 
 
 @pytest.mark.parametrize("actor", [2, 1], ids=["PTO", "PROFIdrive"])
-def test_12_8_8000_drive_ready_lost(actor):
+def test_s7_1200_12_8_8000_drive_ready_lost(actor):
     """§12.8 16#8000/16#0001 'Drive error, loss of Drive ready' (remedy: acknowledge, restore the drive signal);
     decision #38: remove enable; decision #25: ErrorBits.DriveFault; S-PWR-2: error at MC_Power, Status FALSE,
     after removing the cause and MC_Reset the axis is enabled again (Enable stayed TRUE)."""
@@ -177,7 +177,7 @@ def test_12_8_8000_drive_ready_lost(actor):
 
 
 @pytest.mark.parametrize("actor", [2, 1], ids=["PTO", "PROFIdrive"])
-def test_12_8_8000_injected_drive_not_ready(actor):
+def test_s7_1200_12_8_8000_injected_drive_not_ready(actor):
     """§12.8 16#8000/16#0001: the drive withdraws 'Drive ready' (fault injection); remove enable (decision #38),
     acknowledged by MC_Reset, re-enabled automatically."""
     b = Bench(actor, READY)
@@ -198,7 +198,7 @@ DRIVE_FAULTS = [("", 0x0001), ("control_requested", 0x003C), ("shutdown", 0x003D
 
 
 @pytest.mark.parametrize("detail,info", DRIVE_FAULTS, ids=[f"16#{i:04X}" for _, i in DRIVE_FAULTS])
-def test_12_8_800C_drive_fault(detail, info):
+def test_s7_1200_12_8_800C_drive_fault(detail, info):
     """§12.8 16#800C 'Alarm message from drive' (16#0001), 'Control requested failed' (16#003C), 'drive has shut
     down' (16#003D), 'station failure' (16#003E), 'sign of life faulty' (16#003F): reaction remove enable; shown at
     the active instruction and MC_Power; decision #25: ErrorBits.DriveFault; acknowledged (cause gone) -> the axis
@@ -215,7 +215,7 @@ def test_12_8_800C_drive_fault(detail, info):
     assert_re_enabled(b)
 
 
-def test_12_8_800C_003D_analog_drive_shut_down():
+def test_s7_1200_12_8_800C_003D_analog_drive_shut_down():
     """§12.8 16#800C/16#003D 'PROFIdrive/analog: drive has shut down' on an analog drive: remove enable."""
     b = Bench(0)
     b.moving()
@@ -233,7 +233,7 @@ ENCODER_FAULTS = [("", 0x0001), ("hardware", 0x0034), ("dirty", 0x0035), ("absol
 
 
 @pytest.mark.parametrize("detail,info", ENCODER_FAULTS, ids=[f"16#{i:04X}" for _, i in ENCODER_FAULTS])
-def test_12_8_800A_encoder_fault_resets_homing_done(detail, info):
+def test_s7_1200_12_8_800A_encoder_fault_resets_homing_done(detail, info):
     """§12.8 16#800A (16#0001 alarm from encoder, 16#0034 hardware error, 16#0035 dirty, 16#0036 absolute value,
     16#0037 zero mark monitoring, 16#0038 parking, 16#0040 station failure, 16#0041 sign of life), reaction remove
     enable; §2.5 incremental actual values: 'Error in the encoder system, or encoder failure' resets HomingDone;
@@ -260,7 +260,7 @@ ABS = {"Sensor[1].Type": 1, "Sensor[1].Interface.Type": 2, "Sensor[1].Parameter.
        "Plant.InitialPosition": 37.5}
 
 
-def test_2_5_absolute_encoder_fault_resets_homing_done(tmp_path):
+def test_s7_1200_2_5_absolute_encoder_fault_resets_homing_done(tmp_path):
     """§2.5 'Technology objects with absolute actual values': 'Errors in the sensor system/encoder failure' reset
     the Homed status; it is not restored by a later POWER OFF -> ON (the retentive homed status was lost with
     the error, decision #52)."""
@@ -289,7 +289,7 @@ def test_2_5_absolute_encoder_fault_resets_homing_done(tmp_path):
     ("encoder", "dirty", 0x800A, 0x0035),
     ("drive", "shutdown", 0x800C, 0x003D),
 ])
-def test_11_1_2_persistent_fault_not_acknowledged_until_cleared(kind, detail, error_id, info):
+def test_s7_1200_11_1_2_persistent_fault_not_acknowledged_until_cleared(kind, detail, error_id, info):
     """§11.1.2.1 MC_Reset: requirement 'cause of a pending error removed'; success = Done and StatusBits.Error
     FALSE.  While the cause persists the error stays (StatusBits.Error TRUE, MC_Power shows it, the axis is not
     enabled); once it is removed, MC_Reset acknowledges it and the axis is enabled again (§11.1.1.1)."""
@@ -310,7 +310,7 @@ def test_11_1_2_persistent_fault_not_acknowledged_until_cleared(kind, detail, er
     assert_re_enabled(b)
 
 
-def test_11_1_1_no_re_enable_when_enable_was_reset():
+def test_s7_1200_11_1_1_no_re_enable_when_enable_was_reset():
     """§11.1.1.1: the automatic re-enable applies only 'provided Enable stayed TRUE'.  With Enable FALSE at the
     acknowledgement the axis stays disabled until a new enable."""
     b = Bench(1)
@@ -329,7 +329,7 @@ def test_11_1_1_no_re_enable_when_enable_was_reset():
     assert_re_enabled(b)
 
 
-def test_12_8_fault_during_standstill_disable_output():
+def test_s7_1200_12_8_fault_during_standstill_disable_output():
     """§5.4.3.2 / §11.1.1.1: the drive enable output is controlled by MC_Power; §12.8 remove enable on a drive
     fault also at standstill: the output goes FALSE and MC_Power.Status FALSE."""
     b = Bench(1)

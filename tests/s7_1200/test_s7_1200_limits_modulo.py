@@ -101,7 +101,7 @@ MOVES = [MC_MoveAbsolute, MC_MoveRelative, MC_MoveVelocity, MC_MoveJog]
 # ----------------------------------------------------------------------------------------------------
 @pytest.mark.parametrize("kind", ["pd", "pto"])
 @pytest.mark.parametrize("direction", [+1, -1], ids=["positive", "negative"])
-def test_sw_limits_act_only_when_homed_5_4_4_3(kind, direction):
+def test_s7_1200_sw_limits_act_only_when_homed_5_4_4_3(kind, direction):
     """§5.4.4.3 note: "Activated software limit switches act only on a homed axis" -- an axis that is
     not homed travels through the configured limit positions without error."""
     ctl, axis, power = make(kind)
@@ -119,7 +119,7 @@ def test_sw_limits_act_only_when_homed_5_4_4_3(kind, direction):
 @pytest.mark.parametrize("kind", ["pd", "pto"])
 @pytest.mark.parametrize("direction", [+1, -1], ids=["high", "low"])
 @pytest.mark.parametrize("cls", MOVES, ids=lambda c: c.__name__)
-def test_sw_limit_stop_exactly_at_limit_with_configured_deceleration_5_4_4_3(kind, direction, cls):
+def test_s7_1200_sw_limit_stop_exactly_at_limit_with_configured_deceleration_5_4_4_3(kind, direction, cls):
     """§5.4.4.3 "Behavior of axis when software limit switches are reached": the motion is stopped at
     the position of the SW limit switch, braked with the configured deceleration (not the emergency
     deceleration); §12.8 16#8001/16#8002 ErrorInfo 16#000E at the instruction and at MC_Power;
@@ -156,7 +156,7 @@ def test_sw_limit_stop_exactly_at_limit_with_configured_deceleration_5_4_4_3(kin
 
 @pytest.mark.parametrize("kind", ["pd", "pto"])
 @pytest.mark.parametrize("direction", [+1, -1], ids=["high", "low"])
-def test_sw_limit_reset_then_free_direction_12_8(kind, direction):
+def test_s7_1200_sw_limit_reset_then_free_direction_12_8(kind, direction):
     """§12.8 remedy of 16#8001/16#8002: acknowledge with MC_Reset, then move the axis out of the limit
     in the free direction (negative out of the high limit, positive out of the low limit)."""
     ctl, axis, power = make(kind)
@@ -185,7 +185,7 @@ def test_sw_limit_reset_then_free_direction_12_8(kind, direction):
 @pytest.mark.parametrize("kind", ["pd", "pto"])
 @pytest.mark.parametrize("direction", [+1, -1], ids=["high", "low"])
 @pytest.mark.parametrize("cls", MOVES, ids=lambda c: c.__name__)
-def test_sw_limit_further_into_limit_refused_12_8(kind, direction, cls):
+def test_s7_1200_sw_limit_further_into_limit_refused_12_8(kind, direction, cls):
     """§12.8 16#8001/16#8002: after MC_Reset, only the free direction is possible; a motion further
     into the limit is stopped at once with the SW limit error again and the setpoint stays at the
     limit position (§5.4.4.3)."""
@@ -217,7 +217,7 @@ def test_sw_limit_further_into_limit_refused_12_8(kind, direction, cls):
 
 
 @pytest.mark.parametrize("kind", ["pd", "pto"])
-def test_sw_limit_velocity_execute_false_only_at_mc_power_9_5_3(kind):
+def test_s7_1200_sw_limit_velocity_execute_false_only_at_mc_power_9_5_3(kind):
     """§9.5.3 exception: velocity reached, Execute FALSE, then an axis error (SW limit switch) occurs:
     MC_MoveVelocity shows no Error, the error is only shown at MC_Power."""
     ctl, axis, power = make(kind)
@@ -242,7 +242,7 @@ def test_sw_limit_velocity_execute_false_only_at_mc_power_9_5_3(kind):
 
 
 @pytest.mark.parametrize("kind", ["pd", "pto"])
-def test_move_inside_limits_no_error_5_4_4_3(kind):
+def test_s7_1200_move_inside_limits_no_error_5_4_4_3(kind):
     """§5.4.4.3: a target inside the SW limits is reached without any limit reaction."""
     ctl, axis, power = make(kind)
     home(ctl, axis, 0.0)
@@ -320,7 +320,7 @@ MODULO_CASES = [
 
 @pytest.mark.parametrize("p0,target,direction,velocity,travel", MODULO_CASES,
                          ids=[f"{c[0]:g}->{c[1]:g}-dir{c[2]}-v{c[3]:g}" for c in MODULO_CASES])
-def test_modulo_move_absolute_direction_5_4_4_2(p0, target, direction, velocity, travel):
+def test_s7_1200_modulo_move_absolute_direction_5_4_4_2(p0, target, direction, velocity, travel):
     """§5.4.4.2 / §11.1.5 Direction on a modulo axis: 1 positive, 2 negative, 3 shortest distance,
     0 sign of Velocity; a Position outside the modulo range ends at the equivalent position inside it
     (400° -> 40°).  The motion never runs against the selected direction."""
@@ -344,7 +344,7 @@ def test_modulo_move_absolute_direction_5_4_4_2(p0, target, direction, velocity,
 
 @pytest.mark.parametrize("start,length", [(0.0, 360.0), (-180.0, 360.0), (45.0, 90.0), (1000.0, 10.0)])
 @pytest.mark.parametrize("velocity", [100.0, -100.0])
-def test_modulo_position_tag_in_range_5_4_4_2(start, length, velocity):
+def test_s7_1200_modulo_position_tag_in_range_5_4_4_2(start, length, velocity):
     """§5.4.4.2: "the position value of the technology object is represented by means of a recurring
     modulo range" [StartValue, StartValue + Length) -- for the setpoint and the actual position, during
     several revolutions in both directions."""
@@ -362,7 +362,7 @@ def test_modulo_position_tag_in_range_5_4_4_2(start, length, velocity):
         assert max(values) < start + length
 
 
-def test_modulo_move_relative_wraps_11_1_6():
+def test_s7_1200_modulo_move_relative_wraps_11_1_6():
     """§11.1.6 target = start position + Distance; §5.4.4.2 the position is shown in the modulo range."""
     ctl, axis, power = make_modulo(home_at=10.0)
     tr = Travel(ctl, axis, 360.0)
@@ -376,7 +376,7 @@ def test_modulo_move_relative_wraps_11_1_6():
     assert min(tr.positions) >= 0.0 and max(tr.positions) < 360.0
 
 
-def test_modulo_axis_sw_limits_not_evaluated_decision():
+def test_s7_1200_modulo_axis_sw_limits_not_evaluated_decision():
     """Documented decision (manual silent; §2.5 of the catalog: the SW limit order check is for
     non-modulo axes only): SW limit switches are not evaluated on a modulo axis."""
     ctl, axis, power = make_modulo(home_at=0.0, PositionLimits_SW={"Active": True, "MinPosition": 10.0,
@@ -401,7 +401,7 @@ def _moving_pto(velocity=50.0):
     return ctl, axis, power, mv
 
 
-def test_pto_homing_shift_emergency_stop_at_limit_12_4_1_example_1():
+def test_s7_1200_pto_homing_shift_emergency_stop_at_limit_12_4_1_example_1():
     """§12.4.1 example 1: during a travel command a homing job (set reference point) moves the position
     toward the SW limit; the configured deceleration no longer suffices, the emergency deceleration does:
     constant motion, then braking with the emergency stop deceleration to standstill exactly at the
@@ -424,7 +424,7 @@ def test_pto_homing_shift_emergency_stop_at_limit_12_4_1_example_1():
     assert max(braking) == pytest.approx(EMERGENCY, rel=1e-6)
 
 
-def test_pto_homing_shift_overrun_12_4_1_example_2():
+def test_s7_1200_pto_homing_shift_overrun_12_4_1_example_2():
     """§12.4.1 example 2: even the emergency deceleration is not sufficient -- the axis overruns the SW
     limit; §12.8 16#8002 ErrorInfo 16#0010 with reaction "remove enable"."""
     ctl, axis, power, mv = _moving_pto(50.0)
@@ -438,7 +438,7 @@ def test_pto_homing_shift_overrun_12_4_1_example_2():
     assert axis.Position > LIMIT
 
 
-def test_pto_override_with_lower_deceleration_12_4_3_example_1():
+def test_s7_1200_pto_override_with_lower_deceleration_12_4_3_example_1():
     """§12.4.3 example 1: an overriding motion command started with a lower DynamicDefaults.Deceleration
     could not stop before the limit; the axis moves on at constant velocity and brakes with the
     emergency stop deceleration to standstill at the SW limit (16#8002 / 16#000F)."""
@@ -459,7 +459,7 @@ def test_pto_override_with_lower_deceleration_12_4_3_example_1():
     assert max(-a for a in tr.a) == pytest.approx(EMERGENCY, rel=1e-6)
 
 
-def test_pd_homing_shift_beyond_limit_disables_5_4_4_3():
+def test_s7_1200_pd_homing_shift_beyond_limit_disables_5_4_4_3():
     """§5.4.4.3: "When a software limit switch is overtraveled" on a PROFIdrive axis "the axis is
     disabled"; the error 16#8002 is shown at MC_Power (§12.8, 16#0010: exceeded, remove enable)."""
     ctl, axis, power = make("pd")
@@ -476,7 +476,7 @@ def test_pd_homing_shift_beyond_limit_disables_5_4_4_3():
 
 
 @pytest.mark.parametrize("kind", ["pd", "pto"])
-def test_homed_beyond_limit_status_and_refusal_10_1(kind):
+def test_s7_1200_homed_beyond_limit_status_and_refusal_10_1(kind):
     """§10.1 StatusBits.SWLimitMaxActive: "high SW limit reached or exceeded" -- also when homing puts
     the standing axis beyond it; a further motion in that direction is stopped with 16#8002
     (§5.4.4.3) and does not move the axis further out."""
@@ -496,7 +496,7 @@ def test_homed_beyond_limit_status_and_refusal_10_1(kind):
 
 
 @pytest.mark.parametrize("kind", ["pd", "pto"])
-def test_sw_limit_error_pulsed_execute_one_cycle_9_5_2(kind):
+def test_s7_1200_sw_limit_error_pulsed_execute_one_cycle_9_5_2(kind):
     """§9.5.2: if Execute is already FALSE when the error occurs, Error is TRUE for exactly one call."""
     ctl, axis, power = make(kind)
     home(ctl, axis, 0.0)
@@ -516,7 +516,7 @@ def test_sw_limit_error_pulsed_execute_one_cycle_9_5_2(kind):
     assert power.ErrorID == 0x8002
 
 
-def test_sw_limit_error_after_jog_release_one_cycle_9_5_4():
+def test_s7_1200_sw_limit_error_after_jog_release_one_cycle_9_5_4():
     """§9.5.4 note: jog inputs already FALSE (axis still decelerating) and a new error occurs (SW limit
     switch approached): Error is shown for only one execution cycle; the axis error stays at MC_Power.
     Scenario (PTO): a lower Deceleration written while jogging takes effect when the jog is stopped
@@ -551,7 +551,7 @@ def test_sw_limit_error_after_jog_release_one_cycle_9_5_4():
 @pytest.mark.parametrize("kind", ["pd", "pto"])
 @pytest.mark.parametrize("jerk", [0.0, JERK], ids=["trapezoidal", "jerk"])
 @pytest.mark.parametrize("target,velocity", [(100.0, 10.0), (100.0, 60.0), (95.0, 10.0)])
-def test_override_during_limit_braking_never_passes_limit_5_4_4_3(kind, jerk, target, velocity):
+def test_s7_1200_override_during_limit_braking_never_passes_limit_5_4_4_3(kind, jerk, target, velocity):
     """§5.4.4.3: "an active motion is stopped at the position of the software limit switch"; §12.4 /
     §12.8: passing the limit is only possible when even the emergency deceleration is insufficient
     (16#0010).  A MC_MoveVelocity is already braking for the high limit when a MC_MoveAbsolute with a

@@ -74,7 +74,7 @@ def homed_rig(**kw) -> Rig:
 
 @pytest.mark.parametrize("new_kind", MOTION)
 @pytest.mark.parametrize("active_kind", MOTION)
-def test_11_1_override_matrix_motion_commands(active_kind, new_kind):
+def test_s7_1200_11_1_override_matrix_motion_commands(active_kind, new_kind):
     """§11.1.4.1-§11.1.8.1 override lists: every one of MC_Halt, MC_MoveAbsolute, MC_MoveRelative,
     MC_MoveVelocity, MC_MoveJog aborts every other (and itself) when started: the active one shows
     Busy FALSE, CommandAborted TRUE (latched, start input still TRUE); the axis follows the new command."""
@@ -103,7 +103,7 @@ def test_11_1_override_matrix_motion_commands(active_kind, new_kind):
 
 
 @pytest.mark.parametrize("active_kind", ["MC_Halt", "MC_MoveAbsolute", "MC_MoveRelative"])
-def test_9_5_2_override_with_execute_false_shows_abort_one_cycle(active_kind):
+def test_s7_1200_9_5_2_override_with_execute_false_shows_abort_one_cycle(active_kind):
     """§9.5.2 ⑤ for overridden Done-type commands: Execute already FALSE -> CommandAborted one cycle."""
     rig = homed_rig()
     act = start_active(rig, active_kind)
@@ -117,7 +117,7 @@ def test_9_5_2_override_with_execute_false_shows_abort_one_cycle(active_kind):
 
 @pytest.mark.parametrize("mode", [0, 1])
 @pytest.mark.parametrize("active_kind", MOTION)
-def test_11_1_3_home_direct_neither_aborts_nor_is_aborted(active_kind, mode):
+def test_s7_1200_11_1_3_home_direct_neither_aborts_nor_is_aborted(active_kind, mode):
     """§11.1.3.1 Mode 0/1: 'The MC_Home command does not abort any active Motion Control commands' - the
     running command stays Busy, never shows CommandAborted and ends normally; MC_Home shows Done."""
     rig = homed_rig()
@@ -138,7 +138,7 @@ def test_11_1_3_home_direct_neither_aborts_nor_is_aborted(active_kind, mode):
         assert all(s["act"]["Busy"] and s["act"]["InVelocity"] and s.vel == pytest.approx(60.0) for s in snaps)
 
 
-def test_11_1_3_home_direct_move_absolute_resumed_in_new_coordinates():
+def test_s7_1200_11_1_3_home_direct_move_absolute_resumed_in_new_coordinates():
     """§11.1.3.1 Mode 0: 'Position-related motion commands are resumed after homing according to the new
     homing position': MC_MoveAbsolute to 100.0 continues and stops at 100.0 of the new coordinates."""
     rig = homed_rig()
@@ -151,7 +151,7 @@ def test_11_1_3_home_direct_move_absolute_resumed_in_new_coordinates():
     assert mv.Done and rig.axis.Position == pytest.approx(100.0, abs=1e-6)
 
 
-def test_11_1_3_home_direct_not_aborted_by_motion_started_in_same_cycle():
+def test_s7_1200_11_1_3_home_direct_not_aborted_by_motion_started_in_same_cycle():
     """§11.1.3.1 Mode 0/1: 'cannot be aborted by any other Motion Control command' - a motion command
     started in the same cycle right after MC_Home does not make it show CommandAborted."""
     rig = Rig()
@@ -166,7 +166,7 @@ def test_11_1_3_home_direct_not_aborted_by_motion_started_in_same_cycle():
     home.Execute = False
 
 
-def test_11_1_4_halt_braking_then_aborted_by_motion_command():
+def test_s7_1200_11_1_4_halt_braking_then_aborted_by_motion_command():
     """Function chart S-HALT-1/-2 (§11.1.4.2, Acc 10 / Dec 5): MC_Halt brakes with the configured
     deceleration; while braking another motion command aborts it -> Abort_2 TRUE, Busy_2 FALSE; the
     axis follows the new command."""
@@ -189,7 +189,7 @@ def test_11_1_4_halt_braking_then_aborted_by_motion_command():
     assert quiet(rig.scan()["halt"])
 
 
-def test_11_1_5_override_absolute_by_absolute_without_stop():
+def test_s7_1200_11_1_5_override_absolute_by_absolute_without_stop():
     """Function chart S-MABS-2 (§11.1.5.2, Acc/Dec 10): MC_MoveAbsolute_1 to 1000.0 overridden by
     MC_MoveAbsolute_2 to 1500.0 with another velocity -> Abort_1; the axis changes to the new velocity
     and moves to 1500.0 without stopping; Done_2 at 1500.0."""
@@ -210,7 +210,7 @@ def test_11_1_5_override_absolute_by_absolute_without_stop():
     m1.Execute = m2.Execute = False
 
 
-def test_9_3_move_relative_overridden_by_move_absolute():
+def test_s7_1200_9_3_move_relative_overridden_by_move_absolute():
     """§9.3 'It is possible to override an active MC_MoveRelative command with a MC_MoveAbsolute command'."""
     rig = homed_rig()
     rig.add("rel", MC_MoveRelative(), Distance=300.0, Velocity=60.0, Execute=True)
@@ -221,7 +221,7 @@ def test_9_3_move_relative_overridden_by_move_absolute():
     assert snaps[-1].pos == pytest.approx(10.0, abs=1e-6)
 
 
-def test_11_1_6_override_relative_distance_from_override_position():
+def test_s7_1200_11_1_6_override_relative_distance_from_override_position():
     """Function chart S-MREL-2 (§11.1.6.2) and §11.1.6.1 ('relative to the start position'): the overriding
     MC_MoveRelative (Distance 500.0) moves by 500.0 from the position at its start; Abort_1, Done_2."""
     rig = Rig(acc=10.0, dec=10.0, max_v=200.0)
@@ -237,7 +237,7 @@ def test_11_1_6_override_relative_distance_from_override_position():
 
 
 @pytest.mark.parametrize("reached", [True, False], ids=["S-MVEL-1", "S-MVEL-2"])
-def test_11_1_7_velocity_overridden_by_velocity(reached):
+def test_s7_1200_11_1_7_velocity_overridden_by_velocity(reached):
     """Function charts S-MVEL-1/-2 (§11.1.7.2, Acc/Dec 10): MC_MoveVelocity_1 (after or before reaching its
     velocity) overridden by MC_MoveVelocity_2 (15.0) -> Abort_1; InVel_2 at 15.0, the axis continues."""
     rig = Rig(acc=10.0, dec=10.0)
@@ -259,7 +259,7 @@ DISABLE_CASES = [(k, True) for k in MOTION] + [(k, False) for k in ("MC_Halt", "
 
 
 @pytest.mark.parametrize("active_kind", ["MC_MoveVelocity", "MC_MoveJog"])
-def test_11_1_1_power_disable_ends_velocity_commands_after_release(active_kind):
+def test_s7_1200_11_1_1_power_disable_ends_velocity_commands_after_release(active_kind):
     """§11.1.1.1 (disabling aborts all commands) with §9.5.3 ② / §9.5.4: a velocity command whose start
     input is already FALSE is ended by the disable - Busy and InVelocity FALSE (whether CommandAborted is
     shown in this case is not stated by the manual)."""
@@ -278,7 +278,7 @@ def test_11_1_1_power_disable_ends_velocity_commands_after_release(active_kind):
 
 @pytest.mark.parametrize("active_kind,held", DISABLE_CASES,
                          ids=[f"{k}-{'held' if h else 'pulse'}" for k, h in DISABLE_CASES])
-def test_11_1_1_power_disable_aborts_active_command(active_kind, held):
+def test_s7_1200_11_1_1_power_disable_aborts_active_command(active_kind, held):
     """§11.1.1.1 'Disabling the axis (Enable = FALSE) aborts all Motion Control commands': the active
     command shows Busy FALSE and CommandAborted (§9.5.2-§9.5.4: latched while its start input is TRUE,
     else one cycle).  MC_MoveVelocity/MC_MoveJog are only checked with the start input TRUE (the notes of
@@ -301,7 +301,7 @@ def test_11_1_1_power_disable_aborts_active_command(active_kind, held):
     assert not rig.axis.StatusBits.Enable and rig.axis.Velocity == 0.0
 
 
-def test_11_1_2_reset_does_not_abort_active_command():
+def test_s7_1200_11_1_2_reset_does_not_abort_active_command():
     """§11.1.2.1 'The new MC_Reset command does not abort any other active Motion Control commands'."""
     rig = Rig()
     rig.add("mr", MC_MoveRelative(), Distance=30.0, Velocity=40.0, Execute=True)
@@ -323,7 +323,7 @@ REJECTED = [
 
 
 @pytest.mark.parametrize("name,make,error_id", REJECTED, ids=[r[0] for r in REJECTED])
-def test_9_6_rejected_command_does_not_abort_motion(name, make, error_id):
+def test_s7_1200_9_6_rejected_command_does_not_abort_motion(name, make, error_id):
     """§9.6: operating errors without axis stop and block parameter errors - 'If the axis is in motion, the
     motion is continued. The errors are only indicated in the Motion Control instruction which triggers the
     error.'  The running MC_MoveVelocity is not aborted."""

@@ -97,7 +97,7 @@ def change_all(**times) -> MC_ChangeDynamic:
 
 # ==========================================================================================================
 # typed variables (the PLC tags the VARIANT Value points to)
-def test_variables_types_ranges_repr_equality():
+def test_s7_1200_variables_types_ranges_repr_equality():
     """Value of MC_ReadParam / MC_WriteParam is a VARIANT to a tag of BOOL, INT, DINT, UDINT or REAL (§11.1.12)."""
     assert Bool().value is False and Int().value == 0 and DInt().value == 0 and UDInt().value == 0
     assert Real().value == 0.0 and isinstance(Real().value, float)
@@ -127,7 +127,7 @@ def test_variables_types_ranges_repr_equality():
 
 # ==========================================================================================================
 # MC_ChangeDynamic (§11.1.10)
-def test_11_1_10_default_inputs_reproduce_default_dynamics():
+def test_s7_1200_11_1_10_default_inputs_reproduce_default_dynamics():
     """§11.1.10.1 input defaults 5.00 / 5.00 / 2.00 / 0.25 s and §5.4.4.4 relations: with the default
     configuration (MaxVelocity 250, start/stop velocity 10, PTO) the result is the default dynamics
     Acceleration 48, Deceleration 48, EmergencyDeceleration 120, Jerk 192 (§12.9.11 start values)."""
@@ -143,7 +143,7 @@ def test_11_1_10_default_inputs_reproduce_default_dynamics():
     assert dyn(axis) == {"Acceleration": 48.0, "Deceleration": 48.0, "EmergencyDeceleration": 120.0, "Jerk": 192.0}
 
 
-def test_11_1_10_profidrive_start_stop_velocity_is_zero():
+def test_s7_1200_11_1_10_profidrive_start_stop_velocity_is_zero():
     """§5.4.4.4: for PROFIdrive/analog drives the start/stop velocity is fixed at zero, so the ramp times
     refer to the full MaxVelocity: 100/5 = 20, 100/5 = 20, 100/2 = 50, jerk 20/0.25 = 80."""
     ctl, axis = make("pd")
@@ -152,7 +152,7 @@ def test_11_1_10_profidrive_start_stop_velocity_is_zero():
     assert dyn(axis) == {"Acceleration": 20.0, "Deceleration": 20.0, "EmergencyDeceleration": 50.0, "Jerk": 80.0}
 
 
-def test_11_1_10_only_selected_values_change():
+def test_s7_1200_11_1_10_only_selected_values_change():
     """§11.1.10.1: each Change* input selects one tag; the others keep their values."""
     ctl, axis = make("pto")                                  # MaxVelocity 100, start/stop 1 -> span 99
     before = dyn(axis)
@@ -167,7 +167,7 @@ def test_11_1_10_only_selected_values_change():
     assert dyn(axis)["Deceleration"] == 198.0
 
 
-def test_11_1_10_jerk_from_new_or_current_acceleration():
+def test_s7_1200_11_1_10_jerk_from_new_or_current_acceleration():
     """§5.4.4.4 smoothing time = Acceleration / Jerk (decision: the acceleration after this call -- the new
     one when RampUpTime is changed in the same call, otherwise the tag value)."""
     ctl, axis = make("pto")
@@ -181,7 +181,7 @@ def test_11_1_10_jerk_from_new_or_current_acceleration():
     assert axis.cfg["DynamicDefaults.Jerk"] == pytest.approx(200.0)        # from the new acceleration
 
 
-def test_11_1_10_uses_tag_values_of_the_velocity_limits():
+def test_s7_1200_11_1_10_uses_tag_values_of_the_velocity_limits():
     """Decision: the conversion uses the values in the technology DB at the call -- including a WP change
     of MaxVelocity that takes effect only at the next enable (§12.9.10 code 2) -- so that the ramp times
     hold once the new limits are in effect."""
@@ -195,7 +195,7 @@ def test_11_1_10_uses_tag_values_of_the_velocity_limits():
 
 @given(up=st.floats(1e-3, 1e3), down=st.floats(1e-3, 1e3), emergency=st.floats(1e-3, 1e3),
        jerk_time=st.floats(1e-3, 1e3))
-def test_11_1_10_results_satisfy_the_5_4_4_4_relations(up, down, emergency, jerk_time):
+def test_s7_1200_11_1_10_results_satisfy_the_5_4_4_4_relations(up, down, emergency, jerk_time):
     """§5.4.4.4: ramp time = (MaxVelocity - start/stop velocity) / value, smoothing time = Acceleration/Jerk
     hold for the written values, for any admissible input."""
     ctl, axis = make("pto")
@@ -216,7 +216,7 @@ BAD_TIMES = [(NAN, 0x0002), (INF, 0x0002), (-INF, 0x0002), ("5", 0x0002), (True,
 
 @pytest.mark.parametrize("change,name,error_id", TIME_INPUTS, ids=[t[1] for t in TIME_INPUTS])
 @pytest.mark.parametrize("value,error_info", BAD_TIMES, ids=[repr(b[0]) for b in BAD_TIMES])
-def test_12_8_840C_840F_invalid_time_inputs(change, name, error_id, value, error_info):
+def test_s7_1200_12_8_840C_840F_invalid_time_inputs(change, name, error_id, value, error_info):
     """§12.8 16#840C RampUpTime, 16#840D RampDownTime, 16#840E EmergencyRampTime, 16#840F JerkTime:
     16#0002 invalid number format, 16#000A value <= 0; V7 list 16#0005 value > 1.0E12 (printed under 16#840C,
     applied to all four).  Block parameter error: nothing is written, the axis carries on."""
@@ -230,7 +230,7 @@ def test_12_8_840C_840F_invalid_time_inputs(change, name, error_id, value, error
     assert mv_out["Busy"] and not mv_out["Error"] and not power().Error
 
 
-def test_12_8_840C_checks_in_input_order_and_only_selected_inputs():
+def test_s7_1200_12_8_840C_checks_in_input_order_and_only_selected_inputs():
     """Several invalid times: the first in parameter order is reported; an unselected time is not checked."""
     ctl, axis = make("pto")
     cd = MC_ChangeDynamic(Axis=axis, Execute=True, ChangeRampDown=True, RampDownTime=0.0, ChangeJerkTime=True,
@@ -244,7 +244,7 @@ def test_12_8_840C_checks_in_input_order_and_only_selected_inputs():
     assert axis.cfg["DynamicDefaults.Acceleration"] == pytest.approx(99.0e-12)
 
 
-def test_12_8_8208_velocity_span_not_positive():
+def test_s7_1200_12_8_8208_velocity_span_not_positive():
     """§12.8 16#8208 "difference between maximum and start/stop velocity is invalid" (16#000A <= 0): the
     ramp times cannot be converted when MaxVelocity = start/stop velocity (a valid PTO configuration,
     §5.4.4.4 'maximum >= start/stop') or below it; nothing is written."""
@@ -263,7 +263,7 @@ def test_12_8_8208_velocity_span_not_positive():
     assert_error(scan(ctl2, MC_ChangeDynamic(Axis=axis2, Execute=True, ChangeRampUp=True)), 0x8208, 0x000A)
 
 
-def test_12_8_8208_velocity_span_invalid_number():
+def test_s7_1200_12_8_8208_velocity_span_invalid_number():
     """§12.8 16#8208/16#0002: a velocity limit in the DB that is not a number (white box: a corrupted DB value,
     MC_WriteParam itself refuses to write NaN)."""
     ctl, axis = make("pto")
@@ -272,7 +272,7 @@ def test_12_8_8208_velocity_span_invalid_number():
 
 
 @pytest.mark.parametrize("acceleration,error_info", [(-1.0, 0x000A), (0.0, 0x000A), (NAN, 0x0002), (INF, 0x0002)])
-def test_12_8_8209_invalid_acceleration_for_the_jerk(acceleration, error_info):
+def test_s7_1200_12_8_8209_invalid_acceleration_for_the_jerk(acceleration, error_info):
     """§12.8 16#8209 "invalid acceleration" (16#0002 / 16#000A): JerkTime is converted with the acceleration;
     an invalid Acceleration tag (a direct assignment, not yet effective) gives no jerk; nothing is written.
     With RampUpTime changed in the same call the new, valid acceleration is used."""
@@ -287,7 +287,7 @@ def test_12_8_8209_invalid_acceleration_for_the_jerk(acceleration, error_info):
     assert dyn(axis)["Acceleration"] == 99.0 and dyn(axis)["Jerk"] == 99.0 / 0.25
 
 
-def test_12_8_840C_block_parameter_error_before_8208():
+def test_s7_1200_12_8_840C_block_parameter_error_before_8208():
     """Decision 12: block parameter errors (16#84xx) before the conversion errors (16#82xx)."""
     ctl, axis = make("pto", {"DynamicLimits": {"MaxVelocity": 100.0, "MinVelocity": 100.0}})
     cd = MC_ChangeDynamic(Axis=axis, Execute=True, ChangeRampUp=True, RampUpTime=0.0)
@@ -306,7 +306,7 @@ class _OtherTechnologyObject:
 
 @pytest.mark.parametrize("axis_value,error_info", [(None, 0x001C), (3.0, 0x001C), ("Axis_1", 0x001C),
                                                    ("other_to", 0x001B)])
-def test_12_8_8408_change_dynamic_invalid_axis(axis_value, error_info):
+def test_s7_1200_12_8_8408_change_dynamic_invalid_axis(axis_value, error_info):
     """§12.8 16#8408: Axis is not a Motion Control technology DB (16#001C) or a technology object of another
     type (16#001B)."""
     ctl, _ = make("pto")
@@ -314,7 +314,7 @@ def test_12_8_8408_change_dynamic_invalid_axis(axis_value, error_info):
     assert_error(scan(ctl, change_all(Axis=axis_value, Execute=True)), 0x8408, error_info)
 
 
-def test_11_1_10_outputs_and_override():
+def test_s7_1200_11_1_10_outputs_and_override():
     """§9.5.2: MC_ChangeDynamic completes at once -- no Busy, no CommandAborted output; Done TRUE in the
     call with the rising edge, latched while Execute stays TRUE.  §11.1.10.1 override: it aborts no running
     command and is not aborted by one."""
@@ -335,7 +335,7 @@ def test_11_1_10_outputs_and_override():
 
 
 @pytest.mark.parametrize("kind", ["pto", "pd"])
-def test_11_1_10_results_outside_range_become_configuration_errors(kind):
+def test_s7_1200_11_1_10_results_outside_range_become_configuration_errors(kind):
     """§11.1.10.1 note: times whose results exceed the admissible limits are accepted (Done); the tag shows its
     configuration error when the value takes effect (§9.6: at the triggering instruction and MC_Power,
     emergency stop): PTO acceleration above 9.5E9 pulses/s^2 -> 16#8608/16#0003 at the next command start;
@@ -356,7 +356,7 @@ def test_11_1_10_results_outside_range_become_configuration_errors(kind):
     assert axis.StatusBits.Error and axis.ErrorBits.ConfigFault
 
 
-def test_11_1_10_effective_pto_next_command_profidrive_next_servo_cycle():
+def test_s7_1200_11_1_10_effective_pto_next_command_profidrive_next_servo_cycle():
     """§11.1.10.1 'For the effectiveness of the change, refer to the description of the tag' (§12.9.11):
     PROFIdrive: next servo cycle; PTO: next start of a motion command (code 5)."""
     ctl, axis, power, mv = moving("pd")
@@ -400,7 +400,7 @@ WP_TAGS = _paths(make("pd")[1], "WP")      # used on a PROFIdrive axis (Simulati
 R_TAGS = _paths(make("default")[1], "R")
 
 
-def test_12_9_tag_classes_as_printed():
+def test_s7_1200_12_9_tag_classes_as_printed():
     """§12.9.10 / §12.9.11 / §12.9.5: examples of each access class."""
     assert {"DynamicDefaults.Acceleration", "DynamicDefaults.Jerk", "PositionLimits_SW.Active",
             "Homing.ApproachVelocity", "Sensor[1].ActiveHoming.HomePositionOffset"} <= set(RW_TAGS)
@@ -410,7 +410,7 @@ def test_12_9_tag_classes_as_printed():
 
 
 @pytest.mark.parametrize("path", RW_TAGS)
-def test_11_1_12_rw_tags_written_any_time(path):
+def test_s7_1200_11_1_12_rw_tags_written_any_time(path):
     """§12.9 legend RW: "can be written with MC_WriteParam" -- also while the axis is enabled and moving."""
     ctl, axis, power, mv = moving("pd")
     value = _other_value(axis, path)
@@ -423,7 +423,7 @@ def test_11_1_12_rw_tags_written_any_time(path):
 
 
 @pytest.mark.parametrize("path", WP_TAGS)
-def test_11_1_12_wp_tags_only_while_disabled(path):
+def test_s7_1200_11_1_12_wp_tags_only_while_disabled(path):
     """§11.1.12.1 requirements / §12.9 legend WP: writable with MC_WriteParam if the axis is disabled
     (MC_Power.Status = FALSE); otherwise 16#8410/16#002C "the axis is not disabled" and nothing is written."""
     ctl, axis, power = enabled("pd")
@@ -442,7 +442,7 @@ def test_11_1_12_wp_tags_only_while_disabled(path):
 
 
 @pytest.mark.parametrize("path", R_TAGS)
-def test_12_8_8410_002B_read_only_tags(path):
+def test_s7_1200_12_8_8410_002B_read_only_tags(path):
     """§12.9 legend R (and '-'): not writable, also not with MC_WriteParam -> 16#8410/16#002B, even on a
     disabled axis; the value is not changed."""
     ctl, axis = make("default")
@@ -454,7 +454,7 @@ def test_12_8_8410_002B_read_only_tags(path):
 
 @pytest.mark.parametrize("path", ["Position", "ActualVelocity", "StatusBits.Enable", "ErrorBits.HWLimit",
                                   "StatusSensor.State", "StatusPositioning.Distance"])
-def test_12_8_8410_002B_status_tags(path):
+def test_s7_1200_12_8_8410_002B_status_tags(path):
     """Status tags (§12.9.1 - §12.9.4, §12.9.20 - §12.9.24: RCCP / RP) cannot be written: 16#8410/16#002B."""
     ctl, axis = make("pto")
     ref = axis.ref(path)
@@ -465,7 +465,7 @@ def test_12_8_8410_002B_status_tags(path):
 
 @pytest.mark.parametrize("parameter", [None, "DynamicDefaults.Acceleration", 48.0, "axis", Real(1.0)],
                          ids=["None", "path_string", "float", "axis_object", "variable"])
-def test_12_8_8410_0029_not_a_technology_object_tag(parameter):
+def test_s7_1200_12_8_8410_0029_not_a_technology_object_tag(parameter):
     """§12.8 16#8410/16#0029: VARIANT "Parameter" does not point to the technology object DB."""
     ctl, axis = make("pto")
     parameter = axis if parameter == "axis" else parameter
@@ -490,7 +490,7 @@ MISMATCHES = [
 
 
 @pytest.mark.parametrize("path,value,why", MISMATCHES, ids=[m[2] for m in MISMATCHES])
-def test_12_8_8410_0028_data_types_differ(path, value, why):
+def test_s7_1200_12_8_8410_0028_data_types_differ(path, value, why):
     """§12.8 16#8410/16#0028: the data types of "Parameter" and "Value" do not match (no conversion)."""
     ctl, axis = make("pto")
     before = axis.cfg[path]
@@ -506,7 +506,7 @@ def test_12_8_8410_0028_data_types_differ(path, value, why):
     ("Actor.DriveParameter.PulsesPerDriveRevolution", DInt(500)),
     ("Actor.DriveParameter.PulsesPerDriveRevolution", np.int32(500)),
 ], ids=lambda v: type(v).__name__ if not isinstance(v, str) else v)
-def test_11_1_12_matching_value_types(path, value):
+def test_s7_1200_11_1_12_matching_value_types(path, value):
     """§11.1.12.1 Value: VARIANT (BOOL, INT, DINT, UDINT, REAL) -- typed variables and plain Python values of
     the same data type (bool = BOOL, int = DINT, float = REAL) are written."""
     ctl, axis = make("pto")
@@ -518,7 +518,7 @@ def test_11_1_12_matching_value_types(path, value):
 @pytest.mark.parametrize("value,error_info", [(NAN, 0x0002), (INF, 0x0002), (-INF, 0x0002), (Real(NAN), 0x0002),
                                               (1.0000001e12, 0x0005), (Real(1e13), 0x0005),
                                               (-1.0000001e12, 0x0006), (-1e300, 0x0006)])
-def test_12_8_8411_invalid_value(value, error_info):
+def test_s7_1200_12_8_8411_invalid_value(value, error_info):
     """§12.8 16#8411 "invalid value at parameter Value": 16#0002 invalid number format; V7 list 16#0005
     > 1.0E12, 16#0006 < -1.0E12.  Nothing is written."""
     ctl, axis = make("pto")
@@ -528,7 +528,7 @@ def test_12_8_8411_invalid_value(value, error_info):
     assert axis.cfg["PositionLimits_SW.MinPosition"] == before
 
 
-def test_12_8_8411_limits_themselves_are_valid():
+def test_s7_1200_12_8_8411_limits_themselves_are_valid():
     """+-1.0E12 are inside the number range."""
     ctl, axis = make("pto")
     for v in (1.0e12, -1.0e12):
@@ -537,7 +537,7 @@ def test_12_8_8411_limits_themselves_are_valid():
         assert axis.cfg["PositionLimits_SW.MinPosition"] == v
 
 
-def test_12_8_8410_check_order():
+def test_s7_1200_12_8_8410_check_order():
     """Order of the checks (module docstring): Parameter -> data type -> Value -> axis state."""
     ctl, axis, power = enabled("pto")
     cases = [
@@ -550,7 +550,7 @@ def test_12_8_8410_check_order():
         assert_error(scan(ctl, MC_WriteParam(Parameter=ref, Value=value, Execute=True)), error_id, error_info)
 
 
-def test_12_8_8410_002C_while_enabling_and_while_disabling():
+def test_s7_1200_12_8_8410_002C_while_enabling_and_while_disabling():
     """WP needs a disabled axis: also refused while MC_Power is still waiting for "Drive ready" and while a
     disable stop (StopMode 0) is running (MC_Power.Status still TRUE)."""
     ctl, axis = make("pd", {"Plant": {"ReadyDelay": 0.05}})
@@ -569,7 +569,7 @@ def test_12_8_8410_002C_while_enabling_and_while_disabling():
     assert axis.cfg["DynamicLimits.MaxVelocity"] == 100.0
 
 
-def test_11_1_12_effective_profidrive_next_servo_cycle():
+def test_s7_1200_11_1_12_effective_profidrive_next_servo_cycle():
     """§12.9.11 effective code 10: PROFIdrive -- the written Acceleration is used from the next servo cycle on
     (still the old value in the servo cycle's pre-servo hook, the new one after its interpolation)."""
     ctl, axis, power, mv = moving("pd")
@@ -585,7 +585,7 @@ def test_11_1_12_effective_profidrive_next_servo_cycle():
     assert seen[1][:2] == ("post", 20.0) and seen[1][2] == pytest.approx(20.0)   # the running motion uses it
 
 
-def test_11_1_12_effective_profidrive_wp_tag_next_servo_cycle():
+def test_s7_1200_11_1_12_effective_profidrive_wp_tag_next_servo_cycle():
     """§12.9.15 PositionControl.Kv: WP, effective 10 -- written on the disabled PROFIdrive axis, effective at the
     next servo cycle."""
     ctl, axis = make("pd")
@@ -596,7 +596,7 @@ def test_11_1_12_effective_profidrive_wp_tag_next_servo_cycle():
     assert axis.eff["PositionControl.Kv"] == 25.0
 
 
-def test_11_1_12_effective_pto_acceleration_at_next_command_start():
+def test_s7_1200_11_1_12_effective_pto_acceleration_at_next_command_start():
     """§12.9.11 effective code 5 (PTO): the written Acceleration does not change the running MC_MoveVelocity;
     it is used from the start of the next motion command."""
     ctl, axis, power, mv = moving("pto")
@@ -610,7 +610,7 @@ def test_11_1_12_effective_pto_acceleration_at_next_command_start():
     assert axis.eff["DynamicDefaults.Acceleration"] == 20.0 and axis.Acceleration == pytest.approx(20.0)
 
 
-def test_11_1_12_effective_pto_deceleration_when_jog_stops():
+def test_s7_1200_11_1_12_effective_pto_deceleration_when_jog_stops():
     """§12.9.11 effective code 6 (PTO): a Deceleration written while jogging is used when the jog stops."""
     ctl, axis, power = enabled("pto")
     jog = MC_MoveJog(Axis=axis, JogForward=True, Velocity=50.0)
@@ -624,7 +624,7 @@ def test_11_1_12_effective_pto_deceleration_when_jog_stops():
     assert axis.Acceleration == pytest.approx(-25.0)
 
 
-def test_11_1_12_effective_pto_wp_tag_at_enable():
+def test_s7_1200_11_1_12_effective_pto_wp_tag_at_enable():
     """§12.9.10 effective code 2 / §12.9.11 code 1 (PTO: when the axis is enabled): MaxVelocity (WP) and
     Acceleration (RW) written while disabled are used from the next enable -- a command above the new limit
     is then refused with 16#8402/16#0008."""
@@ -644,7 +644,7 @@ def test_11_1_12_effective_pto_wp_tag_at_enable():
 
 
 @pytest.mark.parametrize("kind", ["pd", "pto"])
-def test_11_1_12_invalid_value_becomes_configuration_error_when_effective(kind):
+def test_s7_1200_11_1_12_invalid_value_becomes_configuration_error_when_effective(kind):
     """Decision (catalog §4.12 "written configuration values are validated -> configuration errors 16#86xx"):
     MC_WriteParam writes Acceleration = -1.0 and shows Done ("value was written"); the configuration error
     16#8608 appears when the value takes effect -- PROFIdrive: next servo cycle, at MC_Power and the running
@@ -670,7 +670,7 @@ def test_11_1_12_invalid_value_becomes_configuration_error_when_effective(kind):
     assert not axis.StatusBits.Error and axis.eff["DynamicDefaults.Acceleration"] == 40.0
 
 
-def test_11_1_12_invalid_wp_value_refuses_enable():
+def test_s7_1200_11_1_12_invalid_wp_value_refuses_enable():
     """A WP value outside its range (PTO: DirectionMode 5, written while disabled) becomes the configuration
     error of the tag at the enable (§12.9.5 code 2): 16#861A/16#0011 at MC_Power, the axis stays disabled."""
     ctl, axis = make("pto")
@@ -680,7 +680,7 @@ def test_11_1_12_invalid_wp_value_refuses_enable():
     assert not power.Status and axis.state == "disabled"
 
 
-def test_11_1_12_does_not_abort_and_is_not_aborted():
+def test_s7_1200_11_1_12_does_not_abort_and_is_not_aborted():
     """§11.1.12.1 override response: MC_WriteParam aborts no running command, no command aborts it."""
     ctl, axis, power, mv = moving("pto")
     wp = MC_WriteParam(Parameter=axis.ref("DynamicDefaults.Jerk"), Value=0.0, Execute=True)
@@ -703,7 +703,7 @@ def _instances(axis):
 
 
 @pytest.mark.parametrize("name", ["ChangeDynamic ok", "ChangeDynamic error", "WriteParam ok", "WriteParam error"])
-def test_9_5_2_latched_while_execute_true(name):
+def test_s7_1200_9_5_2_latched_while_execute_true(name):
     """§9.5.2 (catalog T1/T4): the command ends in the call with the rising edge (Busy never TRUE); Done or
     Error stays TRUE while Execute is TRUE and drops together with Execute."""
     ctl, axis, power = enabled("pto")
@@ -719,7 +719,7 @@ def test_9_5_2_latched_while_execute_true(name):
 
 
 @pytest.mark.parametrize("name", ["ChangeDynamic ok", "ChangeDynamic error", "WriteParam ok", "WriteParam error"])
-def test_9_5_2_one_call_when_execute_pulsed(name):
+def test_s7_1200_9_5_2_one_call_when_execute_pulsed(name):
     """§9.5.2: with Execute already FALSE at the next call the final status is shown for exactly one call --
     here the call with the edge, as the command completes within it."""
     ctl, axis, power = enabled("pto")
@@ -733,7 +733,7 @@ def test_9_5_2_one_call_when_execute_pulsed(name):
     assert not any(o["Done"] or o["Error"] for o in rest)
 
 
-def test_9_5_2_new_edge_restarts():
+def test_s7_1200_9_5_2_new_edge_restarts():
     """A new rising edge starts a new command: the previous Error is replaced by the new result."""
     ctl, axis = make("pto")
     wp = MC_WriteParam(Parameter=axis.ref("DynamicDefaults.Jerk"), Value=NAN, Execute=True)
@@ -759,7 +759,7 @@ READABLE = _readable(make("pd")[1])
 
 
 @pytest.mark.parametrize("path", READABLE)
-def test_11_1_11_every_rp_tag_is_readable(path):
+def test_s7_1200_11_1_11_every_rp_tag_is_readable(path):
     """§11.1.11.1 Parameter: Position, Velocity, ActualPosition, ActualVelocity, StatusPositioning.*,
     StatusDrive.*, StatusSensor.*, StatusBits.*, ErrorBits.* (RP in §12.9) -- read into a variable of the
     tag's data type; Valid and Busy TRUE."""
@@ -773,7 +773,7 @@ def test_11_1_11_every_rp_tag_is_readable(path):
         ref.data_type, int)
 
 
-def test_11_1_11_reads_at_every_call_while_enabled():
+def test_s7_1200_11_1_11_reads_at_every_call_while_enabled():
     """§11.1.11.1 "continuous reading", §12.9 RP "value determined at the start of the command" (each call):
     Value follows the setpoint position of a moving axis; Enable = FALSE stops the updates and resets the
     outputs, Value keeps its last value."""
@@ -798,7 +798,7 @@ def test_11_1_11_reads_at_every_call_while_enabled():
     assert pos.value == last != axis.Position
 
 
-def test_11_1_11_bool_and_dint_status_tags_change():
+def test_s7_1200_11_1_11_bool_and_dint_status_tags_change():
     """StatusBits (BOOL) and StatusSensor.State (DINT) read with matching variables (catalog §11 item 15:
     the printed VARIANT (REAL) is too narrow -- the data type of the tag applies)."""
     ctl, axis = make("pto")
@@ -817,7 +817,7 @@ def test_11_1_11_bool_and_dint_status_tags_change():
 @pytest.mark.parametrize("path", ["DynamicDefaults.Acceleration", "DynamicLimits.MaxVelocity", "Actor.Type",
                                   "PositionLimits_SW.Active", "Units.LengthUnit", "ErrorBits.HWLimit",
                                   "Acceleration"])
-def test_12_8_8410_002A_tag_not_readable_with_read_param(path):
+def test_s7_1200_12_8_8410_002A_tag_not_readable_with_read_param(path):
     """§12.8 16#8410/16#002A "the value at the VARIANT pointer Parameter cannot be read": configuration tags
     (access R/RW/WP, not RP), ErrorBits.HWLimit (RCCP only, §12.9.24), the S7-1500 name Acceleration."""
     ctl, axis = make("pto")
@@ -831,7 +831,7 @@ def test_12_8_8410_002A_tag_not_readable_with_read_param(path):
 
 
 @pytest.mark.parametrize("parameter", [None, "Position", 0.0, "axis"], ids=["None", "string", "float", "axis"])
-def test_12_8_8410_0029_read_param_not_a_technology_object_tag(parameter):
+def test_s7_1200_12_8_8410_0029_read_param_not_a_technology_object_tag(parameter):
     """§12.8 16#8410/16#0029 at MC_ReadParam."""
     ctl, axis = make("pto")
     rp = MC_ReadParam(Parameter=axis if parameter == "axis" else parameter, Value=Real(), Enable=True)
@@ -842,7 +842,7 @@ def test_12_8_8410_0029_read_param_not_a_technology_object_tag(parameter):
                                         ("StatusBits.Enable", Real(0.0)), ("StatusBits.Enable", DInt(0)),
                                         ("StatusSensor.State", Int(0)), ("StatusSensor.State", UDInt(0)),
                                         ("StatusSensor.State", Real(0.0))])
-def test_12_8_8410_0028_read_param_data_types_differ(path, value):
+def test_s7_1200_12_8_8410_0028_read_param_data_types_differ(path, value):
     """§12.8 16#8410/16#0028: the variable at Value has another data type than the tag; Value unchanged."""
     ctl, axis, power, mv = moving("pto")
     before = value.value
@@ -852,7 +852,7 @@ def test_12_8_8410_0028_read_param_data_types_differ(path, value):
     assert not out["Valid"] and not out["Busy"] and value.value == before
 
 
-def test_11_1_11_error_held_until_enable_false():
+def test_s7_1200_11_1_11_error_held_until_enable_false():
     """Remedy of 16#8410 "correct the VARIANT pointer; restart the command": the error stays (no reading)
     while Enable is TRUE, even after the pointer was corrected; Enable FALSE -> TRUE restarts."""
     ctl, axis, power, mv = moving("pto")
@@ -870,7 +870,7 @@ def test_11_1_11_error_held_until_enable_false():
     assert rp.Valid and not rp.Error and pos.value == axis.Position != 0.0
 
 
-def test_11_1_11_value_must_be_a_variable():
+def test_s7_1200_11_1_11_value_must_be_a_variable():
     """Value is an InOut: a constant there is a programming error (TypeError), as it would not compile."""
     ctl, axis = make("pto")
     rp = MC_ReadParam(Parameter=axis.ref("Position"), Value=0.0, Enable=True)
@@ -879,7 +879,7 @@ def test_11_1_11_value_must_be_a_variable():
     MC_ReadParam(Parameter=axis.ref("Position"), Value=0.0, Enable=False)()   # not used while Enable = FALSE
 
 
-def test_11_1_11_override_and_reinit():
+def test_s7_1200_11_1_11_override_and_reinit():
     """§11.1.11.1 override: MC_ReadParam neither aborts nor is aborted; STOP -> RUN reinitialises the instance
     (instance DB start values) like every instruction."""
     ctl, axis, power, mv = moving("pto")
@@ -901,12 +901,12 @@ def _doc_examples() -> list[str]:
     return re.findall(r"```python\n(.*?)```", DOCS.read_text(), re.S)
 
 
-def test_docs_page_has_an_example_for_each_instruction():
+def test_s7_1200_docs_page_has_an_example_for_each_instruction():
     text = "\n".join(_doc_examples())
     for name in ("MC_ChangeDynamic", "MC_ReadParam", "MC_WriteParam"):
         assert f"{name}(" in text
 
 
 @pytest.mark.parametrize("index", range(len(_doc_examples())))
-def test_docs_examples_run(index):
+def test_s7_1200_docs_examples_run(index):
     exec(compile(_doc_examples()[index], f"{DOCS.name}[{index}]", "exec"), {"__name__": "__doc_example__"})

@@ -35,7 +35,7 @@ def disable_and_watch(rig: Rig, max_scans: int = 2000):
 
 # ----------------------------------------------------------------------------------------------------------
 # enabling
-def test_11_1_1_enable_pto_without_ready_signal_immediately():
+def test_s7_1200_11_1_1_enable_pto_without_ready_signal_immediately():
     """§11.1.1.1 'Enabling an axis without configured drive interface': Status and StatusBits.Enable TRUE
     at once; Busy TRUE while MC_Power is active."""
     rig = Rig(enable=False)
@@ -47,7 +47,7 @@ def test_11_1_1_enable_pto_without_ready_signal_immediately():
     assert all(x["power"]["Status"] and x["power"]["Busy"] for x in rig.scans(10))
 
 
-def test_11_1_1_enable_waits_for_drive_ready():
+def test_s7_1200_11_1_1_enable_waits_for_drive_ready():
     """§11.1.1.1 'Enabling an axis with configured drive interface' / Status TRUE: 'the status does not
     change to TRUE until the signal Drive ready is pending'; Busy TRUE from the enable; commands are not
     accepted while Status is FALSE (16#8200)."""
@@ -65,7 +65,7 @@ def test_11_1_1_enable_waits_for_drive_ready():
 
 # ----------------------------------------------------------------------------------------------------------
 # disabling, StopMode
-def test_11_1_1_disable_at_standstill():
+def test_s7_1200_11_1_1_disable_at_standstill():
     """§11.1.1.1 'Disabling an axis': axis at standstill, Enable := FALSE -> Busy, Status and
     StatusBits.Enable FALSE."""
     rig = Rig()
@@ -77,7 +77,7 @@ def test_11_1_1_disable_at_standstill():
 
 
 @pytest.mark.parametrize("actor,min_v", [(2, 1.0), (1, 0.0)], ids=["PTO", "PROFIdrive"])
-def test_11_1_1_stopmode0_emergency_stop_status_false_only_at_standstill(actor, min_v):
+def test_s7_1200_11_1_1_stopmode0_emergency_stop_status_false_only_at_standstill(actor, min_v):
     """§11.1.1.1 StopMode 0 'Emergency stop': brakes with the configured emergency deceleration, disabled
     after reaching standstill; 'Upon disabling, the status does not change to FALSE until the axis reaches
     a standstill' (Busy likewise, function chart ①③)."""
@@ -95,7 +95,7 @@ def test_11_1_1_stopmode0_emergency_stop_status_false_only_at_standstill(actor, 
 
 
 @pytest.mark.parametrize("velocity,max_time", [(50.0, 0.030)], ids=["5kHz"])
-def test_11_1_1_stopmode1_pto_immediate_stop_high_frequency(velocity, max_time):
+def test_s7_1200_11_1_1_stopmode1_pto_immediate_stop_high_frequency(velocity, max_time):
     """§11.1.1.1 StopMode 1 'Immediate stop', PTO: pulse output stopped with a frequency-dependent
     deceleration - output frequency >= 100 Hz: max. 30 ms (50 mm/s x 100 pulses/mm = 5 kHz)."""
     rig = moving_rig(velocity, dec=10.0, emergency=100.0)
@@ -106,7 +106,7 @@ def test_11_1_1_stopmode1_pto_immediate_stop_high_frequency(velocity, max_time):
     assert not rig.axis.StatusBits.Enable and rig.axis.Velocity == 0.0
 
 
-def test_11_1_1_stopmode1_pto_immediate_stop_low_frequency():
+def test_s7_1200_11_1_1_stopmode1_pto_immediate_stop_low_frequency():
     """§11.1.1.1 StopMode 1, PTO, output frequency < 100 Hz: deceleration 30 ms up to max. 1.5 s
     (0.5 mm/s x 100 pulses/mm = 50 Hz)."""
     rig = moving_rig(0.5, min_v=0.1, acc=100.0, dec=0.1, emergency=0.5)
@@ -116,7 +116,7 @@ def test_11_1_1_stopmode1_pto_immediate_stop_low_frequency():
     assert not rig.axis.StatusBits.Enable
 
 
-def test_11_1_1_stopmode2_respects_jerk_stopmode0_does_not():
+def test_s7_1200_11_1_1_stopmode2_respects_jerk_stopmode0_does_not():
     """§11.1.1.1 StopMode 2 'Emergency stop with jerk control': emergency deceleration with the configured
     jerk; StopMode 0: emergency deceleration only (§12.8 'Stop with emergency stop ramp ... without any
     jerk limit').  Jerk 500, emergency deceleration 100: the jerk-limited stop lasts ~0.2 s longer."""
@@ -131,7 +131,7 @@ def test_11_1_1_stopmode2_respects_jerk_stopmode0_does_not():
     assert times[2] == pytest.approx(0.49 + 100.0 / 500.0, abs=0.04), "StopMode 2 must respect the jerk"
 
 
-def test_9_3_stopmode_taken_over_while_enable_true():
+def test_s7_1200_9_3_stopmode_taken_over_while_enable_true():
     """§9.3: 'StopMode' of MC_Power is an exception to the rising-edge rule - a change is applied while
     Enable = TRUE.  Enabled with StopMode 0, changed to 1 while enabled -> immediate stop (<= 30 ms)
     instead of the 0.49 s emergency ramp."""
@@ -143,7 +143,7 @@ def test_9_3_stopmode_taken_over_while_enable_true():
     assert t_stop <= 0.030 + 0.004 + 1e-9, f"stopped after {t_stop} s: StopMode 1 not taken over"
 
 
-def test_11_1_1_disabled_axis_accepts_only_mc_reset():
+def test_s7_1200_11_1_1_disabled_axis_accepts_only_mc_reset():
     """§11.1.1.1 Status FALSE: 'The axis does not execute Motion Control commands and does not accept any
     new commands (exception: MC_Reset command)' - 16#8200 'Axis is not enabled' (§12.8)."""
     rig = Rig(enable=False)
@@ -166,7 +166,7 @@ def test_11_1_1_disabled_axis_accepts_only_mc_reset():
 
 # ----------------------------------------------------------------------------------------------------------
 # one MC_Power per axis, invalid modes
-def test_9_3_second_mc_power_instance_8201():
+def test_s7_1200_9_3_second_mc_power_instance_8201():
     """§9.3 'each axis must be called with a separate call of MC_Power with a separate instance DB';
     §12.8 16#8201/16#0001 'Axis has already been enabled by another MC_Power instance'.  The axis stays
     enabled by the first instance (operating error without axis stop, §9.6)."""
@@ -184,7 +184,7 @@ def test_9_3_second_mc_power_instance_8201():
 
 
 @pytest.mark.parametrize("stop_mode", [3, -1])
-def test_12_8_invalid_stopmode_8405(stop_mode):
+def test_s7_1200_12_8_invalid_stopmode_8405(stop_mode):
     """§12.8 16#8405/16#0011 'Invalid value at parameter StopMode' - remedy 'Correct the selection value;
     enable the axis again': the axis is not enabled."""
     rig = Rig(enable=False)
@@ -202,7 +202,7 @@ def test_12_8_invalid_stopmode_8405(stop_mode):
     assert not s["power"]["Error"]
 
 
-def test_12_8_invalid_startmode_8412():
+def test_s7_1200_12_8_invalid_startmode_8412():
     """§12.8 16#8412/16#0011 'Value at StartMode parameter invalid' (PROFIdrive axis; StartMode 0/1 only) -
     remedy 'enable the axis again': the axis is not enabled."""
     rig = Rig(actor=1, enable=False)
@@ -236,7 +236,7 @@ def _trip_following_error(rig: Rig):
         "§9.6: the pending operating error is shown at MC_Power"
 
 
-def test_11_1_1_auto_reenable_after_acknowledge_while_enable_true():
+def test_s7_1200_11_1_1_auto_reenable_after_acknowledge_while_enable_true():
     """§11.1.1.1 note and function chart ②: 'If the axis is switched off due to an error, it will be
     enabled again automatically after the error has been eliminated and acknowledged. This requires that
     Enable has retained the value TRUE.'  §11.1.2.1: Done TRUE and StatusBits.Error FALSE."""
@@ -252,7 +252,7 @@ def test_11_1_1_auto_reenable_after_acknowledge_while_enable_true():
     assert rig.scan()["mr"]["Busy"] or mr.Done, "the re-enabled axis accepts commands"
 
 
-def test_11_1_1_no_reenable_when_enable_was_reset():
+def test_s7_1200_11_1_1_no_reenable_when_enable_was_reset():
     """§11.1.1.1 note: the automatic re-enable requires Enable to have stayed TRUE; with Enable FALSE the
     axis stays disabled after the acknowledgement."""
     rig = _following_error_rig()
@@ -266,7 +266,7 @@ def test_11_1_1_no_reenable_when_enable_was_reset():
     assert not rig.axis.StatusBits.Enable
 
 
-def test_11_1_2_reset_acknowledges_sw_limit_error():
+def test_s7_1200_11_1_2_reset_acknowledges_sw_limit_error():
     """§11.1.2.1: MC_Reset acknowledges an 'operating error with axis stop' (16#8002 SW limit, §12.8);
     afterwards StatusBits.Error FALSE, MC_Power without error, and the axis can be moved out of the limit
     in the negative direction."""
@@ -288,7 +288,7 @@ def test_11_1_2_reset_acknowledges_sw_limit_error():
 
 # ----------------------------------------------------------------------------------------------------------
 # homing status and disabling
-def test_11_1_3_pto_axis_loses_homing_done_when_disabled():
+def test_s7_1200_11_1_3_pto_axis_loses_homing_done_when_disabled():
     """§11.1.3.1 'Resetting the Homed status', PTO: 'Disabling of axis by the MC_Power instruction';
     §11.1.1.1 Status FALSE: 'For drive connection via PTO: The axis is not homed'."""
     rig = Rig()
@@ -303,7 +303,7 @@ def test_11_1_3_pto_axis_loses_homing_done_when_disabled():
     assert not rig.axis.StatusBits.HomingDone, "re-enabling does not restore the homed status"
 
 
-def test_11_1_3_incremental_encoder_axis_keeps_homing_done_when_disabled():
+def test_s7_1200_11_1_3_incremental_encoder_axis_keeps_homing_done_when_disabled():
     """§11.1.3.1 'Resetting the Homed status' for technology objects with incremental actual values does not
     list disabling: a PROFIdrive axis stays homed through MC_Power Enable FALSE/TRUE."""
     rig = Rig(actor=1)
@@ -318,7 +318,7 @@ def test_11_1_3_incremental_encoder_axis_keeps_homing_done_when_disabled():
     assert rig.axis.Position == pytest.approx(25.0, abs=0.01)
 
 
-def test_11_1_2_reset_restart_only_when_disabled():
+def test_s7_1200_11_1_2_reset_restart_only_when_disabled():
     """§11.1.2.1 Restart = TRUE: 'The command can only be executed when the axis is disabled' - on an
     enabled axis MC_Reset ends with Error 16#820A (§12.8 'Restart of axis not possible'), latched while
     Execute TRUE (§9.5.2); on the disabled axis it ends with Done."""

@@ -91,7 +91,7 @@ def moving_samples(trace):
 # ==========================================================================================================
 # start/stop velocity
 @pytest.mark.parametrize("how", ["MC_MoveRelative", "MC_MoveVelocity+MC_Halt", "MC_MoveJog"])
-def test_5_4_4_4_profile_starts_and_ends_at_start_stop_velocity(how):
+def test_s7_1200_5_4_4_4_profile_starts_and_ends_at_start_stop_velocity(how):
     """§5.4.4.4: the start/stop velocity is the minimum permissible velocity of a PTO axis; the ramps run
     between the start/stop velocity and the maximum velocity (ramp time = (max - start/stop) / acceleration),
     §12.6: the first pulse is output at the start/stop velocity.  The setpoint velocity jumps 0 -> 10 mm/s at
@@ -117,7 +117,7 @@ def test_5_4_4_4_profile_starts_and_ends_at_start_stop_velocity(how):
     assert b.axis.Velocity == 0.0
 
 
-def test_5_4_4_4_ramp_up_time_from_start_stop_velocity():
+def test_s7_1200_5_4_4_4_ramp_up_time_from_start_stop_velocity():
     """§5.4.4.4: "Ramp-up time = (maximum velocity - start/stop velocity) / acceleration" -- 100 mm/s with
     start/stop 10 mm/s and 100 mm/s^2 is reached after 0.9 s (not 1.0 s)."""
     b = Pto(params(vmin=10.0))
@@ -131,7 +131,7 @@ def test_5_4_4_4_ramp_up_time_from_start_stop_velocity():
 # ==========================================================================================================
 # limit frequency of the pulse output
 @pytest.mark.parametrize("f_lim", [20000.0, 100000.0, 200000.0, 1000000.0])
-def test_2_1_1_max_velocity_up_to_limit_frequency(f_lim):
+def test_s7_1200_2_1_1_max_velocity_up_to_limit_frequency(f_lim):
     """§2.1.1 pulse output limit frequencies (20 kHz, 100 kHz, 200 kHz, 1 MHz); §5.4.4.4 "Maximum velocity
     ... PTO: 1 ... limit frequency": a MaxVelocity above the limit frequency is the configuration error
     16#8607/16#0003 "Value is higher than the high hardware limit"."""
@@ -141,7 +141,7 @@ def test_2_1_1_max_velocity_up_to_limit_frequency(f_lim):
 
 
 @pytest.mark.parametrize("signal_type, factor", [(2, 1), (3, 1), (4, 1), (5, 4)])
-def test_2_1_3_quadruple_a_b_allows_four_times_the_step_rate(signal_type, factor):
+def test_s7_1200_2_1_3_quadruple_a_b_allows_four_times_the_step_rate(signal_type, factor):
     """§2.1.3 / §5.4.3.2: "PTO (A/B phase-shifted - quadruple)": every edge of A and B is a step, so the output
     frequency is a quarter of the step rate -- with a 100 kHz output the axis may run at 4 x 100 k steps/s.
     The other signal types output one period per step."""
@@ -152,7 +152,7 @@ def test_2_1_3_quadruple_a_b_allows_four_times_the_step_rate(signal_type, factor
     assert (0x8607, 0x0003) in config_errors(cfg)
 
 
-def test_2_1_1_start_stop_velocity_at_least_1_hz():
+def test_s7_1200_2_1_1_start_stop_velocity_at_least_1_hz():
     """§2.1.1 "The low limit frequency is always 1 Hz"; §12.8 16#8606/16#0004 start/stop velocity "lower than
     the low hardware limit" (0.005 mm/s = 0.5 pulses/s); 16#8606/16#0007 start/stop above the maximum."""
     assert config_errors(params(vmin=PULSE)) == set()
@@ -160,7 +160,7 @@ def test_2_1_1_start_stop_velocity_at_least_1_hz():
     assert (0x8606, 0x0007) in config_errors(params(vmin=50.0, vmax=40.0))
 
 
-def test_12_8_8607_max_velocity_written_above_limit_frequency_refuses_enable():
+def test_s7_1200_12_8_8607_max_velocity_written_above_limit_frequency_refuses_enable():
     """MaxVelocity is writable with MC_WriteParam while the axis is disabled, effective when it is enabled
     (§12.9.10 "WP", effective code 2); a value above the limit frequency (100 kHz = 1000 mm/s) is the
     configuration error 16#8607/16#0003 at MC_Power and the axis is not enabled."""
@@ -186,7 +186,7 @@ def _short(distance: float):
     return b, moving, duration
 
 
-def test_12_5_short_positioning_runs_at_pulses_times_500_hz():
+def test_s7_1200_12_5_short_positioning_runs_at_pulses_times_500_hz():
     """§12.5: a positioning whose planned duration is < 2 ms runs at "Reduced velocity = Number of pulses to be
     output * 500 Hz" for the entire duration: 0.1 mm = 10 pulses (planned about 1.8 ms with 10^5 mm/s^2)
     -> 5000 pulses/s = 50 mm/s, i.e. the motion lasts 2 ms."""
@@ -196,7 +196,7 @@ def test_12_5_short_positioning_runs_at_pulses_times_500_hz():
     assert b.axis.Position == pytest.approx(0.1) and b.axis.ActualPosition == pytest.approx(0.1)
 
 
-def test_12_5_no_reduction_from_2_ms():
+def test_s7_1200_12_5_no_reduction_from_2_ms():
     """§12.5: "Velocity is not reduced if the planned positioning duration is >= 2 ms" -- 0.2 mm with the same
     dynamics takes about 2.8 ms and reaches the commanded 100 mm/s."""
     b, moving, duration = _short(0.2)
@@ -221,7 +221,7 @@ def _assert_error(fb, error_id, error_info):
     (2, lambda: MC_MoveRelative(Execute=True, Distance=10.0, Velocity=20.0)),
     (2, lambda: MC_MoveJog(JogForward=True, Velocity=20.0)),
 ], ids=["rel-", "vel-", "vel-dir2", "jog-", "abs-", "mode2-rel+", "mode2-jog+"])
-def test_5_4_4_1_direction_not_permitted_8008_002E(mode, make):
+def test_s7_1200_5_4_4_1_direction_not_permitted_8008_002E(mode, make):
     """§5.4.4.1 "Permitted direction of rotation" (Actor.DirectionMode 1 positive, 2 negative); §12.8
     16#8008/16#002E "The selected motion direction is not allowed" -- an operating error with axis stop
     (§9.6: at the instruction and at MC_Power, ErrorBits.DirectionFault); the axis does not move."""
@@ -243,7 +243,7 @@ def test_5_4_4_1_direction_not_permitted_8008_002E(mode, make):
     assert b.axis.Position == pytest.approx(5.0 if mode == 1 else -5.0)
 
 
-def test_5_4_4_1_reversal_not_possible_8008_002F():
+def test_s7_1200_5_4_4_1_reversal_not_possible_8008_002F():
     """§12.8 16#8008/16#002F "A reversing motion is not possible with the selected motion direction": with
     only the positive direction permitted, the axis moving at 50 mm/s (braking distance 12.5 mm) cannot reach
     a target 1 mm ahead without reversing; it is stopped with the configured deceleration (decision 17) and
@@ -263,7 +263,7 @@ def test_5_4_4_1_reversal_not_possible_8008_002F():
 
 
 @pytest.mark.parametrize("direction_mode, ok", [(0, False), (1, True), (2, True)])
-def test_12_8_861A_002D_both_directions_without_direction_output(direction_mode, ok):
+def test_s7_1200_12_8_861A_002D_both_directions_without_direction_output(direction_mode, ok):
     """§2.1.1 / §5.4.3.2: with the direction output deactivated the direction is restricted; §12.8
     16#861A/16#002D "'Both directions' not allowed when direction output is deactivated"."""
     cfg = params(actor={"DirectionMode": direction_mode,
@@ -274,7 +274,7 @@ def test_12_8_861A_002D_both_directions_without_direction_output(direction_mode,
     assert config_errors(params(actor={"DirectionMode": 0, "Interface": {"PTO_OutputBEnable": True}})) == set()
 
 
-def test_12_8_861A_written_both_directions_refused_at_enable():
+def test_s7_1200_12_8_861A_written_both_directions_refused_at_enable():
     """Actor.DirectionMode is written with MC_WriteParam while disabled, effective at the enable (§12.9.5
     "WP", effective code 2): "both directions" without direction output -> 16#861A/16#002D at MC_Power."""
     b = Pto(params(actor={"DirectionMode": 1, "Interface": {"PTO_OutputBEnable": False}}), enable=False)
@@ -288,7 +288,7 @@ def test_12_8_861A_written_both_directions_refused_at_enable():
     assert not b.power.Status
 
 
-def test_12_8_861A_0011_invalid_selection():
+def test_s7_1200_12_8_861A_0011_invalid_selection():
     """§12.8 16#861A/16#0011 "The selection value is invalid" (Actor.DirectionMode 0..2)."""
     assert (0x861A, 0x0011) in config_errors(params(actor={"DirectionMode": 3}))
 
@@ -302,7 +302,7 @@ def two_axes():
     return ctl, ax1, ax2
 
 
-def test_12_1_only_one_axis_at_a_time_uses_the_pto():
+def test_s7_1200_12_1_only_one_axis_at_a_time_uses_the_pto():
     """§12.1: "Only one axis at a time may use the PTO"; the axis using it shows StatusBits.Activated = TRUE
     and ErrorBits.HWUsed = FALSE; the instructions of the other axis indicate errors: enabling it while the
     active one is enabled -> 16#8407/16#0001, a motion command -> 16#8005/16#0001 "PTO/HSC are already being
@@ -331,7 +331,7 @@ def test_12_1_only_one_axis_at_a_time_uses_the_pto():
     assert ax1.Position == 0.0
 
 
-def test_12_1_switchover_procedure():
+def test_s7_1200_12_1_switchover_procedure():
     """§12.1 switchover from "Positioning axis_2" to "Positioning axis_1": (1) end the motions of axis_2, (2)
     MC_Power Enable = FALSE, (3) Status = FALSE AND StatusBits.Enable = FALSE, (4) stop calling axis_2's
     instructions, (5) at the first call of axis_1's MC_Power axis_2 is deactivated and axis_1 activated, (6)
@@ -388,7 +388,7 @@ def test_12_1_switchover_procedure():
     assert ax1.StatusBits.Activated and p1.Status
 
 
-def test_12_1_axes_on_different_ptos_do_not_interfere():
+def test_s7_1200_12_1_axes_on_different_ptos_do_not_interfere():
     """§12.1 applies to axes referencing the same PTO; axes on PTO1 and PTO2 are enabled together."""
     ctl = Controller()
     ax1 = ctl.add_positioning_axis("Axis_1", params(actor={"Interface": {"PTO": 1}}))
@@ -408,7 +408,7 @@ def test_12_1_axes_on_different_ptos_do_not_interfere():
 @pytest.mark.parametrize("value, ok_or_codes", [(2, None), (20, None), (21, (0x864A, 0x006D)),
                                                  (25, (0x864A, 0x006D)), (1, (0x864A, 0x006E)),
                                                  (0, (0x864A, 0x006E))])
-def test_v7_pto_slice_time_range(value, ok_or_codes):
+def test_s7_1200_v7_pto_slice_time_range(value, ok_or_codes):
     """V7 §12.9 Actor.PTOSliceTime 2..20 ms; V7 §12.8 16#864A "invalid Actor.PTOSliceTime": 16#006D value
     > 20 ms, 16#006E value < 2 ms (configuration errors)."""
     errors = config_errors(params(actor={"PTOSliceTime": value}))
@@ -418,7 +418,7 @@ def test_v7_pto_slice_time_range(value, ok_or_codes):
         assert ok_or_codes in errors
 
 
-def test_v7_pto_slice_time_written_invalid_refuses_enable():
+def test_s7_1200_v7_pto_slice_time_written_invalid_refuses_enable():
     """V7: Actor.PTOSliceTime is "R, WP_PTO; effective 2" -- written with MC_WriteParam while disabled, checked
     when the axis is enabled: 25 ms -> configuration error 16#864A/16#006D at MC_Power."""
     b = Pto(enable=False)
@@ -436,7 +436,7 @@ def _first_change(trace, after: float, value: float) -> float:
     return next(t for t, _, v in trace if t > after and v != pytest.approx(value))
 
 
-def test_v7_pto_slice_time_command_starts_at_segment_boundary():
+def test_s7_1200_v7_pto_slice_time_command_starts_at_segment_boundary():
     """V7 §12.9 Actor.PTOSliceTime: motion commands are processed in segments, a new command becomes effective
     at the segment boundary (decision 49): with 10 ms a MC_MoveVelocity issued at t = 12 ms starts at 20 ms,
     an override issued at 304 ms changes the velocity from 310 ms on."""
@@ -462,7 +462,7 @@ def test_v7_pto_slice_time_command_starts_at_segment_boundary():
     assert mv2.Busy
 
 
-def test_v7_pto_slice_time_default_takes_effect_within_2_ms():
+def test_s7_1200_v7_pto_slice_time_default_takes_effect_within_2_ms():
     """V7: the start value of Actor.PTOSliceTime is 2 ms -- a command takes effect within 2 ms."""
     b = Pto(version=7)
     b.scan()
@@ -473,7 +473,7 @@ def test_v7_pto_slice_time_default_takes_effect_within_2_ms():
     assert t0 < t_start <= t0 + 0.002 + 1e-9
 
 
-def test_v6_has_no_pto_slice_time():
+def test_s7_1200_v6_has_no_pto_slice_time():
     """V6 has no segment time: a command on a V6 PTO axis takes effect in the next servo cycle even with
     Actor.PTOSliceTime configured (the tag exists only in V7)."""
     b = Pto(params(actor={"PTOSliceTime": 10}), version=6)
@@ -485,7 +485,7 @@ def test_v6_has_no_pto_slice_time():
     assert t_start == pytest.approx(0.013)
 
 
-def test_v7_pto_slice_time_applies_to_command_table():
+def test_s7_1200_v7_pto_slice_time_applies_to_command_table():
     """Decision 49: "a new command on a PTO axis starts at the next multiple of the slice time" -- MC_CommandTable
     is such a command (§11.1.9: it aborts and is aborted like the other motion commands): with 10 ms a table
     executed at t = 12 ms starts moving at 20 ms."""

@@ -63,7 +63,7 @@ def _check_done_at_standstill(rig: Rig, snaps, target):
 
 
 @pytest.mark.parametrize("kind", list(SETUPS))
-def test_9_5_2_done_latched_while_execute_true_then_falls_with_execute(kind):
+def test_s7_1200_9_5_2_done_latched_while_execute_true_then_falls_with_execute(kind):
     """§9.5.2 'Complete execution' ②③④: Busy while active; at the end Busy FALSE and Done TRUE; Done stays
     TRUE while Execute stays TRUE and changes to FALSE together with Execute."""
     rig = Rig()
@@ -82,7 +82,7 @@ def test_9_5_2_done_latched_while_execute_true_then_falls_with_execute(kind):
 
 
 @pytest.mark.parametrize("kind", list(SETUPS))
-def test_9_5_2_done_one_cycle_when_execute_already_false(kind):
+def test_s7_1200_9_5_2_done_one_cycle_when_execute_already_false(kind):
     """§9.5.2 ①⑤: Execute reset during the command; Busy stays TRUE regardless of Execute; Done TRUE for
     only one execution cycle."""
     rig = Rig()
@@ -99,7 +99,7 @@ def test_9_5_2_done_one_cycle_when_execute_already_false(kind):
 
 @pytest.mark.parametrize("mode,start,position,expected", [(0, 7.5, 123.4, 123.4), (1, 7.5, -20.0, -12.5)])
 @pytest.mark.parametrize("held", [True, False], ids=["execute_held", "execute_pulse"])
-def test_9_5_2_mc_home_direct_done_timing(mode, start, position, expected, held):
+def test_s7_1200_9_5_2_mc_home_direct_done_timing(mode, start, position, expected, held):
     """§9.5.2 with MC_Home Mode 0/1 (§11.1.3.1): new position (0: Position, 1: position + Position),
     HomingDone TRUE; Done latched while Execute TRUE, else shown for exactly one call."""
     rig = Rig()
@@ -123,7 +123,7 @@ def test_9_5_2_mc_home_direct_done_timing(mode, start, position, expected, held)
 
 
 @pytest.mark.parametrize("held", [True, False], ids=["execute_held", "execute_pulse"])
-def test_9_5_2_mc_reset_done_timing_and_no_command_aborted(held):
+def test_s7_1200_9_5_2_mc_reset_done_timing_and_no_command_aborted(held):
     """§9.5.2: MC_Reset is a Done-type instruction that cannot be aborted and so has no CommandAborted;
     §11.1.2.1: Done = error acknowledged (StatusBits.Error FALSE)."""
     rig = Rig()
@@ -144,7 +144,7 @@ def test_9_5_2_mc_reset_done_timing_and_no_command_aborted(held):
 # §9.5.2 abort and error
 @pytest.mark.parametrize("kind", list(SETUPS))
 @pytest.mark.parametrize("held", [True, False], ids=["execute_held", "execute_pulse"])
-def test_9_5_2_command_aborted_timing(kind, held):
+def test_s7_1200_9_5_2_command_aborted_timing(kind, held):
     """§9.5.2 'Abort command' ③④⑤: on abort Busy FALSE and CommandAborted TRUE; latched while Execute TRUE
     and FALSE together with Execute; only one execution cycle when Execute was already FALSE."""
     rig = Rig()
@@ -179,7 +179,7 @@ def _sw_limit_rig(**kw) -> Rig:
 
 @pytest.mark.parametrize("kind", ["MC_MoveRelative", "MC_MoveAbsolute"])
 @pytest.mark.parametrize("held", [True, False], ids=["execute_held", "execute_pulse"])
-def test_9_5_2_error_during_execution_timing(kind, held):
+def test_s7_1200_9_5_2_error_during_execution_timing(kind, held):
     """§9.5.2 'Error during command execution' ③④⑤ with the high SW limit switch (§12.8 16#8002/16#000E:
     reached with the configured deceleration): Busy FALSE, Error TRUE, latched while Execute TRUE, one
     cycle otherwise.  §9.6: an operating error with axis stop is also shown at MC_Power."""
@@ -223,7 +223,7 @@ BAD_INPUTS = [
 @pytest.mark.parametrize("cls,inputs,codes", BAD_INPUTS,
                          ids=[f"{c.__name__}-{e[0]:04X}-{e[1]:04X}" for c, _, e in BAD_INPUTS])
 @pytest.mark.parametrize("held", [True, False], ids=["execute_held", "execute_pulse"])
-def test_9_5_2_parameter_error_at_rising_edge(cls, inputs, codes, held):
+def test_s7_1200_9_5_2_parameter_error_at_rising_edge(cls, inputs, codes, held):
     """§9.6 block parameter errors (§12.8 16#8400-16#8404): the command is not executed - Error TRUE at the
     call with the rising edge, Busy never TRUE; Error latched while Execute TRUE (§9.5.2 ④), FALSE with the
     next call once Execute is FALSE; the axis does not move."""
@@ -240,7 +240,7 @@ def test_9_5_2_parameter_error_at_rising_edge(cls, inputs, codes, held):
     assert not after[-1]["power"]["Error"], "a block parameter error is shown only at the instruction (§9.6)"
 
 
-def test_9_5_2_halt_at_standstill_done():
+def test_s7_1200_9_5_2_halt_at_standstill_done():
     """§9.5.2 / §11.1.4.1: MC_Halt on an axis at standstill - 'zero velocity reached' at once: Done (one
     cycle with Execute pulsed)."""
     rig = Rig()
@@ -257,7 +257,7 @@ def test_9_5_2_halt_at_standstill_done():
     (MC_MoveAbsolute, {"Position": 20.0, "Velocity": 20.0}, {"Position": -50.0, "Velocity": 40.0}),
     (MC_MoveVelocity, {"Velocity": 20.0}, {"Velocity": 40.0}),
 ])
-def test_9_3_inputs_taken_over_only_at_rising_edge(cls, inputs, change):
+def test_s7_1200_9_3_inputs_taken_over_only_at_rising_edge(cls, inputs, change):
     """§9.3: 'Input values are taken over at the rising edge of Execute'; later changes are ignored until
     the next start (exceptions only MC_Power.StopMode and MC_MoveJog.Velocity)."""
     rig = Rig()
@@ -274,7 +274,7 @@ def test_9_3_inputs_taken_over_only_at_rising_edge(cls, inputs, change):
         assert snaps[-1]["cmd"]["InVelocity"] and snaps[-1].vel == pytest.approx(20.0)
 
 
-def test_9_6_move_absolute_not_homed_8204():
+def test_s7_1200_9_6_move_absolute_not_homed_8204():
     """§11.1.5.1 requirement 'axis is homed' / §12.8 16#8204/16#0001; error latched while Execute TRUE."""
     rig = Rig()
     fb = rig.add("cmd", MC_MoveAbsolute(), Position=10.0, Velocity=10.0, Execute=True)
@@ -290,7 +290,7 @@ def test_9_6_move_absolute_not_homed_8204():
 # §9.5.2 as a property: random Execute patterns and overrides keep the output rules
 @settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.lists(st.tuples(st.booleans(), st.booleans(), st.integers(1, 30)), min_size=1, max_size=10))
-def test_9_5_2_property_random_execute_patterns(segments):
+def test_s7_1200_9_5_2_property_random_execute_patterns(segments):
     """§9.5.2 for two MC_MoveRelative instances overriding each other under random Execute patterns:
     Busy/Done/CommandAborted/Error exclusive (checked in every scan by the rig); a final status seen while
     Execute is TRUE stays until Execute falls and is FALSE at the call where Execute is FALSE; one seen with
@@ -330,7 +330,7 @@ def test_9_5_2_property_random_execute_patterns(segments):
 # ----------------------------------------------------------------------------------------------------------
 # §9.5.3 MC_MoveVelocity
 @pytest.mark.parametrize("held", [True, False], ids=["execute_held", "execute_pulse"])
-def test_9_5_3_busy_and_invelocity_independent_of_execute(held):
+def test_s7_1200_9_5_3_busy_and_invelocity_independent_of_execute(held):
     """§9.5.3 'The parameterized velocity is reached' ①②, §11.1.7.1 PLCopen note: InVelocity TRUE when the
     velocity is reached; Busy and InVelocity stay TRUE regardless of Execute until overridden or error."""
     rig = Rig()
@@ -369,7 +369,7 @@ def _mv_then_override(held: bool, reached: bool, new_velocity: float = 15.0):
 
 
 @pytest.mark.parametrize("held", [True, False], ids=["execute_held", "execute_pulse"])
-def test_9_5_3_abort_before_velocity_reached(held):
+def test_s7_1200_9_5_3_abort_before_velocity_reached(held):
     """§9.5.3 'aborted prior to reaching the parameterized velocity' ③④⑤ (function chart S-MVEL-2):
     Busy FALSE, CommandAborted TRUE - latched while Execute TRUE, one cycle otherwise; the new command
     reaches 15.0 and keeps moving."""
@@ -389,7 +389,7 @@ def test_9_5_3_abort_before_velocity_reached(held):
     assert all(s["mv2"]["Busy"] and s["mv2"]["InVelocity"] and s.vel == pytest.approx(15.0) for s in rig.scans(20))
 
 
-def test_9_5_3_abort_after_velocity_reached_with_execute_true_is_shown():
+def test_s7_1200_9_5_3_abort_after_velocity_reached_with_execute_true_is_shown():
     """§9.5.3 (the note suppresses the abort only when Execute is FALSE) and function chart S-MVEL-1:
     InVel_1 TRUE, then overridden -> Abort_1 TRUE (latched while Execute TRUE), InVel_1 FALSE, Busy_1 FALSE."""
     rig, mv, mv2 = _mv_then_override(held=True, reached=True)
@@ -403,7 +403,7 @@ def test_9_5_3_abort_after_velocity_reached_with_execute_true_is_shown():
     assert s.vel == pytest.approx(15.0)
 
 
-def test_9_5_3_no_abort_shown_after_velocity_reached_with_execute_false():
+def test_s7_1200_9_5_3_no_abort_shown_after_velocity_reached_with_execute_false():
     """§9.5.3 note: velocity reached, Execute FALSE and a new command starts -> no CommandAborted; Busy and
     InVelocity fall because the command has been overridden (§11.1.7.1 PLCopen note)."""
     rig, mv, mv2 = _mv_then_override(held=False, reached=True)
@@ -415,7 +415,7 @@ def test_9_5_3_no_abort_shown_after_velocity_reached_with_execute_false():
 
 
 @pytest.mark.parametrize("held", [True, False], ids=["execute_held", "execute_pulse"])
-def test_9_5_3_error_before_velocity_reached(held):
+def test_s7_1200_9_5_3_error_before_velocity_reached(held):
     """§9.5.3 'An error has occurred prior to reaching the parameterized velocity' ③④⑤: high SW limit
     (16#8002) hit while still accelerating -> Busy FALSE, Error TRUE, latched while Execute TRUE, else one
     cycle."""
@@ -437,7 +437,7 @@ def test_9_5_3_error_before_velocity_reached(held):
     assert all(quiet(s["mv"]) for s in after)
 
 
-def test_9_5_3_no_error_after_velocity_reached_with_execute_false_shown_at_mc_power():
+def test_s7_1200_9_5_3_no_error_after_velocity_reached_with_execute_false_shown_at_mc_power():
     """§9.5.3 note: velocity reached, Execute FALSE and an axis error occurs (SW limit approached) -> no Error
     at MC_MoveVelocity; the error is only indicated at MC_Power.  The command is stopped -> Busy FALSE."""
     rig = Rig(sw=(-1000.0, 30.0))
@@ -454,7 +454,7 @@ def test_9_5_3_no_error_after_velocity_reached_with_execute_false_shown_at_mc_po
     assert all(not s["mv"]["Busy"] and not s["mv"]["InVelocity"] for s in rest)
 
 
-def test_9_5_3_error_after_velocity_reached_with_execute_true_is_shown():
+def test_s7_1200_9_5_3_error_after_velocity_reached_with_execute_true_is_shown():
     """§9.5.3: the note suppresses the error only with Execute FALSE; with Execute TRUE the error is shown
     and latched (④)."""
     rig = Rig(sw=(-1000.0, 30.0))
@@ -467,7 +467,7 @@ def test_9_5_3_error_after_velocity_reached_with_execute_true_is_shown():
 
 
 @pytest.mark.parametrize("held", [True, False], ids=["execute_held", "execute_pulse"])
-def test_11_1_7_velocity_zero_behaves_like_halt(held):
+def test_s7_1200_11_1_7_velocity_zero_behaves_like_halt(held):
     """§11.1.7.1 'Velocity = 0.0': aborts active motion, brakes with the configured deceleration; Busy TRUE
     while braking; at standstill InVelocity TRUE for at least one cycle; Busy falls together with
     InVelocity; both latched while Execute TRUE."""
@@ -504,7 +504,7 @@ def test_11_1_7_velocity_zero_behaves_like_halt(held):
     assert all(quiet(s["z"]) for s in rig.scans(3))
 
 
-def test_11_1_7_current_true_keeps_current_velocity():
+def test_s7_1200_11_1_7_current_true_keeps_current_velocity():
     """§11.1.7.1 Current = TRUE: Velocity/Direction ignored; 'When the axis resumes motion at the current
     velocity, InVelocity returns TRUE'.  The overridden MC_MoveVelocity shows CommandAborted (Execute TRUE)."""
     rig = Rig()
@@ -521,7 +521,7 @@ def test_11_1_7_current_true_keeps_current_velocity():
 
 
 @pytest.mark.parametrize("held", [True, False], ids=["execute_held", "execute_pulse"])
-def test_11_1_7_velocity_zero_status_bits(held):
+def test_s7_1200_11_1_7_velocity_zero_status_bits(held):
     """§11.1.7.1 'Velocity = 0.0': status bit SpeedCommand (V4+: VelocityCommand) is set when the command
     starts, ConstantVelocity is set upon axis standstill; 'Both bits are adapted to the new situation when
     a new motion command is started'."""
@@ -542,7 +542,7 @@ def test_11_1_7_velocity_zero_status_bits(held):
     assert rig.axis.StatusBits.PositioningCommand and not rig.axis.StatusBits.VelocityCommand
 
 
-def test_11_1_7_velocity_zero_at_standstill_reports_invelocity():
+def test_s7_1200_11_1_7_velocity_zero_at_standstill_reports_invelocity():
     """§11.1.7.1: Velocity = 0.0 on an axis at standstill -> InVelocity TRUE (with Busy) at once, latched
     while Execute TRUE."""
     rig = Rig()
@@ -558,7 +558,7 @@ def test_11_1_7_velocity_zero_at_standstill_reports_invelocity():
 # ----------------------------------------------------------------------------------------------------------
 # §9.5.4 MC_MoveJog
 @pytest.mark.parametrize("direction", ["JogForward", "JogBackward"])
-def test_9_5_4_jog_reached_held_released(direction):
+def test_s7_1200_9_5_4_jog_reached_held_released(direction):
     """§9.5.4 'reached and maintained' ①-⑤ and S-JOG-1: Busy from the rising edge; InVelocity when the jog
     velocity is reached and while moving at it; released -> InVelocity FALSE at once, the axis brakes with
     the configured deceleration; at standstill Busy FALSE; no CommandAborted/Error."""
@@ -590,7 +590,7 @@ def test_9_5_4_jog_reached_held_released(direction):
     assert all(quiet(s["jog"]) for s in [end] + rig.scans(3))
 
 
-def test_9_3_jog_velocity_change_while_jogging():
+def test_s7_1200_9_3_jog_velocity_change_while_jogging():
     """§9.3 (MC_MoveJog.Velocity taken over while a jog input is TRUE), function chart S-JOG-2: InVel_1
     resets, the axis brakes to -25.0, InVel_1 TRUE again; after Jog_B reset braked to standstill."""
     rig = Rig(acc=10.0, dec=5.0, max_v=100.0)
@@ -609,7 +609,7 @@ def test_9_3_jog_velocity_change_while_jogging():
 
 
 @pytest.mark.parametrize("reached", [False, True], ids=["accelerating", "at_velocity"])
-def test_9_5_4_abort_latched_while_jog_input_true(reached):
+def test_s7_1200_9_5_4_abort_latched_while_jog_input_true(reached):
     """§9.5.4 'aborted during execution' ③④: Busy FALSE and CommandAborted TRUE (independent of whether the
     velocity was reached); CommandAborted changes to FALSE when the jog input is reset."""
     rig = Rig(acc=100.0 if reached else 10.0)
@@ -628,7 +628,7 @@ def test_9_5_4_abort_latched_while_jog_input_true(reached):
     assert rig.fbs["mv"].Busy
 
 
-def test_9_5_4_abort_while_decelerating_after_release_one_cycle():
+def test_s7_1200_9_5_4_abort_while_decelerating_after_release_one_cycle():
     """§9.5.4 note: jog inputs FALSE, axis still decelerating, a new command starts -> CommandAborted for
     only one execution cycle."""
     rig = Rig(dec=10.0)
@@ -644,7 +644,7 @@ def test_9_5_4_abort_while_decelerating_after_release_one_cycle():
     assert all(not s["jog"]["Busy"] for s in snaps[1:])
 
 
-def test_11_1_8_both_jog_inputs_while_jogging_8406():
+def test_s7_1200_11_1_8_both_jog_inputs_while_jogging_8406():
     """§11.1.8.1: JogForward and JogBackward TRUE -> the axis stops with the configured deceleration and
     Error 16#8406/16#0001 is shown (§9.5.4: Busy FALSE, latched while a jog input is TRUE)."""
     rig = Rig(acc=100.0, dec=25.0, emergency=1000.0)
@@ -667,7 +667,7 @@ def test_11_1_8_both_jog_inputs_while_jogging_8406():
     assert all(quiet(s["jog"]) for s in rig.scans(2))
 
 
-def test_11_1_8_both_jog_inputs_from_standstill_8406():
+def test_s7_1200_11_1_8_both_jog_inputs_from_standstill_8406():
     """§11.1.8.1 / §12.8 16#8406: both jog inputs TRUE at once -> Error, no motion."""
     rig = Rig()
     jog = rig.add("jog", MC_MoveJog(), Velocity=50.0, JogForward=True, JogBackward=True)
@@ -678,7 +678,7 @@ def test_11_1_8_both_jog_inputs_from_standstill_8406():
     assert quiet(rig.scan()["jog"])
 
 
-def test_11_1_8_invalid_jog_velocity_error_latched_while_jog_input_true():
+def test_s7_1200_11_1_8_invalid_jog_velocity_error_latched_while_jog_input_true():
     """§11.1.8.1 Velocity limits (start/stop <= Velocity <= max), §12.8 16#8402/16#0008; §9.5.4 Error latched
     while the jog input is TRUE; no motion."""
     rig = Rig()
@@ -691,7 +691,7 @@ def test_11_1_8_invalid_jog_velocity_error_latched_while_jog_input_true():
     assert quiet(rig.scan()["jog"])
 
 
-def test_9_5_4_error_latched_while_jog_input_true():
+def test_s7_1200_9_5_4_error_latched_while_jog_input_true():
     """§9.5.4 'An error has occurred' ③④: SW limit reached while jogging -> Busy FALSE, Error TRUE until
     the jog input is reset."""
     rig = Rig(sw=(-1000.0, 20.0))
@@ -705,7 +705,7 @@ def test_9_5_4_error_latched_while_jog_input_true():
     assert all(quiet(s["jog"]) for s in rig.scans(2))
 
 
-def test_9_5_4_error_while_decelerating_after_release_one_cycle():
+def test_s7_1200_9_5_4_error_while_decelerating_after_release_one_cycle():
     """§9.5.4 note: jog inputs FALSE, axis still decelerating, a new error occurs (SW limit approached) ->
     Error for only one execution cycle.  The SW limit is brought into the braking path by MC_Home Mode 0
     during the braking (§12.4.1 example 3)."""
@@ -734,7 +734,7 @@ def _edge(prev, cur, name, key):
 
 @settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.lists(st.tuples(st.booleans(), st.booleans(), st.integers(1, 40)), min_size=1, max_size=10))
-def test_9_5_3_property_two_velocity_commands(segments):
+def test_s7_1200_9_5_3_property_two_velocity_commands(segments):
     """§9.5.3 for two MC_MoveVelocity instances (+20 / -20) under random Execute patterns: InVelocity only
     at the commanded velocity and, once reached, kept (with Busy) until another command takes over;
     CommandAborted shown after an override unless the velocity was reached and Execute is FALSE;
@@ -779,7 +779,7 @@ def test_9_5_3_property_two_velocity_commands(segments):
 @settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.lists(st.tuples(st.sampled_from(["-", "F", "B", "FB"]), st.booleans(), st.integers(1, 40)),
                 min_size=1, max_size=10))
-def test_9_5_4_property_jog_with_interfering_commands(segments):
+def test_s7_1200_9_5_4_property_jog_with_interfering_commands(segments):
     """§9.5.4 for MC_MoveJog under random jog inputs and MC_MoveVelocity starts: InVelocity only while a
     jog input is TRUE and at the jog velocity; Busy falls only at standstill, with CommandAborted or with
     Error; CommandAborted/Error latched while a jog input is TRUE, FALSE when both are reset, shown for

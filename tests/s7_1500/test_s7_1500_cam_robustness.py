@@ -31,7 +31,7 @@ def _interpolate(points, mode, boundary):
     return ic, cam
 
 
-def test_three_point_periodic_cubic_spline_interpolates_defect3a():
+def test_s7_1500_three_point_periodic_cubic_spline_interpolates_defect3a():
     """Defect 3a: scipy's periodic check failed on the rounding of the detrended end value and the
     controller went to STOP.  The cam interpolates; BoundaryConditions 1 (cubic spline): equal first
     and second derivative at start and end (§6.2.5.7 "for cyclic use")."""
@@ -47,7 +47,7 @@ def test_three_point_periodic_cubic_spline_interpolates_defect3a():
 
 @pytest.mark.parametrize("points", [POINTS, [(0, 0), (100, 50), (200, 30), (300, 100)],
                                     [(-50, 3), (0, -2), (10, 8), (70, 1), (80, 40)]])
-def test_cubic_spline_with_boundary_conditions_passes_through_its_points_s6_2_5_7(points):
+def test_s7_1500_cubic_spline_with_boundary_conditions_passes_through_its_points_s6_2_5_7(points):
     """Found with defect 3a: with BoundaryConditions 1 a cubic spline cam whose end value differs from
     its start value missed all its interpolation points but the first (the linear trend taken out for
     the periodic spline was put back into the slopes only).  A cubic spline runs through the points."""
@@ -64,7 +64,7 @@ _coord = st.one_of(st.floats(-1e12, 1e12, allow_nan=False), st.floats(-1e3, 1e3,
 @settings(max_examples=150, deadline=None, suppress_health_check=list(HealthCheck))
 @given(points=st.lists(st.tuples(_coord, _coord), min_size=2, max_size=6), mode=st.sampled_from([0, 1, 2]),
        boundary=st.sampled_from([0, 1]))
-def test_any_admitted_points_interpolate_or_give_the_errorid_defect3a(points, mode, boundary):
+def test_s7_1500_any_admitted_points_interpolate_or_give_the_errorid_defect3a(points, mode, boundary):
     """Any points within the tag ranges (§A.2): Done with a finite curve, or Error with the cam's
     ErrorID - never a controller STOP."""
     ic, cam = _interpolate(points, mode, boundary)
@@ -107,7 +107,7 @@ def _outputs_ok(fb):
     assert not (fb.Error and fb.ErrorID == 0)
 
 
-def test_get_cam_following_value_and_restart_in_the_same_cycle_defect3b():
+def test_s7_1500_get_cam_following_value_and_restart_in_the_same_cycle_defect3b():
     """Defect 3b: MC_GetCamFollowingValue(Execute) and MC_Reset(Restart) on the cam in the same cycle
     stopped the controller (assertion).  The job given before the restart finds the cam restarted - not
     interpolated - and ends with that ErrorID; the restart is done."""
@@ -125,7 +125,7 @@ SAME_CYCLE = [("gf", "rs"), ("rs", "gf"), ("gl", "rs"), ("rs", "gl"), ("ic", "rs
 
 
 @pytest.mark.parametrize("combo", SAME_CYCLE, ids=["+".join(c) for c in SAME_CYCLE])
-def test_cam_jobs_in_the_same_cycle_never_stop_the_controller_defect3b(combo):
+def test_s7_1500_cam_jobs_in_the_same_cycle_never_stop_the_controller_defect3b(combo):
     """Audit of the cam TO's job handling: any cam instructions started in the same application cycle
     (in either call order) end with Done or Error with an ErrorID, the controller stays in RUN."""
     ctl, cam, fbs, go, order = _cam_rig()
@@ -149,7 +149,7 @@ def test_cam_jobs_in_the_same_cycle_never_stop_the_controller_defect3b(combo):
         assert fbs["gf"].Value == pytest.approx(float(cam.curve.value(50.0)))
 
 
-def test_interpolate_and_cam_in_in_the_same_cycle_s9_2_1():
+def test_s7_1500_interpolate_and_cam_in_in_the_same_cycle_s9_2_1():
     """MC_CamIn takes the cam into use: an MC_InterpolateCam given in the same cycle after it is
     rejected (16#8401); given before it, the interpolation finds the cam in use when it runs."""
     rig = Rig()

@@ -31,7 +31,7 @@ def run_fb(ctl, fb, **inputs):
     return fb
 
 
-def test_interpolate_cam_status_and_done_s9_2_1():
+def test_s7_1500_interpolate_cam_status_and_done_s9_2_1():
     ctl, cam = cam_rig(interpolation_mode=1)
     assert not cam.StatusWord.Interpolated and cam.StatusCam.EndLeadingValue == 0.0
     fb = MC_InterpolateCam()
@@ -47,7 +47,7 @@ def test_interpolate_cam_status_and_done_s9_2_1():
     assert not cam.StatusWord.CamDataChanged and float(cam.curve.value(90.0)) == pytest.approx(50.0)
 
 
-def test_cam_tags_points_segments_validity_sA_2():
+def test_s7_1500_cam_tags_points_segments_validity_sA_2():
     ctl, cam = cam_rig([])
     cam.Point[1].x, cam.Point[1].y = 0.0, 0.0
     cam.Point[2].x, cam.Point[2].y = 100.0, 10.0
@@ -64,13 +64,13 @@ def test_cam_tags_points_segments_validity_sA_2():
         cam.Point[1].x = "ten"
 
 
-def test_interpolate_cam_definition_error_s9_2_1():
+def test_s7_1500_interpolate_cam_definition_error_s9_2_1():
     ctl, cam = cam_rig([(0, 0)])
     fb = run_fb(ctl, MC_InterpolateCam(), Cam=cam)
     assert fb.Error and fb.ErrorID == E.CAM_DEFINITION and not cam.StatusWord.Interpolated
 
 
-def test_get_cam_following_value_and_derivatives_s9_2_3():
+def test_s7_1500_get_cam_following_value_and_derivatives_s9_2_3():
     ctl, cam = cam_rig(interpolation_mode=0)
     get = MC_GetCamFollowingValue()
     assert run_fb(ctl, get, Cam=cam, LeadingValue=45.0).ErrorID == E.CAM_NOT_INTERPOLATED
@@ -81,7 +81,7 @@ def test_get_cam_following_value_and_derivatives_s9_2_3():
     assert run_fb(ctl, get, Cam=cam, LeadingValue=400.0).ErrorID == E.CAM_OUT_OF_RANGE
 
 
-def test_get_cam_leading_value_with_approach_value_s9_2_2():
+def test_s7_1500_get_cam_leading_value_with_approach_value_s9_2_2():
     ctl, cam = cam_rig(interpolation_mode=0)
     run_fb(ctl, MC_InterpolateCam(), Cam=cam)
     get = MC_GetCamLeadingValue()
@@ -106,7 +106,7 @@ def _camming(app_mode, spr, cam_points=HUMP, velocity=180.0, **inputs):
     return rig, cam, ci, exe
 
 
-def test_cam_once_ends_with_end_of_profile_s5_3():
+def test_s7_1500_cam_once_ends_with_end_of_profile_s5_3():
     rig, cam, ci, exe = _camming(0, 1, MasterOffset=100.0, MasterStartDistance=50.0)
     rig.run_until(lambda: ci.InSync, timeout=5.0)
     assert cam.StatusWord.Control                               # cam in use
@@ -128,7 +128,7 @@ def test_cam_once_ends_with_end_of_profile_s5_3():
     assert not ci.EndOfProfile
 
 
-def test_cam_cyclic_end_of_profile_for_one_call_per_cycle_s5_3():
+def test_s7_1500_cam_cyclic_end_of_profile_for_one_call_per_cycle_s5_3():
     rig, cam, ci, exe = _camming(1, 1, MasterOffset=100.0, MasterStartDistance=50.0, velocity=360.0)
     rig.run_until(lambda: ci.InSync, timeout=5.0)
     rig.log.clear()
@@ -137,7 +137,7 @@ def test_cam_cyclic_end_of_profile_for_one_call_per_cycle_s5_3():
     assert len(pulses) == 3 and all(r["InSync"] and r["Busy"] for r in rig.log)
 
 
-def test_cam_cyclic_appending_accumulates_the_following_value_s5_3():
+def test_s7_1500_cam_cyclic_appending_accumulates_the_following_value_s5_3():
     ramp = [(0, 0), (180, 50), (360, 100)]
     rig, cam, ci, exe = _camming(2, 1, ramp, MasterOffset=100.0, MasterStartDistance=50.0, velocity=360.0)
     rig.run_until(lambda: ci.InSync, timeout=5.0)
@@ -146,7 +146,7 @@ def test_cam_cyclic_appending_accumulates_the_following_value_s5_3():
     assert rig.slave.Position == pytest.approx(100.0 * (x - 100.0) / 360.0, abs=1e-6)
 
 
-def test_cam_direct_synchronous_setting_s5_4_4():
+def test_s7_1500_cam_direct_synchronous_setting_s5_4_4():
     rig, cam, ci, exe = _camming(1, 2, MasterSyncPosition=90.0, velocity=0.0)
     rig.run_until(lambda: ci.InSync, timeout=2.0)
     sm = rig.slave.StatusSynchronizedMotion
@@ -156,7 +156,7 @@ def test_cam_direct_synchronous_setting_s5_4_4():
     assert sm.FunctionState == 3 and sm.ActualCam == cam.db_number
 
 
-def test_cam_subsequent_from_current_position_s5_4_3():
+def test_s7_1500_cam_subsequent_from_current_position_s5_4_3():
     rig, cam, ci, exe = _camming(1, 4, MasterStartDistance=120.0, MasterOffset=0.0)
     rig.run_until(lambda: ci.StartSync, timeout=2.0)
     start = rig.master.Position
@@ -165,7 +165,7 @@ def test_cam_subsequent_from_current_position_s5_4_3():
     assert rig.master.Position - start == pytest.approx(120.0, abs=180.0 * 2 * rig.ctl.app_cycle + 1e-6)
 
 
-def test_cam_in_rejections_s9_1_5():
+def test_s7_1500_cam_in_rejections_s9_1_5():
     rig = Rig()
     cam = rig.ctl.add_cam("Cam", HUMP)
     ci = MC_CamIn()
@@ -182,7 +182,7 @@ def test_cam_in_rejections_s9_1_5():
     assert ci.ErrorID == E.SYNC_POSITION
 
 
-def test_cam_restart_reloads_the_start_values_sA_2():
+def test_s7_1500_cam_restart_reloads_the_start_values_sA_2():
     ctl, cam = cam_rig()
     run_fb(ctl, MC_InterpolateCam(), Cam=cam)
     cam.Point[3].y = 0.0
@@ -192,7 +192,7 @@ def test_cam_restart_reloads_the_start_values_sA_2():
     assert math.isclose(cam.Point[2].x, 90.0)
 
 
-def test_cyclic_cam_over_whole_revolutions_of_a_modulo_axis_has_no_step_s5_3():
+def test_s7_1500_cyclic_cam_over_whole_revolutions_of_a_modulo_axis_has_no_step_s5_3():
     """§5.3 cyclic camming of a rotary knife / cross cutter: a cam from 0 to 360 degrees on a modulo axis
     (360) repeats without a setpoint step at the cam end — the end and start positions are the same
     position of the axis — so a PROFIdrive following axis runs on without a following error alarm."""
@@ -224,7 +224,7 @@ def test_cyclic_cam_over_whole_revolutions_of_a_modulo_axis_has_no_step_s5_3():
     assert ci.InSync and ci.Busy
 
 
-def test_add_cam_rejects_an_unknown_interpolation_mode_sA_2_6():
+def test_s7_1500_add_cam_rejects_an_unknown_interpolation_mode_sA_2_6():
     """§A.2.6: InterpolationSettings.InterpolationMode 0..2, BoundaryConditions 0..1 (named in the error)."""
     ctl = Controller(family="S7-1500T")
     with pytest.raises(ConfigurationError, match="InterpolationSettings.InterpolationMode = 3"):

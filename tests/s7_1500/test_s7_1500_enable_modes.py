@@ -43,7 +43,7 @@ class Bench:
                           self.fol.Position if self.fol is not None else 0.0))
 
 
-def test_A_1_37_simulated_axis_start_mode_0_runs_without_position_control():
+def test_s7_1500_A_1_37_simulated_axis_start_mode_0_runs_without_position_control():
     """§A.1.37 X28 NonPositionControlled: MC_Power(StartMode=0) on a simulated axis (Simulation.Mode 1) enables
     it without position control, as on the real drive it simulates; StartMode 1 enables it position-controlled."""
     b = Bench(SIMULATED, start_mode=0)
@@ -53,7 +53,7 @@ def test_A_1_37_simulated_axis_start_mode_0_runs_without_position_control():
     assert b2.lead.StatusWord.X0 and not b2.lead.StatusWord.X28
 
 
-def test_A_1_37_simulated_axis_velocity_without_position_control_keeps_x28_positioning_clears_it():
+def test_s7_1500_A_1_37_simulated_axis_velocity_without_position_control_keeps_x28_positioning_clears_it():
     """MC_MoveVelocity(PositionControlled=FALSE) keeps the simulated axis non-position-controlled (X28 TRUE);
     a positioning job switches it to position control (X28 FALSE), as on an axis with a drive."""
     b = Bench(SIMULATED, start_mode=0)
@@ -67,7 +67,7 @@ def test_A_1_37_simulated_axis_velocity_without_position_control_keeps_x28_posit
     assert not b.lead.StatusWord.X28
 
 
-def test_3_3_5_setpoint_coupling_waits_for_a_simulated_leader_enabled_with_start_mode_0():
+def test_s7_1500_3_3_5_setpoint_coupling_waits_for_a_simulated_leader_enabled_with_start_mode_0():
     """§3.3.5: with setpoint coupling MC_GearIn waits while the leading axis is not position-controlled - also
     when the leading axis is simulated and was enabled with StartMode 0; it starts once the leader is
     position-controlled (here by a positioning job)."""
@@ -82,7 +82,7 @@ def test_3_3_5_setpoint_coupling_waits_for_a_simulated_leader_enabled_with_start
 
 
 @pytest.mark.parametrize("leader", [VIRTUAL, SIMULATED], ids=["virtual", "simulated"])
-def test_7_1_2_reenabled_unhomed_leader_keeps_its_position_and_the_follower_sees_no_step(leader):
+def test_s7_1500_7_1_2_reenabled_unhomed_leader_keeps_its_position_and_the_follower_sees_no_step(leader):
     """Decision (issue 8): re-enabling an unhomed S7-1500 axis does not reset its position.  §9.1.1 says a
     geared follower follows its leading axis through the braking ramp and after the leader is enabled again;
     a position reset would be a leading value step the follower takes at once.  The follower's setpoint must
@@ -109,7 +109,7 @@ def test_7_1_2_reenabled_unhomed_leader_keeps_its_position_and_the_follower_sees
     assert np.abs(np.diff(f)).max() <= 500.0 * 0.004 + 1e-9
 
 
-def test_7_1_2_homed_axis_and_first_enable_unchanged():
+def test_s7_1500_7_1_2_homed_axis_and_first_enable_unchanged():
     """The first enable still starts an unhomed axis at 0; a homed axis keeps its position (both as before)."""
     b = Bench(VIRTUAL)
     assert b.lead.Position == 0.0 and b.lead.ActualPosition == 0.0

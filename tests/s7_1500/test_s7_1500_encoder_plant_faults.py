@@ -62,7 +62,7 @@ BAD = [math.nan, math.inf, -math.inf, 1e300, -2e12, "12.5", None, 10 ** 400, Tru
 
 
 @pytest.mark.parametrize("bad", BAD, ids=["nan", "inf", "-inf", "1e300", "-2e12", "str", "None", "10e400", "bool"])
-def test_bad_measured_value_is_an_encoder_fault_not_a_stop_s7_1_1(bad):
+def test_s7_1500_bad_measured_value_is_an_encoder_fault_not_a_stop_s7_1_1(bad):
     """§7.1.1 / §A.1.31: a measured value that is no number in range is an error of the encoder system:
     alarm 203, reaction 4 (remove enable), StatusWord.X1, ErrorWord.X5 (SensorFault), StatusSensor[1].State
     0 and StatusSensor[1].Error; the controller stays in RUN and no value becomes non-finite.  Before the
@@ -79,7 +79,7 @@ def test_bad_measured_value_is_an_encoder_fault_not_a_stop_s7_1_1(bad):
     assert all(math.isfinite(v) and abs(v) < 1e6 for r in rows for v in r.values()), rows
 
 
-def test_followers_of_a_failed_encoder_stop_from_where_they_are_s3_3_2():
+def test_s7_1500_followers_of_a_failed_encoder_stop_from_where_they_are_s3_3_2():
     """The leading value of actual value coupling needs valid actual values (§3.3.2): when the encoder
     fails, the gearing ends with 16#8001 and the follower brakes from where it is - no step, no reversal,
     no velocity beyond the conveyor's."""
@@ -93,7 +93,7 @@ def test_followers_of_a_failed_encoder_stop_from_where_they_are_s3_3_2():
     assert rows[-1]["sv"] == pytest.approx(0.0, abs=1e-9)
 
 
-def test_injected_encoder_fault_also_stops_the_followers_s3_3_2():
+def test_s7_1500_injected_encoder_fault_also_stops_the_followers_s3_3_2():
     """Same mechanism for ExternalEncoder.inject_fault (it left the gearing InGear on a frozen value)."""
     b = Bench()
     b.enc.inject_fault()
@@ -103,7 +103,7 @@ def test_injected_encoder_fault_also_stops_the_followers_s3_3_2():
     assert all(-1e-9 <= q["s"] - p["s"] <= V * 0.001 * 1.01 for p, q in zip(rows, rows[1:]))
 
 
-def test_gearing_to_an_encoder_that_already_failed_is_refused_s3_3_2():
+def test_s7_1500_gearing_to_an_encoder_that_already_failed_is_refused_s3_3_2():
     """Issue 8 review: a MC_GearIn started after the encoder failed coupled to the held value and showed
     InGear.  With the actual value invalid there is no leading value (§3.3.2): the job ends with 16#8001
     and the follower shows the alarm of an invalid leading value, as for a fault during the coupling."""
@@ -133,7 +133,7 @@ def test_gearing_to_an_encoder_that_already_failed_is_refused_s3_3_2():
     assert s.Velocity == 0.0
 
 
-def test_encoder_recovers_after_reset_once_the_value_is_valid_again_s7_1_1():
+def test_s7_1500_encoder_recovers_after_reset_once_the_value_is_valid_again_s7_1_1():
     """The fault stays while the measured value is bad (MC_Reset cannot clear it), and is acknowledged
     by MC_Reset once the machine delivers numbers again; MC_Power enables the encoder again."""
     b = Bench()
@@ -152,7 +152,7 @@ def test_encoder_recovers_after_reset_once_the_value_is_valid_again_s7_1_1():
     assert b.enc.ActualPosition == pytest.approx(7.0, abs=1e-3)
 
 
-def test_plant_function_that_raises_stops_the_controller_like_a_program():
+def test_s7_1500_plant_function_that_raises_stops_the_controller_like_a_program():
     """A plant function is user code: when it raises, the controller goes to STOP with the reason naming
     the encoder and the exception (as for a program or servo hook), with a ProgramErrorWarning; the
     function is dropped and the machine stands where it was."""
@@ -174,7 +174,7 @@ def test_plant_function_that_raises_stops_the_controller_like_a_program():
     assert b.enc.plant_position == x
 
 
-def test_plant_velocity_is_checked():
+def test_s7_1500_plant_velocity_is_checked():
     """set_plant_velocity takes a finite number within +-1e12 (the range of Plant.Velocity); anything else
     is a clear TypeError/ValueError at the call, not a NaN machine."""
     b = Bench()
@@ -190,7 +190,7 @@ def test_plant_velocity_is_checked():
     assert b.enc.ActualVelocity == pytest.approx(50.0, rel=0.02)
 
 
-def test_plant_running_out_of_range_at_constant_velocity_is_an_encoder_fault():
+def test_s7_1500_plant_running_out_of_range_at_constant_velocity_is_an_encoder_fault():
     """A machine at 1e12 units/s leaves the LREAL position range after about a second: that is the
     encoder's fault too, not an overflowing actual value."""
     b = Bench()
@@ -203,7 +203,7 @@ def test_plant_running_out_of_range_at_constant_velocity_is_an_encoder_fault():
 @settings(max_examples=40, deadline=None, suppress_health_check=list(HealthCheck))
 @given(st.lists(st.one_of(st.floats(), st.floats(-1e3, 1e3), st.integers(-10 ** 400, 10 ** 400),
                           st.sampled_from([None, "x", b"1", True, 1j])), min_size=1, max_size=30))
-def test_no_measured_value_stops_the_controller_or_leaks_a_non_finite_value(values):
+def test_s7_1500_no_measured_value_stops_the_controller_or_leaks_a_non_finite_value(values):
     """Invariant (hypothesis): whatever the plant function returns, the controller stays in RUN and the
     encoder's and follower's values stay finite."""
     b = Bench()

@@ -22,7 +22,7 @@ def _moving_masters(rig, *velocities):
     return mvs
 
 
-def test_gear_in_synchronizing_and_switching_the_leading_value_s9_1_1_2():
+def test_s7_1500_gear_in_synchronizing_and_switching_the_leading_value_s9_1_1_2():
     rig = Rig(masters=2)
     m1, m2, slave = rig.masters[0], rig.masters[1], rig.slave
     _moving_masters(rig, 100.0, -50.0)
@@ -74,7 +74,7 @@ def _gear_in_pos_rig(spr, **inputs):
     return rig, fb
 
 
-def test_gear_in_pos_in_advance_with_dynamic_parameters_s9_1_2_2_chart1_a():
+def test_s7_1500_gear_in_pos_in_advance_with_dynamic_parameters_s9_1_2_2_chart1_a():
     rig, fb = _gear_in_pos_rig(0, MasterSyncPosition=400.0, SlaveSyncPosition=1000.0, RatioNumerator=1,
                                Velocity=400.0, Acceleration=1000.0, Deceleration=1000.0, Jerk=0.0)
     assert fb.Busy and not fb.StartSync and rig.slave.StatusSynchronizedMotion.WaitingFunctionState == 2
@@ -90,7 +90,7 @@ def test_gear_in_pos_in_advance_with_dynamic_parameters_s9_1_2_2_chart1_a():
     assert sync["X22"] and not sync["X21"]
 
 
-def test_gear_in_pos_in_advance_with_leading_value_distance_s9_1_2_2_chart1_b():
+def test_s7_1500_gear_in_pos_in_advance_with_leading_value_distance_s9_1_2_2_chart1_b():
     rig, fb = _gear_in_pos_rig(1, MasterSyncPosition=300.0, SlaveSyncPosition=50.0, RatioNumerator=1,
                                RatioDenominator=2, MasterStartDistance=100.0)
     rig.run_until(lambda: fb.InSync, timeout=10.0)
@@ -104,7 +104,7 @@ def test_gear_in_pos_in_advance_with_leading_value_distance_s9_1_2_2_chart1_b():
     assert rig.slave.Position == pytest.approx(50.0 + 0.5 * (rig.master.Position - 300.0), abs=1e-9)
 
 
-def test_gear_in_pos_subsequent_synchronization_s9_1_2_2_chart2_b():
+def test_s7_1500_gear_in_pos_subsequent_synchronization_s9_1_2_2_chart2_b():
     rig, fb = _gear_in_pos_rig(3, MasterSyncPosition=300.0, SlaveSyncPosition=20.0, RatioNumerator=1,
                                MasterStartDistance=150.0)
     rig.run_until(lambda: fb.InSync, timeout=10.0)
@@ -128,7 +128,7 @@ def _geared(rig, ratio=1):
     return gear
 
 
-def test_phasing_relative_adds_up_s9_1_3_2():
+def test_s7_1500_phasing_relative_adds_up_s9_1_3_2():
     rig = Rig()
     gear = _geared(rig)
     ph = MC_PhasingRelative()
@@ -156,7 +156,7 @@ def test_phasing_relative_adds_up_s9_1_3_2():
     assert gear.InSync and not rig.slave.StatusWord.X24
 
 
-def test_phasing_absolute_to_the_same_shift_moves_nothing_s9_1_4_2():
+def test_s7_1500_phasing_absolute_to_the_same_shift_moves_nothing_s9_1_4_2():
     rig = Rig()
     _geared(rig)
     ph = MC_PhasingAbsolute()
@@ -173,7 +173,7 @@ def test_phasing_absolute_to_the_same_shift_moves_nothing_s9_1_4_2():
     assert rig.slave.StatusSynchronizedMotion.PhaseShift == pytest.approx(50.0)
 
 
-def test_phasing_needs_synchronous_gearing_s9_1_3():
+def test_s7_1500_phasing_needs_synchronous_gearing_s9_1_3():
     rig = Rig()
     ph = MC_PhasingRelative()
     rig.steps.append(lambda: ph(Master=rig.master, Slave=rig.slave, Execute=rig.enabled(), PhaseShift=5.0))
@@ -191,7 +191,7 @@ def _cams(rig):
     return c1, c2
 
 
-def test_cam_in_switching_cams_in_advance_s9_1_5_2_chart1():
+def test_s7_1500_cam_in_switching_cams_in_advance_s9_1_5_2_chart1():
     rig = Rig(master_params=None)
     c1, c2 = _cams(rig)
     _moving_masters(rig, 200.0)
@@ -222,7 +222,7 @@ def test_cam_in_switching_cams_in_advance_s9_1_5_2_chart1():
     assert rig.slave.Position == pytest.approx(c2.curve.value((m - 1500.0) % 360.0), abs=1e-6)
 
 
-def test_cam_in_in_advance_then_subsequent_s9_1_5_2_chart2():
+def test_s7_1500_cam_in_in_advance_then_subsequent_s9_1_5_2_chart2():
     rig = Rig()
     c1, c2 = _cams(rig)
     _moving_masters(rig, 200.0)
@@ -246,7 +246,7 @@ def test_cam_in_in_advance_then_subsequent_s9_1_5_2_chart2():
     assert rig.slave.Position == pytest.approx(c2.curve.value((m - 1000.0) % 360.0), abs=1e-6)
 
 
-def test_simulation_of_synchronous_operation_procedure_s9_1_6_1():
+def test_s7_1500_simulation_of_synchronous_operation_procedure_s9_1_6_1():
     rig = Rig()
     mv = _moving_masters(rig, 100.0)[0]
     gear = MC_GearIn()
@@ -277,7 +277,7 @@ def test_simulation_of_synchronous_operation_procedure_s9_1_6_1():
     del mv
 
 
-def test_simulation_needs_status_synchronous_s9_1_6():
+def test_s7_1500_simulation_needs_status_synchronous_s9_1_6():
     rig = Rig()
     sim = MC_SynchronizedMotionSimulation()
     rig.steps.append(lambda: sim(Slave=rig.slave, Enable=rig.enabled()))
@@ -285,7 +285,7 @@ def test_simulation_needs_status_synchronous_s9_1_6():
     assert sim.Error and sim.ErrorID != 0 and not sim.InSimulation
 
 
-def test_additive_leading_value_section_a_s9_1_7_2():
+def test_s7_1500_additive_leading_value_section_a_s9_1_7_2():
     rig = Rig()
     _moving_masters(rig, 100.0)
     add = MC_LeadingValueAdditive()
@@ -307,7 +307,7 @@ def test_additive_leading_value_section_a_s9_1_7_2():
     assert rig.slave.Position == pytest.approx(rig.master.Position - 500.0, abs=1e-6)
 
 
-def test_additive_leading_value_keeps_the_slave_still_section_b_s9_1_7_2():
+def test_s7_1500_additive_leading_value_keeps_the_slave_still_section_b_s9_1_7_2():
     rig = Rig()
     _moving_masters(rig, 100.0)
     add = MC_LeadingValueAdditive()
@@ -337,7 +337,7 @@ def test_additive_leading_value_keeps_the_slave_still_section_b_s9_1_7_2():
     assert rig.slave.Position > s0 + 40.0                      # follows the master again
 
 
-def test_disabling_the_slave_aborts_synchronous_operation_s9_1():
+def test_s7_1500_disabling_the_slave_aborts_synchronous_operation_s9_1():
     rig = Rig()
     _moving_masters(rig, 100.0)
     gear = MC_GearIn()
@@ -349,7 +349,7 @@ def test_disabling_the_slave_aborts_synchronous_operation_s9_1():
     assert rig.slave.StatusSynchronizedMotion.FunctionState == 0
 
 
-def test_disabling_the_master_keeps_synchronous_operation_s9_1():
+def test_s7_1500_disabling_the_master_keeps_synchronous_operation_s9_1():
     rig = Rig()
     _moving_masters(rig, 100.0)
     gear = MC_GearIn()

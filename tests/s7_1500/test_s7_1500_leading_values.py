@@ -12,7 +12,7 @@ from plcmotion.s7_1500 import (MC_GearIn, MC_GearInPos, MC_MoveVelocity, MC_Powe
 from _s7_1500_rig import VIRTUAL, Rig
 
 
-def test_chain_master_slave_slave_in_one_servo_cycle_s3_3():
+def test_s7_1500_chain_master_slave_slave_in_one_servo_cycle_s3_3():
     """A following axis that leads another one is interpolated first: the second follower sees the
     first one's setpoint of the same servo cycle (no cycle of delay along the chain)."""
     ctl = Controller(family="S7-1500T")
@@ -39,7 +39,7 @@ def test_chain_master_slave_slave_in_one_servo_cycle_s3_3():
         assert ctl.bank.sp_p[s2.index] == pytest.approx(10.0 - (ctl.bank.sp_p[s1.index] - 40.0), abs=1e-9)
 
 
-def test_a_cycle_of_couplings_is_rejected_s8_1_3():
+def test_s7_1500_a_cycle_of_couplings_is_rejected_s8_1_3():
     ctl = Controller(family="S7-1500T")
     a = ctl.add_synchronous_axis("A", VIRTUAL, leading_values=["B"])
     b = ctl.add_synchronous_axis("B", VIRTUAL, leading_values=["A"])
@@ -55,7 +55,7 @@ def test_a_cycle_of_couplings_is_rejected_s8_1_3():
     assert gb.Error and gb.ErrorID == 0x8306 and ga.InGear
 
 
-def test_master_not_configured_sets_synchronous_error_s3_3():
+def test_s7_1500_master_not_configured_sets_synchronous_error_s3_3():
     rig = Rig(masters=2)
     other = rig.ctl.add_positioning_axis("Other", VIRTUAL)
     gear = MC_GearIn()
@@ -72,7 +72,7 @@ def test_master_not_configured_sets_synchronous_error_s3_3():
     assert not rig.slave.ErrorWord.X14
 
 
-def test_setpoint_coupling_waits_for_a_position_controlled_leading_axis_s3_3_5():
+def test_s7_1500_setpoint_coupling_waits_for_a_position_controlled_leading_axis_s3_3_5():
     rig = Rig()
     rig.enable["Master1"] = False
     gear = MC_GearIn()
@@ -83,7 +83,7 @@ def test_setpoint_coupling_waits_for_a_position_controlled_leading_axis_s3_3_5()
     rig.run_until(lambda: gear.InGear, timeout=2.0)
 
 
-def test_actual_value_coupling_to_an_external_encoder_compensates_the_delay_s3_3_4():
+def test_s7_1500_actual_value_coupling_to_an_external_encoder_compensates_the_delay_s3_3_4():
     """An external encoder measures a conveyor; the following axis couples to its extrapolated actual
     value and runs with it, the extrapolation making up for the filter and acquisition delays."""
     ctl = Controller(family="S7-1500T")
@@ -113,7 +113,7 @@ def test_actual_value_coupling_to_an_external_encoder_compensates_the_delay_s3_3
     assert s.Velocity == pytest.approx(200.0, rel=0.01)
 
 
-def test_actual_value_coupling_needs_the_t_cpu_s2_2():
+def test_s7_1500_actual_value_coupling_needs_the_t_cpu_s2_2():
     ctl = Controller(family="S7-1500")
     m = ctl.add_positioning_axis("M", {"Actor": {"Type": 1}})
     s = ctl.add_synchronous_axis("S", VIRTUAL, leading_values=[("M", "actual")])
@@ -128,7 +128,7 @@ def test_actual_value_coupling_needs_the_t_cpu_s2_2():
     assert gear.ErrorID == 0x8302
 
 
-def test_gear_in_pos_needs_the_t_cpu_s2_2():
+def test_s7_1500_gear_in_pos_needs_the_t_cpu_s2_2():
     rig = Rig(family="S7-1500")
     gip = MC_GearInPos()
     rig.steps.append(lambda: gip(Master=rig.master, Slave=rig.slave, Execute=rig.enabled()))
@@ -167,7 +167,7 @@ def _cross_plc(link_a, link_b, delay=0.008):
     return a, b, m, sa, sb, proxy, ga, gb
 
 
-def test_cross_plc_followers_on_both_controllers_move_in_step_s8_1_3():
+def test_s7_1500_cross_plc_followers_on_both_controllers_move_in_step_s8_1_3():
     link = LocalLink()
     a, b, m, sa, sb, proxy, ga, gb = _cross_plc(link, link)
     for _ in range(600):
@@ -191,7 +191,7 @@ class LossyLink(LocalLink):
             super().send(sample)
 
 
-def test_gearing_to_a_proxy_with_alarm_900_pending_is_refused_s8_2_3():
+def test_s7_1500_gearing_to_a_proxy_with_alarm_900_pending_is_refused_s8_2_3():
     """Issue 8 review: a new coupling to a proxy whose leading value is invalid (alarm 900 pending) would
     follow the held value.  It ends with 16#8001 and the follower gets the alarm of an invalid leading
     value; the proxy must be acknowledged first."""
@@ -226,7 +226,7 @@ def test_gearing_to_a_proxy_with_alarm_900_pending_is_refused_s8_2_3():
     assert sb.StatusWord.Error and sb.ErrorDetail.Number == 900
 
 
-def test_proxy_extrapolates_late_values_and_raises_alarm_900_when_they_stop_s8_2_3():
+def test_s7_1500_proxy_extrapolates_late_values_and_raises_alarm_900_when_they_stop_s8_2_3():
     link = LossyLink()
     a, b, m, sa, sb, proxy, ga, gb = _cross_plc(link, link, delay=0.0)
     for _ in range(500):
@@ -256,7 +256,7 @@ def test_proxy_extrapolates_late_values_and_raises_alarm_900_when_they_stop_s8_2
 
 
 @pytest.mark.timeout_guard
-def test_cross_plc_over_opc_ua_pubsub_on_loopback_s8_1_2():
+def test_s7_1500_cross_plc_over_opc_ua_pubsub_on_loopback_s8_1_2():
     """The leading value travels as OPC UA PubSub UADP messages over UDP (unicast on loopback); the
     sending controller runs in its own thread, the receiver waits for its telegrams (lockstep)."""
     pytest.importorskip("asyncua")
@@ -314,7 +314,7 @@ def _encoder_rig(extrapolation=None, plant=None, extra=None, followers=(("S", "a
     return ctl, enc, fol, gears
 
 
-def test_external_encoder_leading_value_can_be_delayed_s3_3_3():
+def test_s7_1500_external_encoder_leading_value_can_be_delayed_s3_3_3():
     """§3.3.3 / §6.1.3: the leading value of an external encoder can be delayed ("Delayed"): the delayed
     follower gets the extrapolated actual value of LocalLeadingValueDelayTime ago."""
     D = 0.008
@@ -333,7 +333,7 @@ def test_external_encoder_leading_value_can_be_delayed_s3_3_3():
             assert enc.StatusProvidedLeadingValue.DelayedLeadingValue.Position == pytest.approx(want, abs=1e-9)
 
 
-def test_external_encoder_provides_a_cross_plc_leading_value_s8_1_3():
+def test_s7_1500_external_encoder_provides_a_cross_plc_leading_value_s8_1_3():
     """§8.1.3: an external encoder can be the leading object on CPU 1; its delayed local follower and the
     follower of the leading axis proxy on CPU 2 move in step (§8.1.4 tags on the encoder)."""
     link = LocalLink()
@@ -367,7 +367,7 @@ def test_external_encoder_provides_a_cross_plc_leading_value_s8_1_3():
     assert proxy.Position - x0 == pytest.approx(5.0, rel=1e-3)
 
 
-def test_constant_acceleration_is_extrapolated_exactly_s3_3_4():
+def test_s7_1500_constant_acceleration_is_extrapolated_exactly_s3_3_4():
     """§3.3.4: delays at constant velocity and at constant acceleration are compensated.  The leading value
     is the actual position of (effective extrapolation time - position filter time) later, whatever the
     filter settings; at constant velocity it stays FilteredPosition + FilteredVelocity * T."""
@@ -399,7 +399,7 @@ def test_constant_acceleration_is_extrapolated_exactly_s3_3_4():
                                                     abs=1e-6)
 
 
-def test_effective_leading_value_acceleration_with_actual_value_coupling_s3_5_1():
+def test_s7_1500_effective_leading_value_acceleration_with_actual_value_coupling_s3_5_1():
     """§A.1.33 EffectiveLeadingValue.Acceleration: the extrapolated acceleration of the actual value."""
     a = 2000.0
     ctl, enc, (s,), gears = _encoder_rig({"VelocityFilter": {"T1": 0.005}})
@@ -412,7 +412,7 @@ def test_effective_leading_value_acceleration_with_actual_value_coupling_s3_5_1(
     assert s.StatusSynchronizedMotion.EffectiveLeadingValue.Acceleration == pytest.approx(0.0, abs=0.1)
 
 
-def test_hysteresis_acts_on_reversals_only_s3_3_4():
+def test_s7_1500_hysteresis_acts_on_reversals_only_s3_3_4():
     """§3.3.4 hysteresis: no offset in one-way motion; a reversal takes effect once the position has gone
     back by the hysteresis value, then the leading value catches up with the input (twice its speed) and
     follows it again without offset (docs/s7_1500/decisions.md row 28)."""
@@ -439,7 +439,7 @@ def test_hysteresis_acts_on_reversals_only_s3_3_4():
     assert gears[0].InGear and y == x < turn - 2 * H
 
 
-def test_actual_value_coupling_to_a_virtual_axis_s3_3_2():
+def test_s7_1500_actual_value_coupling_to_a_virtual_axis_s3_3_2():
     """§3.3.2 allows actual value coupling to positioning and synchronous axes; a virtual axis's actual
     value is its setpoint (T_i = 0, decision 29), so the leading value equals the setpoint."""
     ctl = Controller(family="S7-1500T")
@@ -461,7 +461,7 @@ def test_actual_value_coupling_to_a_virtual_axis_s3_3_2():
     assert lv.Acceleration == pytest.approx(200.0, rel=1e-9)
 
 
-def test_proxy_takes_the_delay_from_the_sender_s8_1_3():
+def test_s7_1500_proxy_takes_the_delay_from_the_sender_s8_1_3():
     """§8.1.3 / §8.2.3.2: the delay is set at the leading axis only; the proxy provides the value the
     sender's delayed followers use at the same time (its own LocalLeadingValueDelayTime is for a cascade
     and stays 0 here).  A changed delay (DIR) reaches the proxy with the next telegram."""
@@ -502,7 +502,7 @@ def test_proxy_takes_the_delay_from_the_sender_s8_1_3():
     assert proxy.Parameter.LocalLeadingValueDelayTime == 0.0        # configuration tags read as attributes
 
 
-def test_the_leading_value_of_a_proxy_cannot_be_delayed_s3_3_3():
+def test_s7_1500_the_leading_value_of_a_proxy_cannot_be_delayed_s3_3_3():
     """§3.3.3 names positioning axis, synchronous axis and external encoder; not the proxy."""
     ctl = Controller(family="S7-1500T")
     proxy = ctl.add_leading_axis_proxy("P", {}, source_link=LocalLink())
@@ -517,7 +517,7 @@ def test_the_leading_value_of_a_proxy_cannot_be_delayed_s3_3_3():
     assert g.Error and g.ErrorID == 0x8309
 
 
-def test_cascade_keeps_all_followers_in_step_with_interpolation_s8_1_3():
+def test_s7_1500_cascade_keeps_all_followers_in_step_with_interpolation_s8_1_3():
     """§8.1.3 cascade: CPU 1 leading axis (delay for its local followers), CPU 2 proxy with a follower and a
     virtual axis that provides the value on to CPU 3 with its own delay, entered also at the proxy
     (Parameter.LocalLeadingValueDelayTime, §8.2.3.2).  All followers get the same leading value at the same

@@ -185,7 +185,7 @@ def manual_aborts(new: str, running: str) -> bool | None:
 
 @pytest.mark.parametrize("new", NEW)
 @pytest.mark.parametrize("running", RUNNING)
-def test_override_response_s9_3(running, new):
+def test_s7_1500_override_response_s9_3(running, new):
     if (new, running) in SKIP:
         pytest.skip("phasing needs a synchronous gearing")
     sc = Scenario()
@@ -201,7 +201,7 @@ def test_override_response_s9_3(running, new):
                                     f"16#{getattr(fb, 'ErrorID', 0):04X}")
 
 
-def test_the_code_tables_match_the_manual_s9_3():
+def test_s7_1500_the_code_tables_match_the_manual_s9_3():
     """s7_1500.technology.override holds the same cells as the manual's tables (both written out independently)."""
     cells = [(new, running) for new in NEW for running in RUNNING if manual_aborts(new, running) is not None]
     # only a phase shift against a running homing or motion job has no cell (it needs a gearing)
@@ -210,7 +210,7 @@ def test_the_code_tables_match_the_manual_s9_3():
         assert O.aborts(new, running) == manual_aborts(new, running), (new, running)
 
 
-def test_the_table_cells_s9_3_1_and_s9_3_2():
+def test_s7_1500_the_table_cells_s9_3_1_and_s9_3_2():
     """Spot checks of the tables as printed in the manual."""
     assert O.aborts(O.HOME_ACTIVE, O.HOME_PASSIVE) and not O.aborts(O.HOME_ACTIVE, O.STOP)
     assert O.aborts(O.HOME_CANCEL, O.HOME_PASSIVE) and not O.aborts(O.HOME_CANCEL, O.MOTION)
@@ -225,7 +225,7 @@ def test_the_table_cells_s9_3_1_and_s9_3_2():
     assert O.aborts(O.LV_ADDITIVE, O.LV_ADDITIVE) and not O.aborts(O.LV_ADDITIVE, O.SYNC_ACTIVE)
 
 
-def test_waiting_job_aborts_nothing_until_it_starts_synchronizing_s9_3_2_note1():
+def test_s7_1500_waiting_job_aborts_nothing_until_it_starts_synchronizing_s9_3_2_note1():
     sc = Scenario()
     run = running_job(sc, O.MOTION)
     m = sc.rig.master
@@ -240,7 +240,7 @@ def test_waiting_job_aborts_nothing_until_it_starts_synchronizing_s9_3_2_note1()
     assert run.CommandAborted
 
 
-def test_mc_stop_locks_the_axis_until_execute_is_reset_s9_3_1():
+def test_s7_1500_mc_stop_locks_the_axis_until_execute_is_reset_s9_3_1():
     sc = Scenario()
     stop = running_job(sc, O.STOP)
     sc.rig.run_until(lambda: stop.Done, timeout=5.0)
@@ -257,7 +257,7 @@ def test_mc_stop_locks_the_axis_until_execute_is_reset_s9_3_1():
     sc.rig.run_until(lambda: move.Done, timeout=2.0)
 
 
-def test_a_weaker_mc_stop_does_not_abort_a_stronger_one_s9_3_1_b():
+def test_s7_1500_a_weaker_mc_stop_does_not_abort_a_stronger_one_s9_3_1_b():
     sc = Scenario()
     v = sc.add("pre", MC_MoveVelocity(), Velocity=400.0)
     sc.start("pre", lambda: v.InVelocity)

@@ -68,7 +68,7 @@ BAD_VALUES = [dict(position=math.nan), dict(position=1e300), dict(position=-math
 
 
 @pytest.mark.parametrize("bad", BAD_VALUES, ids=lambda d: "-".join(f"{k}={v}" for k, v in d.items()))
-def test_invalid_telegrams_never_reach_the_follower_and_raise_alarm_900_defect2(bad):
+def test_s7_1500_invalid_telegrams_never_reach_the_follower_and_raise_alarm_900_defect2(bad):
     """Defect 2: NaN / 1e300 from the network made the follower's Position and ActualPosition NaN while
     InGear stayed TRUE, without an alarm.  Now: X4 FALSE at once (no delay), the follower goes on with
     the last valid leading value extrapolated (§8.1.2), alarm 900 after the tolerance time, the gearing
@@ -91,7 +91,7 @@ def test_invalid_telegrams_never_reach_the_follower_and_raise_alarm_900_defect2(
     assert all(-1e-9 <= d <= V * 0.004 + 1e-9 for d in steps), steps
 
 
-def test_follower_stopped_by_alarm_900_does_not_jump_to_its_own_profile_defect2():
+def test_s7_1500_follower_stopped_by_alarm_900_does_not_jump_to_its_own_profile_defect2():
     """The followers were stopped while the sync stage held only their own (offset) profile, so a
     follower at 15.5 jumped to 0.0 when alarm 900 came.  It must stop where it is."""
     r = Remote(tolerance=0.012)
@@ -105,7 +105,7 @@ def test_follower_stopped_by_alarm_900_does_not_jump_to_its_own_profile_defect2(
 
 
 @pytest.mark.parametrize("bad", [dict(valid=False), dict(position=math.nan)], ids=["flagged", "nan"])
-def test_x4_drops_at_the_start_of_the_tolerance_time_not_with_alarm_900_a_3_6(bad):
+def test_s7_1500_x4_drops_at_the_start_of_the_tolerance_time_not_with_alarm_900_a_3_6(bad):
     """§A.3.6 StatusWord.X4 "Leading value does not exist or is not valid"; §8.1.2: alarm 900 after the
     tolerance time, meanwhile the value is extrapolated.  With a sender delay of 8 ms the proxy uses the
     telegram of 8 ms ago: X4 drops when that value reaches the first invalid telegram, which is also
@@ -127,7 +127,7 @@ def test_x4_drops_at_the_start_of_the_tolerance_time_not_with_alarm_900_a_3_6(ba
     assert all(b["s"] > a["s"] for a, b in zip(during, during[1:]))     # the follower keeps moving
 
 
-def test_a_single_garbage_telegram_is_bridged_by_interpolation_s8_1_3():
+def test_s7_1500_a_single_garbage_telegram_is_bridged_by_interpolation_s8_1_3():
     """With a sender delay the proxy interpolates between telegrams (AdjustmentTime < 0); one unusable
     telegram between valid ones is bridged: X4 stays TRUE, no alarm, the follower moves on evenly."""
     r = Remote(tolerance=0.02, delay=0.008)
@@ -141,7 +141,7 @@ def test_a_single_garbage_telegram_is_bridged_by_interpolation_s8_1_3():
     assert all(d == pytest.approx(V * 0.004, abs=1e-9) for d in steps)
 
 
-def test_alarm_900_acknowledged_once_valid_values_return_s8_1_2():
+def test_s7_1500_alarm_900_acknowledged_once_valid_values_return_s8_1_2():
     r = Remote(tolerance=0.012)
     r.synchronous()
     r.step(10, position=math.inf)
@@ -158,7 +158,7 @@ class BrokenTransport:
         raise OSError("socket closed")
 
 
-def test_a_transport_that_raises_is_a_communication_error_not_a_stop_defect2():
+def test_s7_1500_a_transport_that_raises_is_a_communication_error_not_a_stop_defect2():
     ctl = Controller(family="S7-1500T")
     p = ctl.add_leading_axis_proxy("P", {}, source_link=BrokenTransport())
     s = ctl.add_synchronous_axis("S", VIRTUAL, leading_values=["P"])
@@ -181,7 +181,7 @@ _number = st.one_of(st.floats(allow_nan=True, allow_infinity=True), st.floats(-1
                                                                   "delay", "modulo_length", "modulo_start",
                                                                   "valid"]), _number),
                        min_size=1, max_size=40))
-def test_no_telegram_stream_makes_a_setpoint_non_finite_defect2(stream):
+def test_s7_1500_no_telegram_stream_makes_a_setpoint_non_finite_defect2(stream):
     """Invariant (hypothesis): whatever telegrams arrive - good ones, garbage in any field - the proxy's
     Position/Velocity and the follower's setpoints stay finite and the controller stays in RUN."""
     r = Remote(tolerance=0.008)

@@ -81,7 +81,7 @@ def forged(time, **fields):
 @pytest.mark.parametrize("when", [1e9, 1e12, 2.0 + 100.0, -1e9, -1e12],
                          ids=["1e9", "1e12", "now+100", "-1e9", "-1e12"])
 @pytest.mark.parametrize("delay", [0.0, 0.008])
-def test_a_forged_telegram_far_from_now_does_not_freeze_the_proxy_s8_1_2(when, delay):
+def test_s7_1500_a_forged_telegram_far_from_now_does_not_freeze_the_proxy_s8_1_2(when, delay):
     """Defect (leftover of 2): the forged telegram of time 1e9 s became the newest one and the proxy
     ignored the genuine stream after it (alarm 900 after the tolerance time).  Now it is an invalid
     telegram: the genuine telegrams go on being used, the follower stays in gear and in step, no alarm."""
@@ -101,7 +101,7 @@ def test_a_forged_telegram_far_from_now_does_not_freeze_the_proxy_s8_1_2(when, d
     assert all(d == pytest.approx(V * CYCLE, abs=1e-9) for d in steps)
 
 
-def test_a_telegram_outside_the_window_is_invalid_like_a_nan_time_s8_1_2():
+def test_s7_1500_a_telegram_outside_the_window_is_invalid_like_a_nan_time_s8_1_2():
     """Out of the admissible window is the same as no time at all: the proxy's invalid-telegram path
     (StatusWord.X4 drops while the value in use lies beyond the last valid telegram, §A.3.6) - before the
     fix a far-future telegram froze the proxy, a far-past one was taken silently."""
@@ -117,7 +117,7 @@ def test_a_telegram_outside_the_window_is_invalid_like_a_nan_time_s8_1_2():
     assert not outs["nan"][0][0] and all(x4 and not alarm for x4, alarm, _ in outs["nan"][1:])
 
 
-def test_a_forged_delay_with_a_far_time_is_no_way_around_the_window_s8_1_3():
+def test_s7_1500_a_forged_delay_with_a_far_time_is_no_way_around_the_window_s8_1_3():
     """A forged telegram with a huge delay and a time matching it (t - 1e9) at the start, before any
     genuine telegram: it is admitted only as far as its own delay says, and the genuine stream takes
     over at once (the sender's delay is that of the newest telegram)."""
@@ -128,7 +128,7 @@ def test_a_forged_delay_with_a_far_time_is_no_way_around_the_window_s8_1_3():
     assert r.p.Position == pytest.approx(V * r.ctl.time, abs=1e-6)
 
 
-def test_a_forged_invalid_telegram_just_ahead_blocks_x4_no_longer_than_the_next_genuine_one_a_3_6():
+def test_s7_1500_a_forged_invalid_telegram_just_ahead_blocks_x4_no_longer_than_the_next_genuine_one_a_3_6():
     """An invalid-flagged telegram dated ahead of the local time (inside the window) counts from now:
     the next genuine telegram makes the leading value valid again, no alarm 900."""
     r = Remote(tolerance=0.02)
@@ -141,7 +141,7 @@ def test_a_forged_invalid_telegram_just_ahead_blocks_x4_no_longer_than_the_next_
     assert all(x["x4"] for x in rows[1:])
 
 
-def test_the_window_is_configurable():
+def test_s7_1500_the_window_is_configurable():
     """``telegram_time_window``: a stricter bound makes a telegram 0.5 s ahead invalid too; a wider one
     (or a long tolerance time) admits it."""
     r = Remote(tolerance=0.02)
@@ -171,7 +171,7 @@ _forged = st.builds(lambda when, p, v, valid, delay: (when[0], when[1], dict(pos
 @given(delay=st.sampled_from([0.0, 0.008]),
        plan=st.lists(st.tuples(st.integers(0, 2), st.lists(_forged, max_size=3), st.booleans()), min_size=1,
                      max_size=30))
-def test_forged_telegrams_never_take_the_follower_out_of_step_hypothesis(delay, plan):
+def test_s7_1500_forged_telegrams_never_take_the_follower_out_of_step_hypothesis(delay, plan):
     """Invariant (hypothesis): telegrams forged with times out of the admissible window (far future, far
     past, non-finite; relative to now or absolute) and any values, interleaved before or after a genuine
     stream, never take the follower out of step: no alarm 900, InGear throughout, the proxy's value is

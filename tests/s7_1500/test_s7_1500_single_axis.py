@@ -37,7 +37,7 @@ def axis_rig(params=None):
     return ctl, axis, steps, trace
 
 
-def test_dynamic_inputs_below_zero_take_the_defaults_s9_1():
+def test_s7_1500_dynamic_inputs_below_zero_take_the_defaults_s9_1():
     ctl, axis, steps, trace = axis_rig()
     home, move = MC_Home(), MC_MoveAbsolute()
     steps.append(lambda: home(Axis=axis, Execute=True, Mode=0, Position=0.0))
@@ -51,7 +51,7 @@ def test_dynamic_inputs_below_zero_take_the_defaults_s9_1():
     assert axis.Position == pytest.approx(200.0)
 
 
-def test_jerk_zero_gives_a_trapezoidal_profile_and_jerk_limits_otherwise_s9_1():
+def test_s7_1500_jerk_zero_gives_a_trapezoidal_profile_and_jerk_limits_otherwise_s9_1():
     for jerk, expect_ramp in ((0.0, False), (5000.0, True)):
         ctl, axis, steps, trace = axis_rig()
         move = MC_MoveRelative()
@@ -81,7 +81,7 @@ def test_jerk_zero_gives_a_trapezoidal_profile_and_jerk_limits_otherwise_s9_1():
     (MC_Home, {"Mode": 6}, E.parameter("Mode")),          # absolute encoder adjustment, incremental encoder
     (MC_MoveSuperimposed, {"Distance": 1.0, "VelocityDiff": 0.0}, E.parameter("VelocityDiff")),
 ])
-def test_invalid_inputs_give_the_errorid_of_the_input(fb, inputs, code):
+def test_s7_1500_invalid_inputs_give_the_errorid_of_the_input(fb, inputs, code):
     ctl, axis, steps, _ = axis_rig()
     inst = fb()
     steps.append(lambda: inst(Axis=axis, Execute=True, **inputs))
@@ -90,7 +90,7 @@ def test_invalid_inputs_give_the_errorid_of_the_input(fb, inputs, code):
     assert axis.StatusWord.Enable and not axis.StatusWord.Error      # a rejected job leaves the axis as it is
 
 
-def test_commanded_values_above_the_limits_are_limited_with_a_warning_sA_1_16():
+def test_s7_1500_commanded_values_above_the_limits_are_limited_with_a_warning_sA_1_16():
     ctl, axis, steps, trace = axis_rig()
     move = MC_MoveVelocity()
     steps.append(lambda: move(Axis=axis, Execute=True, Velocity=900.0, Acceleration=9000.0))
@@ -105,7 +105,7 @@ def test_commanded_values_above_the_limits_are_limited_with_a_warning_sA_1_16():
     assert not axis.WarningWord.X6
 
 
-def test_velocity_override_scales_the_motion_sA_1_21():
+def test_s7_1500_velocity_override_scales_the_motion_sA_1_21():
     ctl, axis, steps, _ = axis_rig()
     move = MC_MoveVelocity()
     steps.append(lambda: move(Axis=axis, Execute=True, Velocity=200.0))
@@ -115,7 +115,7 @@ def test_velocity_override_scales_the_motion_sA_1_21():
     assert axis.Velocity == pytest.approx(100.0)
 
 
-def test_move_velocity_zero_stays_busy_in_velocity_at_standstill():
+def test_s7_1500_move_velocity_zero_stays_busy_in_velocity_at_standstill():
     ctl, axis, steps, _ = axis_rig()
     move = MC_MoveVelocity()
     cmd = {"v": 50.0, "exe": True}
@@ -130,7 +130,7 @@ def test_move_velocity_zero_stays_busy_in_velocity_at_standstill():
     assert move.Busy and move.InVelocity and axis.StatusWord.X7
 
 
-def test_jog_and_both_directions_error_s9_1():
+def test_s7_1500_jog_and_both_directions_error_s9_1():
     ctl, axis, steps, _ = axis_rig()
     jog = MC_MoveJog()
     keys = {"f": True, "b": False}
@@ -144,7 +144,7 @@ def test_jog_and_both_directions_error_s9_1():
     assert axis.Velocity == 0.0
 
 
-def test_power_stop_modes_sA_1_17():
+def test_s7_1500_power_stop_modes_sA_1_17():
     """StopMode 0 brakes with the emergency deceleration, 2 with the maximum deceleration, 1 removes the
     enable at once."""
     for mode, decel in ((0, 4000.0), (2, 6000.0)):
@@ -168,7 +168,7 @@ def test_power_stop_modes_sA_1_17():
         assert any(aborted)
 
 
-def test_superimposed_motion_adds_to_the_basic_motion_sA_1_37_x23():
+def test_s7_1500_superimposed_motion_adds_to_the_basic_motion_sA_1_37_x23():
     ctl, axis, steps, _ = axis_rig()
     move, sup = MC_MoveVelocity(), MC_MoveSuperimposed()
     go = {"sup": False}
@@ -186,7 +186,7 @@ def test_superimposed_motion_adds_to_the_basic_motion_sA_1_37_x23():
     assert axis.Velocity == pytest.approx(50.0)
 
 
-def test_superimposed_on_a_standing_axis_moves_by_the_distance():
+def test_s7_1500_superimposed_on_a_standing_axis_moves_by_the_distance():
     ctl, axis, steps, _ = axis_rig()
     sup = MC_MoveSuperimposed()
     steps.append(lambda: sup(Axis=axis, Execute=True, Distance=-12.5))
@@ -194,7 +194,7 @@ def test_superimposed_on_a_standing_axis_moves_by_the_distance():
     assert axis.Position == pytest.approx(-12.5)
 
 
-def test_superimposed_distance_zero_is_done_and_not_busy_forever_issue8():
+def test_s7_1500_superimposed_distance_zero_is_done_and_not_busy_forever_issue8():
     """MC_MoveSuperimposed with Distance 0 on a resting axis has nothing to add: Done, not Busy forever
     (found by the fuzzer, issue 8)."""
     ctl, axis, steps, _ = axis_rig()
@@ -205,7 +205,7 @@ def test_superimposed_distance_zero_is_done_and_not_busy_forever_issue8():
     assert axis.Position == 0.0
 
 
-def test_home_modes_direct_and_home_position_s6_1_5_5():
+def test_s7_1500_home_modes_direct_and_home_position_s6_1_5_5():
     ctl, axis, steps, _ = axis_rig({"Homing": {"HomePosition": 42.0}})
     home = MC_Home()
     cmd = {"mode": 0, "pos": 10.0, "exe": True}
@@ -220,7 +220,7 @@ def test_home_modes_direct_and_home_position_s6_1_5_5():
         assert axis.Position == pytest.approx(expect)        # virtual axis: homing done at once
 
 
-def test_status_word_motion_bits_sA_1_37():
+def test_s7_1500_status_word_motion_bits_sA_1_37():
     ctl, axis, steps, _ = axis_rig()
     move = MC_MoveRelative()
     steps.append(lambda: move(Axis=axis, Execute=True, Distance=100.0))
@@ -235,7 +235,7 @@ def test_status_word_motion_bits_sA_1_37():
     assert axis.StatusPositioning.TargetPosition == 0.0
 
 
-def test_reset_restart_only_when_disabled_s9_1():
+def test_s7_1500_reset_restart_only_when_disabled_s9_1():
     ctl, axis, steps, _ = axis_rig()
     reset = MC_Reset()
     steps.append(lambda: reset(Axis=axis, Execute=True, Restart=True))
@@ -243,7 +243,7 @@ def test_reset_restart_only_when_disabled_s9_1():
     assert reset.Error and reset.ErrorID == E.RESTART_IMPOSSIBLE
 
 
-def test_s7_1200_instructions_reject_an_s7_1500_axis():
+def test_s7_1500_s7_1200_instructions_reject_an_s7_1500_axis():
     from plcmotion.s7_1200 import MC_MoveRelative as MoveRelative1200
     ctl, axis, steps, _ = axis_rig()
     fb = MoveRelative1200()
@@ -258,7 +258,7 @@ def test_s7_1200_instructions_reject_an_s7_1500_axis():
        st.dictionaries(st.sampled_from(["Distance", "Position", "Velocity", "Acceleration", "Deceleration", "Jerk",
                                         "Direction", "Mode", "VelocityDiff", "JerkDiff"]),
                        st.one_of(st.floats(allow_nan=True, allow_infinity=True), st.integers(-5, 15)), max_size=4))
-def test_error_is_never_shown_with_errorid_zero_and_the_cycle_survives_property(fb, inputs):
+def test_s7_1500_error_is_never_shown_with_errorid_zero_and_the_cycle_survives_property(fb, inputs):
     ctl, axis, steps, _ = axis_rig()
     inst = fb()
     names = {k: v for k, v in inputs.items() if k in fb.INPUTS}
@@ -275,7 +275,7 @@ SIMULATED = {"Simulation": {"Mode": 1}}
 
 @pytest.mark.parametrize("params", [V, SIMULATED], ids=["virtual", "simulated"])
 @pytest.mark.parametrize("mode, position, expect", [(3, 25.0, 25.0), (5, 0.0, 42.0)])
-def test_active_homing_of_a_virtual_axis_aborts_brakes_and_homes_at_standstill_s6_1_5_5(params, mode, position,
+def test_s7_1500_active_homing_of_a_virtual_axis_aborts_brakes_and_homes_at_standstill_s6_1_5_5(params, mode, position,
                                                                                         expect):
     """§6.1.5.5: active homing aborts the traversing motion.  A virtual/simulated axis has no switch to search:
     it brakes with the default deceleration (HomingCommand set, not homed), then takes the home position at
@@ -306,7 +306,7 @@ def test_active_homing_of_a_virtual_axis_aborts_brakes_and_homes_at_standstill_s
     assert sw.HomingDone and sw.StandStill and sw.Done and not sw.HomingCommand
 
 
-def test_active_homing_of_a_virtual_axis_aborts_a_superimposed_motion_s9_3_1():
+def test_s7_1500_active_homing_of_a_virtual_axis_aborts_a_superimposed_motion_s9_3_1():
     ctl, axis, steps, _ = axis_rig()
     sup, home = MC_MoveSuperimposed(), MC_Home()
     go = {"home": False}
@@ -320,7 +320,7 @@ def test_active_homing_of_a_virtual_axis_aborts_a_superimposed_motion_s9_3_1():
     assert axis.Velocity == 0.0 and axis.Position == 0.0
 
 
-def test_active_homing_of_a_virtual_axis_is_rejected_while_mc_stop_holds_it_s9_3_1():
+def test_s7_1500_active_homing_of_a_virtual_axis_is_rejected_while_mc_stop_holds_it_s9_3_1():
     """§9.3.1: a running MC_Stop is not aborted by MC_Home Mode 3/5; the stop lock rejects it (decisions #24)."""
     ctl, axis, steps, _ = axis_rig()
     stop, home = MC_Stop(), MC_Home()
@@ -332,7 +332,7 @@ def test_active_homing_of_a_virtual_axis_is_rejected_while_mc_stop_holds_it_s9_3
     assert not stop.CommandAborted and axis.StatusWord2.StopCommand and not axis.StatusWord.HomingDone
 
 
-def test_active_homing_of_a_virtual_following_axis_aborts_gearing_s9_3_2():
+def test_s7_1500_active_homing_of_a_virtual_following_axis_aborts_gearing_s9_3_2():
     """§9.3.2 row "MC_Home Mode 3, 5", column MC_GearIn: the gearing is aborted, also on a virtual axis."""
     from plcmotion.s7_1500 import MC_GearIn
     ctl = Controller(family="S7-1500T")

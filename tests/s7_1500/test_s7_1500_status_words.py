@@ -35,7 +35,7 @@ def axis_rig(params=None, *, enable=True):
 
 
 # --- §A.1.37 names -------------------------------------------------------------------------------------
-def test_standstill_is_the_appendix_name_of_bit_7_sA_1_37():
+def test_s7_1500_standstill_is_the_appendix_name_of_bit_7_sA_1_37():
     """§A.1.37 calls bit 7 "Standstill", the §7.1.1 diagnostics "StandStill": both read the bit."""
     ctl, axis, steps, _ = axis_rig()
     sw = axis.StatusWord
@@ -49,7 +49,7 @@ def test_standstill_is_the_appendix_name_of_bit_7_sA_1_37():
 
 
 # --- X12 ConstantVelocity ------------------------------------------------------------------------------
-def test_constant_velocity_is_true_at_standstill_s7_1_1():
+def test_s7_1500_constant_velocity_is_true_at_standstill_s7_1_1():
     """§7.1.1 "Constant velocity: The axis is moved with constant velocity or is stationary" (X12)."""
     ctl, axis, steps, _ = axis_rig()
     assert axis.StatusWord.StandStill and axis.StatusWord.ConstantVelocity
@@ -69,7 +69,7 @@ def test_constant_velocity_is_true_at_standstill_s7_1_1():
 
 
 # --- X6 Done -------------------------------------------------------------------------------------------
-def test_done_is_false_while_mc_stop_brakes_the_axis_sA_1_37():
+def test_s7_1500_done_is_false_while_mc_stop_brakes_the_axis_sA_1_37():
     """§A.1.37 bit 6 "Done": 0 = a motion job is in progress.  MC_Stop braking the axis is one; once the axis
     stands (MC_Stop.Done, still holding the axis) no motion job is in progress."""
     ctl, axis, steps, _ = axis_rig()
@@ -86,7 +86,7 @@ def test_done_is_false_while_mc_stop_brakes_the_axis_sA_1_37():
     assert axis.StatusWord.Done and axis.StatusWord2.StopCommand
 
 
-def test_done_stays_true_during_passive_homing_s6_1_5_5():
+def test_s7_1500_done_stays_true_during_passive_homing_s6_1_5_5():
     """Passive homing moves nothing ("MC_Home does not carry out any homing motion", §6.1.5.5), so it is no
     motion job in the sense of §A.1.37 bit 6; HomingCommand (X11) shows it (docs/s7_1500/decisions.md)."""
     ctl, axis, steps, _ = axis_rig(DRIVE)
@@ -99,7 +99,7 @@ def test_done_stays_true_during_passive_homing_s6_1_5_5():
 
 
 # --- X3 CommandNotAccepted -----------------------------------------------------------------------------
-def test_rejected_job_sets_warning_command_not_accepted_until_mc_reset_s7_1_1():
+def test_s7_1500_rejected_job_sets_warning_command_not_accepted_until_mc_reset_s7_1_1():
     """§7.1.1 "Job rejected ... necessary requirements are not fulfilled (for example, technology object
     not homed)": WarningWord.X3.  A warning: no StatusWord.Error, no ErrorDetail, the axis takes new jobs;
     MC_Reset clears it (docs/s7_1500/decisions.md)."""
@@ -123,7 +123,7 @@ def test_rejected_job_sets_warning_command_not_accepted_until_mc_reset_s7_1_1():
 
 
 @pytest.mark.parametrize("case", ["not_enabled", "stop_lock"])
-def test_other_rejections_set_command_not_accepted_s7_1_1(case):
+def test_s7_1500_other_rejections_set_command_not_accepted_s7_1_1(case):
     ctl, axis, steps, _ = axis_rig(enable=case != "not_enabled")
     if case == "stop_lock":
         stop = MC_Stop()
@@ -136,7 +136,7 @@ def test_other_rejections_set_command_not_accepted_s7_1_1(case):
     assert axis.WarningWord.CommandNotAccepted
 
 
-def test_an_invalid_input_value_is_not_command_not_accepted_s7_1_1():
+def test_s7_1500_an_invalid_input_value_is_not_command_not_accepted_s7_1_1():
     """An invalid input value is an error of the instruction's use, not a requirement of the technology
     object that is not met: X3 stays FALSE."""
     ctl, axis, steps, _ = axis_rig()
@@ -149,7 +149,7 @@ def test_an_invalid_input_value_is_not_command_not_accepted_s7_1_1():
 # --- X6 DynamicWarning ---------------------------------------------------------------------------------
 @pytest.mark.parametrize("fb, inputs", [(MC_MoveVelocity, {"Execute": True}), (MC_MoveJog, {"JogForward": True})])
 @pytest.mark.parametrize("velocity, warned", [(900.0, True), (400.0, False)])
-def test_velocity_limit_of_a_velocity_job_warns_sA_1_16(fb, inputs, velocity, warned):
+def test_s7_1500_velocity_limit_of_a_velocity_job_warns_sA_1_16(fb, inputs, velocity, warned):
     """§A.1.16: values above the dynamic limits are limited "and a warning is indicated" (WarningWord.X6),
     also when DynamicLimits.Velocity cuts the velocity of MC_MoveVelocity / MC_MoveJog."""
     ctl, axis, steps, _ = axis_rig()
@@ -160,7 +160,7 @@ def test_velocity_limit_of_a_velocity_job_warns_sA_1_16(fb, inputs, velocity, wa
     assert bool(axis.WarningWord.DynamicWarning) == warned and not inst.Error and not axis.StatusWord.Error
 
 
-def test_new_jog_velocity_above_the_limit_warns_sA_1_16():
+def test_s7_1500_new_jog_velocity_above_the_limit_warns_sA_1_16():
     ctl, axis, steps, _ = axis_rig()
     jog = MC_MoveJog()
     cmd = {"v": 200.0}
@@ -173,7 +173,7 @@ def test_new_jog_velocity_above_the_limit_warns_sA_1_16():
     assert axis.Velocity == pytest.approx(600.0) and axis.WarningWord.X6
 
 
-def test_alarm_description_names_number_text_and_reaction_s7_1_1():
+def test_s7_1500_alarm_description_names_number_text_and_reaction_s7_1_1():
     """§6.1.5.6 / §7.1.1: the following error alarm is 521 with the reaction "remove enable" (ErrorDetail)."""
     from plcmotion.kernel import faults as F
     from plcmotion.kernel.faults import Reaction

@@ -43,7 +43,7 @@ def _stop_time(write_tag: bool) -> float:
     return float("inf")
 
 
-def test_mc_stop_mode0_keeps_emergency_ramp_when_dynamics_tag_written():
+def test_s7_1500_mc_stop_mode0_keeps_emergency_ramp_when_dynamics_tag_written():
     """§6.1.5.3: 50 / 200 = 0.25 s down the emergency ramp; the dynamic defaults (Deceleration 20) would take
     2.5 s.  A write of DynamicDefaults.Acceleration in the same cycle must not change the stop."""
     plain = _stop_time(False)

@@ -16,7 +16,7 @@ from _s7_1500_rig import VIRTUAL, Rig, merge, modulo
 @given(spr=st.sampled_from([1, 3]), direction=st.sampled_from([1.0, -1.0]), num=st.integers(-3, 3).filter(bool),
        den=st.integers(1, 4), distance=st.floats(20.0, 150.0), ahead=st.floats(30.0, 300.0),
        slave_sync=st.floats(-500.0, 500.0), master_modulo=st.booleans())
-def test_gear_in_pos_synchronous_exactly_at_the_synchronous_positions_s4_3(spr, direction, num, den, distance,
+def test_s7_1500_gear_in_pos_synchronous_exactly_at_the_synchronous_positions_s4_3(spr, direction, num, den, distance,
                                                                            ahead, slave_sync, master_modulo):
     mp = merge(VIRTUAL, modulo(360.0)) if master_modulo else VIRTUAL
     rig = Rig(master_params=mp)
@@ -53,7 +53,7 @@ def test_gear_in_pos_synchronous_exactly_at_the_synchronous_positions_s4_3(spr, 
 
 @settings(max_examples=20, deadline=None)
 @given(sync_direction=st.sampled_from([1, 2, 3]), slave_start=st.floats(0.0, 359.0), slave_sync=st.floats(0.0, 359.0))
-def test_sync_direction_on_a_modulo_following_axis_s4_3(sync_direction, slave_start, slave_sync):
+def test_s7_1500_sync_direction_on_a_modulo_following_axis_s4_3(sync_direction, slave_start, slave_sync):
     """SyncDirection 1: the following axis covers a non-negative net distance during synchronization,
     2 a non-positive one, 3 the shortest correction to the synchronous law (at most half a revolution);
     the synchronous position is reached modulo the axis length (docs/decisions_s7_1500.md)."""
@@ -89,7 +89,8 @@ def test_sync_direction_on_a_modulo_following_axis_s4_3(sync_direction, slave_st
 @settings(max_examples=15, deadline=None)
 @given(spr=st.sampled_from([1, 3, 4]), master_offset=st.floats(0.0, 200.0), scaling=st.floats(0.5, 2.0),
        slave_scaling=st.floats(-2.0, 2.0), distance=st.floats(30.0, 200.0), app_mode=st.sampled_from([1, 2]))
-def test_cam_in_synchronous_on_the_scaled_cam_s5_2_s5_4(spr, master_offset, scaling, slave_scaling, distance, app_mode):
+def test_s7_1500_cam_in_synchronous_on_the_scaled_cam_s5_2_s5_4(spr, master_offset, scaling, slave_scaling, distance,
+                                                                app_mode):
     rig = Rig()
     cam = rig.ctl.add_cam("Cam", [(0, 0), (60, 10), (120, 50), (240, 70), (360, 100)], interpolation_mode=1)
     ic = MC_InterpolateCam()

@@ -50,7 +50,7 @@ class Wired:
         return float(self.rig.ctl.bank.sp_p[self.rig.masters[0].index])
 
 
-def test_leading_value_additive_stays_on_its_axis_when_axis_is_rewired_defect5():
+def test_s7_1500_leading_value_additive_stays_on_its_axis_when_axis_is_rewired_defect5():
     """Defect 5: rewiring Axis while busy raised AttributeError or left the offset applied forever with
     Busy FALSE.  The additive value stays on the axis it started on until Enable FALSE; a new rising
     edge of Enable takes the new Axis."""
@@ -79,7 +79,7 @@ def test_leading_value_additive_stays_on_its_axis_when_axis_is_rewired_defect5()
 
 
 @pytest.mark.parametrize("cls", [MC_PhasingAbsolute, MC_PhasingRelative])
-def test_phasing_stays_on_its_slave_when_slave_or_master_is_rewired_defect5(cls):
+def test_s7_1500_phasing_stays_on_its_slave_when_slave_or_master_is_rewired_defect5(cls):
     """Defect 5: MC_PhasingAbsolute read its progress from the axis wired now (AttributeError for a
     positioning axis).  The phase shift runs to its end on the axis it started on and the progress
     output shows that axis; the other axis is not shifted."""
@@ -101,7 +101,7 @@ def test_phasing_stays_on_its_slave_when_slave_or_master_is_rewired_defect5(cls)
     assert w.s2.StatusSynchronizedMotion.PhaseShift == 0.0
 
 
-def test_synchronized_motion_simulation_ends_on_its_slave_when_rewired_defect5():
+def test_s7_1500_synchronized_motion_simulation_ends_on_its_slave_when_rewired_defect5():
     """MC_SynchronizedMotionSimulation: Enable FALSE ended the simulation of the axis wired at that
     moment, leaving the first one simulating forever with Busy FALSE.  Rewiring acts at the next edge."""
     w = Wired(MC_SynchronizedMotionSimulation())
@@ -126,7 +126,7 @@ def test_synchronized_motion_simulation_ends_on_its_slave_when_rewired_defect5()
 
 
 @pytest.mark.parametrize("cls", [MC_GearIn, MC_GearInPos, MC_CamIn])
-def test_synchronous_operation_stays_on_its_objects_when_rewired_defect5(cls):
+def test_s7_1500_synchronous_operation_stays_on_its_objects_when_rewired_defect5(cls):
     """MC_GearIn, MC_GearInPos, MC_CamIn: rewiring Slave and Master while busy leaves the synchronous
     operation where it started; the next rising edge of Execute starts one with the new wiring."""
     rig = Rig(masters=2, slaves=2)

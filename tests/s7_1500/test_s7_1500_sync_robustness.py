@@ -18,7 +18,7 @@ FINE = {"Sensor[1]": {"Parameter": {"DistancePerRevolution": 100.0, "StepsPerRev
 # --- defect 2: the sync stage guards every source ------------------------------------------------------
 
 @pytest.mark.parametrize("mode", ["actual", "delayed"])
-def test_absurd_leading_value_of_an_external_encoder_never_reaches_the_follower_defect2(mode):
+def test_s7_1500_absurd_leading_value_of_an_external_encoder_never_reaches_the_follower_defect2(mode):
     """Whatever the source, a leading value that is not a finite number in range must not produce a
     following setpoint: here an external encoder whose machine jumps to 1e300 (public drive_plant).  The
     follower goes on one cycle with its last leading value carried forward, then the gearing ends with
@@ -84,7 +84,7 @@ def _modulo_rig(kind, spr, direction, cam_points=((0, 0), (100, 25.5), (200, 60.
 @pytest.mark.parametrize("kind", ["gear", "cam"])
 @pytest.mark.parametrize("spr", [0, 1, 3])
 @pytest.mark.parametrize("direction", [1, 2, 3])
-def test_sync_direction_with_a_short_modulo_following_axis_defect4(kind, spr, direction):
+def test_s7_1500_sync_direction_with_a_short_modulo_following_axis_defect4(kind, spr, direction):
     """Defect 4: modulo length 1.0, leading axis moving positive, SyncDirection 2: SPR 0 raised an
     IndexError, 1 and 3 an assertion, and MC_GearInPos stayed Busy forever.  Every combination now
     synchronizes, with the net travel of the following axis during the synchronization in the
@@ -107,7 +107,7 @@ def test_sync_direction_with_a_short_modulo_following_axis_defect4(kind, spr, di
 
 @pytest.mark.parametrize("where", ["_activate_blend", "_plan_dynamic_sync", "_prepare_positioned", "_start_gear_in",
                                    "_activate_gear_in"])
-def test_an_internal_error_in_a_synchronous_job_ends_it_with_an_error_defect4(where, monkeypatch):
+def test_s7_1500_an_internal_error_in_a_synchronous_job_ends_it_with_an_error_defect4(where, monkeypatch):
     """Defect 4: an internal error left MC_GearInPos Busy forever without Error or CommandAborted.  Any
     exception inside the kernel's synchronous job handling now ends that job: Error with 16#8FFF, Busy
     FALSE; the controller stays in RUN and the axis shows the technology alarm."""
@@ -137,7 +137,7 @@ def test_an_internal_error_in_a_synchronous_job_ends_it_with_an_error_defect4(wh
 # --- MC_CamIn with its defaults (decision 19) -----------------------------------------------------------
 
 @pytest.mark.parametrize("moving", [True, False], ids=["master-moving", "master-at-standstill"])
-def test_cam_in_with_its_defaults_is_synchronous_at_once_s9_1_5_1(moving):
+def test_s7_1500_cam_in_with_its_defaults_is_synchronous_at_once_s9_1_5_1(moving):
     """§9.1.5.1: MasterSyncPosition 0.0 (default) "to run through the entire cam"; SyncProfileReference 1
     and MasterStartDistance 0.0 (defaults): no leading value distance to synchronize over - synchronous
     at once at the cam start (decision 19).  It used to stay Busy forever without InSync and without
@@ -173,7 +173,7 @@ from hypothesis import strategies as st  # noqa: E402
 @given(length=st.sampled_from([0.25, 1.0, 7.5, 360.0]), ratio=st.sampled_from([1, -1, 3, -2]),
        v=st.sampled_from([50.0, -50.0]), spr=st.sampled_from([0, 1, 3]), direction=st.sampled_from([1, 2, 3]),
        slave_sync=st.floats(-100.0, 100.0), distance=st.floats(1.0, 30.0), velocity=st.sampled_from([-1.0, 400.0]))
-def test_gear_in_pos_on_a_modulo_following_axis_always_ends_its_synchronization_defect4(
+def test_s7_1500_gear_in_pos_on_a_modulo_following_axis_always_ends_its_synchronization_defect4(
         length, ratio, v, spr, direction, slave_sync, distance, velocity):
     """Invariant (hypothesis): whatever the modulo length, gear ratio, direction of the leading axis,
     SyncProfileReference and SyncDirection, MC_GearInPos synchronizes - or, with SyncProfileReference 0
@@ -217,7 +217,7 @@ def test_gear_in_pos_on_a_modulo_following_axis_always_ends_its_synchronization_
         assert travel <= 1e-6 * max(1.0, length)
 
 
-def test_spr0_too_close_on_a_modulo_leading_axis_synchronizes_one_revolution_later_s4_3_1():
+def test_s7_1500_spr0_too_close_on_a_modulo_leading_axis_synchronizes_one_revolution_later_s4_3_1():
     """§4.3/§5.4.1 (SyncProfileReference 0): a modulo leading axis too close to the synchronous position
     for the job's dynamics passes it; the synchronization is then planned for its next occurrence, one
     revolution later (it used to wait for ever for the position already passed)."""
@@ -241,7 +241,7 @@ def test_spr0_too_close_on_a_modulo_leading_axis_synchronizes_one_revolution_lat
 
 
 @pytest.mark.parametrize("spr,msp", [(1, 200.0), (0, 200.0), (3, 200.0), (3, 180.0)])
-def test_cam_run_once_synchronized_at_or_past_its_end_ends_with_end_of_profile_s9_1_5_1(spr, msp):
+def test_s7_1500_cam_run_once_synchronized_at_or_past_its_end_ends_with_end_of_profile_s9_1_5_1(spr, msp):
     """§9.1.5.1: with non-cyclic application InSync and Busy go FALSE when EndOfProfile is set.  A
     synchronization that ends at the cam end (MasterSyncPosition = cam length) or beyond it (subsequent
     synchronization over the end) used to leave MC_CamIn InSync and Busy for ever, the cam end already
@@ -259,7 +259,7 @@ def test_cam_run_once_synchronized_at_or_past_its_end_ends_with_end_of_profile_s
     assert rig.slave.Position == pytest.approx(0.0, abs=1e-3)          # the cam's end value
 
 
-def test_cam_in_with_a_denormal_master_scaling_ends_its_job_not_the_controller_issue8():
+def test_s7_1500_cam_in_with_a_denormal_master_scaling_ends_its_job_not_the_controller_issue8():
     """MC_CamIn, cyclic (ApplicationMode 2), MasterScaling 1e-300: the scaled leading value lies ~1e300 cam
     cycles away, which cannot be counted.  The job ends with an error, the controller stays in RUN and the
     follower's setpoint stays finite (fuzz finding F9, issue 8)."""

@@ -10,7 +10,7 @@ from plcmotion import Controller
 from plcmotion.s7_1500 import MC_MoveVelocity, MC_Power
 
 
-def test_lowered_velocity_limit_holds_during_the_acceleration_phase():
+def test_s7_1500_lowered_velocity_limit_holds_during_the_acceleration_phase():
     ctl = Controller(servo_cycle=0.001, app_cycle=0.002, family="S7-1500T")
     ax = ctl.add_positioning_axis("Axis_1", {
         "DynamicLimits.MaxVelocity": 67.51, "DynamicLimits.Velocity": 67.51, "DynamicLimits.MaxAcceleration": 198.3,

@@ -40,7 +40,7 @@ def reference(ctl: Controller, read) -> list[tuple[float, float]]:
     return seen
 
 
-def test_position_column_is_the_axis_position_at_the_sample_times():
+def test_trace_position_column_is_the_axis_position_at_the_sample_times():
     ctl, axis, move = make_machine()
     trace = Trace(ctl).start()
     seen = reference(ctl, lambda: axis.Position)
@@ -58,7 +58,7 @@ def test_position_column_is_the_axis_position_at_the_sample_times():
     assert done[-1] == 1.0 and move.Done
 
 
-def test_recording_begins_at_start_and_ends_at_stop():
+def test_trace_recording_begins_at_start_and_ends_at_stop():
     ctl, _, _ = make_machine()
     trace = Trace(ctl, ["Axis_1.Position"])
     ctl.run(0.1)
@@ -72,7 +72,7 @@ def test_recording_begins_at_start_and_ends_at_stop():
     assert trace.data["time"][-1] == pytest.approx(0.2)
 
 
-def test_every_samples_each_nth_servo_cycle():
+def test_trace_every_samples_each_nth_servo_cycle():
     ctl, axis, _ = make_machine()
     trace = Trace(ctl, ["Axis_1.Velocity"], every=5).start()
     seen = reference(ctl, lambda: axis.Velocity)
@@ -83,7 +83,7 @@ def test_every_samples_each_nth_servo_cycle():
     assert trace.data["Axis_1.Velocity"].tolist() == [v for _, v in expected]
 
 
-def test_instruction_outputs_and_functions_can_be_traced():
+def test_trace_instruction_outputs_and_functions_can_be_traced():
     ctl, _, move = make_machine()
     trace = Trace(ctl, {"move.Done": lambda: move.Done, "move.ErrorID": lambda: move.ErrorID,
                         "pos": "Axis_1.Position"}).start()
@@ -93,7 +93,7 @@ def test_instruction_outputs_and_functions_can_be_traced():
     assert trace.data["pos"][-1] == 100.0
 
 
-def test_csv_round_trip_is_exact(tmp_path: Path):
+def test_trace_csv_round_trip_is_exact(tmp_path: Path):
     ctl, _, _ = make_machine()
     trace = Trace(ctl).start()
     ctl.run(3.0)
@@ -110,7 +110,7 @@ def test_csv_round_trip_is_exact(tmp_path: Path):
 
 @settings(max_examples=40, deadline=None)
 @given(st.lists(st.floats(allow_nan=False) | st.booleans() | st.integers(-2**53, 2**53), min_size=1, max_size=30))
-def test_csv_round_trip_of_any_value(tmp_path_factory, values):
+def test_trace_csv_round_trip_of_any_value(tmp_path_factory, values):
     ctl = Controller(servo_cycle=0.001, app_cycle=0.001)
     source = iter(values)
     trace = Trace(ctl, {"x": lambda: next(source, 0.0)})    # the construction probe reads values[0]
@@ -123,7 +123,7 @@ def test_csv_round_trip_of_any_value(tmp_path_factory, values):
     assert rows[:, 1].tobytes() == expected.tobytes()      # bit for bit, including -0.0 and infinities
 
 
-def test_identical_runs_give_byte_identical_csv(tmp_path: Path):
+def test_trace_identical_runs_give_byte_identical_csv(tmp_path: Path):
     files = []
     for run in ("a", "b"):
         ctl, _, move = make_machine(repeat=True)
@@ -141,7 +141,7 @@ def test_identical_runs_give_byte_identical_csv(tmp_path: Path):
     assert (tmp_path / "stream_a.csv").read_bytes() == (tmp_path / "memory_a.csv").read_bytes()
 
 
-def test_long_streamed_run_keeps_memory_bounded_and_the_file_complete(tmp_path: Path):
+def test_trace_long_streamed_run_keeps_memory_bounded_and_the_file_complete(tmp_path: Path):
     ctl, axis, _ = make_machine(repeat=True)
     keep = 2000
     path = tmp_path / "long.csv"
@@ -170,7 +170,7 @@ def test_long_streamed_run_keeps_memory_bounded_and_the_file_complete(tmp_path: 
     assert png.read_bytes()[:8] == PNG_SIGNATURE
 
 
-def test_plot_writes_a_png(tmp_path: Path):
+def test_trace_plot_writes_a_png(tmp_path: Path):
     ctl, _, move = make_machine()
     trace = Trace(ctl, {**{f"Axis_1.{tag}": f"Axis_1.{tag}" for tag in DEFAULT_TAGS},
                         "move.Done": lambda: move.Done, "distance": lambda: 100.0 - ctl["Axis_1"].Position},
@@ -194,7 +194,7 @@ def test_plot_writes_a_png(tmp_path: Path):
     ({"time": "Axis_1.Position"}, ValueError, ["time"]),
     ({"a,b": "Axis_1.Position"}, ValueError, ["a,b"]),
 ])
-def test_bad_signals_raise_at_construction(signals, error, words):
+def test_trace_bad_signals_raise_at_construction(signals, error, words):
     ctl, _, _ = make_machine()
     with pytest.raises(error) as info:
         Trace(ctl, signals)
@@ -204,13 +204,13 @@ def test_bad_signals_raise_at_construction(signals, error, words):
     assert ctl.mode == "RUN"
 
 
-def test_unknown_signal_is_a_key_error():
+def test_trace_unknown_signal_is_a_key_error():
     ctl, _, _ = make_machine()
     with pytest.raises(KeyError):
         Trace(ctl, ["Axis_1.Positon"])
 
 
-def test_a_signal_failing_in_the_cycle_reads_nan_and_the_controller_keeps_running():
+def test_trace_a_signal_failing_in_the_cycle_reads_nan_and_the_controller_keeps_running():
     ctl, _, _ = make_machine()
     box = {"value": 1.0}
     trace = Trace(ctl, {"x": lambda: box["value"], "pos": "Axis_1.Position"}).start()
@@ -224,7 +224,7 @@ def test_a_signal_failing_in_the_cycle_reads_nan_and_the_controller_keeps_runnin
     assert "x" in trace.errors and not np.isnan(trace.data["pos"]).any()
 
 
-def test_resumed_stream_appends_below_one_header(tmp_path: Path):
+def test_trace_resumed_stream_appends_below_one_header(tmp_path: Path):
     ctl, _, _ = make_machine()
     path = tmp_path / "resumed.csv"
     trace = Trace(ctl, ["Axis_1.Position"], stream_to=path)
@@ -238,7 +238,7 @@ def test_resumed_stream_appends_below_one_header(tmp_path: Path):
     assert rows.tobytes() == trace.rows.tobytes()
 
 
-def test_bad_options_are_rejected():
+def test_trace_bad_options_are_rejected():
     ctl, _, _ = make_machine()
     with pytest.raises(ValueError):
         Trace(ctl, every=0)

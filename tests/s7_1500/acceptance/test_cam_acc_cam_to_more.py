@@ -1,4 +1,4 @@
-"""More cam TO checks (§5.1, §6.2.5.7, §9.2.1, §A.2)."""
+"""More cam TO checks (S7-1500T V5 §5.1, §6.2.5.7, §9.2.1, §A.2)."""
 import math
 
 import pytest
@@ -15,7 +15,7 @@ def fval(ctl, cam, x):
     return get.Value, get.FirstDerivative, get.SecondDerivative
 
 
-def test_full_capacity_1000_points_50_segments():
+def test_s7_1500_full_capacity_1000_points_50_segments():
     pts = [(float(i), math.sin(i / 50.0)) for i in range(1000)]
     segs = [{"xmin": 1000.0 + 10 * k, "xmax": 1005.0 + 10 * k, "a0": float(k % 3)} for k in range(50)]
     ctl, cam = cam_rig(pts, segments=segs, interpolation_mode=1)
@@ -29,7 +29,7 @@ def test_full_capacity_1000_points_50_segments():
         cam.Segment[51].a0 = 1.0
 
 
-def test_cubic_spline_c1_into_segment():
+def test_s7_1500_cubic_spline_c1_into_segment():
     ctl, cam = cam_rig([(0, 0), (50, 30), (100, 10)],
                        segments=[{"xmin": 150.0, "xmax": 250.0, "a0": -20.0, "a1": 0.2}], interpolation_mode=1)
     interpolate(ctl, cam)
@@ -41,7 +41,7 @@ def test_cubic_spline_c1_into_segment():
         assert fval(ctl, cam, float(x))[0] == pytest.approx(y, abs=1e-9)
 
 
-def test_interpolating_other_cam_does_not_abort_camming():
+def test_s7_1500_interpolating_other_cam_does_not_abort_camming():
     h = Camming(cams={"Cam": [(0, 0), (180, 50), (360, 0)], "Other": [(0, 0), (10, 1)]})
     h.cam_in(SyncProfileReference=2, ApplicationMode=1)
     fb = MC_InterpolateCam()
@@ -49,7 +49,7 @@ def test_interpolating_other_cam_does_not_abort_camming():
     assert fb.Done and h.ci[0].InSync and h.ci[0].Busy
 
 
-def test_status_after_non_cyclic_end():
+def test_s7_1500_status_after_non_cyclic_end():
     h = Camming()
     h.cam_in(SyncProfileReference=2, MasterSyncPosition=10.0, ApplicationMode=0)
     h.move(720.0, settle=False)

@@ -1,4 +1,4 @@
-"""MC_CamIn acceptance tests from the manual (§5, §9.1.5, §9.3.2, §A.1.33, §A.1.37)."""
+"""MC_CamIn acceptance tests from the manual (S7-1500T V5 §5, §9.1.5, §9.3.2, §A.1.33, §A.1.37)."""
 import math
 
 import pytest
@@ -15,7 +15,7 @@ def sync_rows(h, i=0):
 
 
 # ---------------------------------------------------------------------------------------------------
-def test_not_interpolated_cam_rejected():
+def test_s7_1500_not_interpolated_cam_rejected():
     h = Camming()
     cam2 = h.ctl.add_cam("Cam2", HUMP)
     h.ciin[0].update(Execute=False)
@@ -27,7 +27,7 @@ def test_not_interpolated_cam_rejected():
     h.check_log()
 
 
-def test_law_scaling_offsets_and_status_tags_spr1_cyclic():
+def test_s7_1500_law_scaling_offsets_and_status_tags_spr1_cyclic():
     """§5.2: FV = f((LV - MasterOffset)/MasterScaling) * SlaveScaling + SlaveOffset; §5.6/§A.1.33 status."""
     h = Camming()
     h.move(200.0)
@@ -52,7 +52,7 @@ def test_law_scaling_offsets_and_status_tags_spr1_cyclic():
     h.check_log()
 
 
-def test_status_master_offset_shows_input_spr1():
+def test_s7_1500_status_master_offset_shows_input_spr1():
     h = Camming()
     h.move(200.0)
     h.cam_in(MasterOffset=300.0, ApplicationMode=1, SyncProfileReference=1, MasterStartDistance=100.0)
@@ -60,7 +60,7 @@ def test_status_master_offset_shows_input_spr1():
     assert h.rig.slave.StatusSynchronizedMotion.MasterOffset == pytest.approx(300.0)
 
 
-def test_spr1_waiting_startsync_insync_positions_and_bits():
+def test_s7_1500_spr1_waiting_startsync_insync_positions_and_bits():
     """§5.4.2: waiting (WaitingFunctionState 3) until SyncPos - MasterStartDistance; StartSync/X21 during
     synchronization; InSync/X22 at SyncPos = start*MS + MO + MSP."""
     h = Camming()
@@ -90,7 +90,7 @@ def test_spr1_waiting_startsync_insync_positions_and_bits():
     h.check_log()
 
 
-def test_spr1_master_too_close_rejected():
+def test_s7_1500_spr1_master_too_close_rejected():
     """§9.1.5 requirement: with SPR 1 the master must be at least MasterStartDistance from SyncPos."""
     h = Camming()
     h.move(100.0)
@@ -100,7 +100,7 @@ def test_spr1_master_too_close_rejected():
     h.check_log()
 
 
-def test_spr3_subsequent_positions():
+def test_s7_1500_spr3_subsequent_positions():
     """§5.4.3: synchronization starts at SyncPos (MSP relative to cam start), synchronous at
     SyncPos + MasterStartDistance."""
     h = Camming()
@@ -123,7 +123,7 @@ def test_spr3_subsequent_positions():
     h.check_log()
 
 
-def test_spr4_subsequent_from_current_position():
+def test_s7_1500_spr4_subsequent_from_current_position():
     h = Camming()
     h.move(180.0)
     h.cam_in(MasterOffset=0.0, MasterStartDistance=90.0, SyncProfileReference=4, ApplicationMode=1)
@@ -142,7 +142,7 @@ def test_spr4_subsequent_from_current_position():
     h.check_log()
 
 
-def test_spr0_dynamic_parameters_insync_at_sync_position():
+def test_s7_1500_spr0_dynamic_parameters_insync_at_sync_position():
     """§5.4.1: waiting until the computed start; InSync when the master reaches SyncPos."""
     h = Camming()
     h.move(180.0)
@@ -162,7 +162,7 @@ def test_spr0_dynamic_parameters_insync_at_sync_position():
     h.check_log()
 
 
-def test_spr0_velocity_zero_rejected_spr1_velocity_zero_irrelevant():
+def test_s7_1500_spr0_velocity_zero_rejected_spr1_velocity_zero_irrelevant():
     """§9.1.5: Velocity = 0.0 not permitted for SPR 0; not relevant for SPR 1..4."""
     h = Camming()
     h.cam_in(SyncProfileReference=0, Velocity=0.0, ApplicationMode=1, MasterOffset=100.0)
@@ -172,7 +172,7 @@ def test_spr0_velocity_zero_rejected_spr1_velocity_zero_irrelevant():
     h.check_log()
 
 
-def test_spr2_direct_offsets_ignored_and_computed():
+def test_s7_1500_spr2_direct_offsets_ignored_and_computed():
     """§5.4.4: InSync at once; the cam point MSP goes to the present setpoints; MasterOffset/SlaveOffset
     inputs not relevant; the resulting offsets are shown in StatusSynchronizedMotion."""
     h = Camming()
@@ -191,7 +191,7 @@ def test_spr2_direct_offsets_ignored_and_computed():
     h.check_log()
 
 
-def test_spr2_once_msp0_at_standstill_stays_synchronous():
+def test_s7_1500_spr2_once_msp0_at_standstill_stays_synchronous():
     """§5.4.4 + §5.3: direct synchronous setting at the cam start (MasterSyncPosition 0.0, which runs the
     whole cam, §9.1.5) with the master at standstill: InSync/Busy stay TRUE until the master has run
     through the cam; EndOfProfile only at the cam end."""
@@ -203,7 +203,7 @@ def test_spr2_once_msp0_at_standstill_stays_synchronous():
                                                                 EOP=ci.EndOfProfile)
 
 
-def test_spr2_once_msp0_then_master_runs_through_cam():
+def test_s7_1500_spr2_once_msp0_then_master_runs_through_cam():
     h = Camming()
     h.cam_in(SyncProfileReference=2, MasterSyncPosition=0.0, ApplicationMode=0)
     m0, s0 = h.m, h.s
@@ -212,7 +212,7 @@ def test_spr2_once_msp0_then_master_runs_through_cam():
     assert h.m >= m0 + 360.0 - 1e-6, f"camming ended at master {h.m - m0:.3f} of 360"
 
 
-def test_once_end_of_profile_then_axis_stands_and_status():
+def test_s7_1500_once_end_of_profile_then_axis_stands_and_status():
     """§5.3/§9.1.5: non-cyclic: EndOfProfile TRUE and InSync/Busy FALSE together at the cam end."""
     h = Camming()
     h.move(360.0)
@@ -233,7 +233,7 @@ def test_once_end_of_profile_then_axis_stands_and_status():
     h.check_log()
 
 
-def test_once_negative_direction_ends_at_cam_start():
+def test_s7_1500_once_negative_direction_ends_at_cam_start():
     """§5.3: non-cyclic, run in the negative direction: ends when the start point is reached."""
     h = Camming()
     h.cam_in(SyncProfileReference=2, MasterSyncPosition=180.0, ApplicationMode=0)
@@ -252,7 +252,7 @@ def test_once_negative_direction_ends_at_cam_start():
             assert r["s"] == pytest.approx(flin(HUMP, r["m"] - mo) + so, abs=1e-6)
 
 
-def test_cyclic_negative_direction_repeats_from_end():
+def test_s7_1500_cyclic_negative_direction_repeats_from_end():
     h = Camming()
     h.cam_in(SyncProfileReference=2, MasterSyncPosition=90.0, ApplicationMode=1)
     mo = h.rig.slave.StatusSynchronizedMotion.MasterOffset
@@ -268,7 +268,7 @@ def test_cyclic_negative_direction_repeats_from_end():
     h.check_log()
 
 
-def test_appending_negative_direction():
+def test_s7_1500_appending_negative_direction():
     """§5.3: cyclic appending, negative direction: the start point is the start of the next run; the
     following value difference is added up (here: decreases by the stroke per cycle)."""
     h = Camming(cams={"Cam": RAMP})
@@ -285,7 +285,7 @@ def test_appending_negative_direction():
     h.check_log()
 
 
-def test_appending_with_slave_scaling_negative():
+def test_s7_1500_appending_with_slave_scaling_negative():
     h = Camming(cams={"Cam": RAMP})
     h.cam_in(SyncProfileReference=2, MasterSyncPosition=0.0, ApplicationMode=2, SlaveScaling=-2.0)
     mo = h.rig.slave.StatusSynchronizedMotion.MasterOffset
@@ -298,7 +298,7 @@ def test_appending_with_slave_scaling_negative():
             assert r["s"] == pytest.approx(-2.0 * 100.0 * u / 360.0 + so, abs=1e-6)
 
 
-def test_master_reverses_in_cyclic_camming():
+def test_s7_1500_master_reverses_in_cyclic_camming():
     h = Camming()
     h.move(360.0)
     h.cam_in(SyncProfileReference=2, MasterSyncPosition=0.0, ApplicationMode=1)
@@ -314,7 +314,7 @@ def test_master_reverses_in_cyclic_camming():
     h.check_log()
 
 
-def test_master_sync_position_range_with_scaling():
+def test_s7_1500_master_sync_position_range_with_scaling():
     """§9.1.5: MasterSyncPosition must be within the (scaled) cam: 0 .. length*MasterScaling."""
     h = Camming()
     h.cam_in(SyncProfileReference=2, MasterSyncPosition=500.0, MasterScaling=2.0, ApplicationMode=1)
@@ -326,26 +326,26 @@ def test_master_sync_position_range_with_scaling():
     h.check_log()
 
 
-def test_spr4_master_sync_position_not_relevant():
+def test_s7_1500_spr4_master_sync_position_not_relevant():
     h = Camming()
     h.cam_in(SyncProfileReference=4, MasterSyncPosition=1.0e6, MasterStartDistance=10.0, ApplicationMode=1)
     assert not h.ci[0].Error and h.ci[0].Busy
 
 
-def test_application_mode_invalid_rejected():
+def test_s7_1500_application_mode_invalid_rejected():
     h = Camming()
     h.cam_in(SyncProfileReference=2, ApplicationMode=3)
     assert h.ci[0].Error and h.ci[0].ErrorID != 0
 
 
-def test_sync_direction_not_relevant_for_linear_axis():
+def test_s7_1500_sync_direction_not_relevant_for_linear_axis():
     """§9.1.5: SyncDirection 'in effect for axes with activated Modulo setting'."""
     h = Camming()
     h.cam_in(SyncProfileReference=2, ApplicationMode=1, SyncDirection=0)
     assert not h.ci[0].Error, hex(h.ci[0].ErrorID)
 
 
-def test_interpolate_rejected_while_camming_and_cam_readable():
+def test_s7_1500_interpolate_rejected_while_camming_and_cam_readable():
     from plcmotion.s7_1500 import MC_GetCamFollowingValue
     h = Camming()
     h.cam_in(SyncProfileReference=2, ApplicationMode=1)
@@ -360,7 +360,7 @@ def test_interpolate_rejected_while_camming_and_cam_readable():
     assert h.ci[0].InSync                               # neither aborts the camming
 
 
-def test_cam_switch_spr3_function_chart_2():
+def test_s7_1500_cam_switch_spr3_function_chart_2():
     """§9.1.5.2 chart 2 + §9.3.2: A2 (Cam2, SPR 3) waits while A1 runs; when A2 starts synchronizing
     A1 ends with CommandAborted; ActualCam changes to Cam2."""
     cam2 = [(0, 0), (180, -50), (360, 0)]
@@ -387,7 +387,7 @@ def test_cam_switch_spr3_function_chart_2():
     h.check_log()
 
 
-def test_cam_switch_at_cam_end_spr1_continuous():
+def test_s7_1500_cam_switch_at_cam_end_spr1_continuous():
     """Cam switching with SPR 1 to a second cam: A2 aborts A1 at its sync start (function chart 1)."""
     cam2 = [(0, 0), (360, 0)]
     h = Camming(cams={"Cam": HUMP, "Cam2": cam2}, n_camin=2)
@@ -404,7 +404,7 @@ def test_cam_switch_at_cam_end_spr1_continuous():
     h.check_log()
 
 
-def test_second_waiting_job_replaces_first_waiting():
+def test_s7_1500_second_waiting_job_replaces_first_waiting():
     h = Camming(n_camin=2)
     h.move(100.0)
     h.cam_in(0, SyncProfileReference=1, MasterOffset=h.m + 1000.0, MasterStartDistance=100.0, ApplicationMode=1)
@@ -414,7 +414,7 @@ def test_second_waiting_job_replaces_first_waiting():
     h.check_log()
 
 
-def test_halt_does_not_abort_waiting_camin_but_aborts_active():
+def test_s7_1500_halt_does_not_abort_waiting_camin_but_aborts_active():
     """§9.3.2: MC_Halt vs CamIn waiting '-' (no effect), vs CamIn active 'A'."""
     h = Camming()
     halt = MC_Halt()
@@ -434,7 +434,7 @@ def test_halt_does_not_abort_waiting_camin_but_aborts_active():
     h.check_log()
 
 
-def test_slave_disable_aborts_camming_master_disable_does_not():
+def test_s7_1500_slave_disable_aborts_camming_master_disable_does_not():
     h = Camming()
     h.move(100.0)
     h.cam_in(SyncProfileReference=2, ApplicationMode=1)
@@ -447,7 +447,7 @@ def test_slave_disable_aborts_camming_master_disable_does_not():
     h.check_log()
 
 
-def test_dynamic_limits_not_applied_in_camming_but_flagged():
+def test_s7_1500_dynamic_limits_not_applied_in_camming_but_flagged():
     """§5.5: during synchronous motion limited only by the drive's MaxSpeed; exceeding configured
     limits is shown in StatusSynchronizedMotion.StatusWord X0..X2."""
     steep = [(0, 0), (180, 1800), (360, 0)]
@@ -463,7 +463,7 @@ def test_dynamic_limits_not_applied_in_camming_but_flagged():
     assert h.ci[0].InSync
 
 
-def test_cyclic_end_of_profile_each_cycle_at_least_one_call():
+def test_s7_1500_cyclic_end_of_profile_each_cycle_at_least_one_call():
     h = Camming()
     h.cam_in(SyncProfileReference=2, ApplicationMode=1)
     h.move(720.0, settle=False)

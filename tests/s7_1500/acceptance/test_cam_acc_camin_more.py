@@ -1,4 +1,4 @@
-"""More MC_CamIn edge cases from the manual (§5.3, §5.4.1, §5.4.3, §5.4.4, §5.5)."""
+"""More MC_CamIn edge cases from the manual (S7-1500T V5 §5.3, §5.4.1, §5.4.3, §5.4.4, §5.5)."""
 import pytest
 
 from _cam_h import HUMP, Camming, flin
@@ -6,7 +6,7 @@ from _cam_h import HUMP, Camming, flin
 RAMP = [(0, 0), (180, 50), (360, 100)]
 
 
-def test_spr2_once_msp_end_at_standstill_then_negative_runs_whole_cam():
+def test_s7_1500_spr2_once_msp_end_at_standstill_then_negative_runs_whole_cam():
     """Mirror case of the MSP=0 defect: synchronous at the cam end, then run in the negative direction:
     the whole cam should be run until the start point (§5.3)."""
     h = Camming()
@@ -15,7 +15,7 @@ def test_spr2_once_msp_end_at_standstill_then_negative_runs_whole_cam():
     assert h.ci[0].InSync and h.ci[0].Busy, "ended at once at the cam end point"
 
 
-def test_spr2_once_msp0_master_already_moving():
+def test_s7_1500_spr2_once_msp0_master_already_moving():
     h = Camming()
     h.move(360.0)
     m0 = h.m
@@ -25,14 +25,14 @@ def test_spr2_once_msp0_master_already_moving():
     assert h.m - mo >= 360.0 - 1e-6, f"ended after {h.m - mo:.2f} of 360"
 
 
-def test_spr2_once_msp_mid_at_standstill():
+def test_s7_1500_spr2_once_msp_mid_at_standstill():
     h = Camming()
     h.cam_in(SyncProfileReference=2, MasterSyncPosition=100.0, ApplicationMode=0)
     h.run(0.2)
     assert h.ci[0].InSync and h.ci[0].Busy
 
 
-def test_spr4_once_master_outside_cam_definition():
+def test_s7_1500_spr4_once_master_outside_cam_definition():
     """§5.4.3: with SPR 3 and 4 'the values must each be within the definition of the cam'.
     SPR 4 synchronizes from the present master position; with ApplicationMode 0 and the present position
     outside the (offset) cam, the job should be rejected."""
@@ -43,7 +43,7 @@ def test_spr4_once_master_outside_cam_definition():
     assert ci.Error and ci.ErrorID != 0, dict(Busy=ci.Busy, StartSync=ci.StartSync, InSync=ci.InSync)
 
 
-def test_spr0_master_at_sync_position_must_cross_start_first():
+def test_s7_1500_spr0_master_at_sync_position_must_cross_start_first():
     """§5.4.1: if the leading axis is in its synchronous position at job start it must first cross the
     start position: a linear master standing at SyncPos that then moves on does not synchronize."""
     h = Camming()
@@ -55,7 +55,7 @@ def test_spr0_master_at_sync_position_must_cross_start_first():
     assert h.rig.slave.StatusSynchronizedMotion.WaitingFunctionState == 3
 
 
-def test_appending_with_master_scaling():
+def test_s7_1500_appending_with_master_scaling():
     h = Camming(cams={"Cam": RAMP})
     h.cam_in(SyncProfileReference=2, MasterSyncPosition=0.0, ApplicationMode=2, MasterScaling=0.5)
     mo = h.rig.slave.StatusSynchronizedMotion.MasterOffset
@@ -70,7 +70,7 @@ def test_appending_with_master_scaling():
     h.check_log()
 
 
-def test_dynamic_limit_flags_acceleration():
+def test_s7_1500_dynamic_limit_flags_acceleration():
     """§5.5: exceeding the configured acceleration in camming is shown (StatusSynchronizedMotion X1/X2)."""
     h = Camming(cams={"Cam": [(0, 0), (10, 0), (20, 500), (30, 0), (360, 0)]}, mode=1)
     h.cam_in(SyncProfileReference=2, ApplicationMode=1)
@@ -86,7 +86,7 @@ def test_dynamic_limit_flags_acceleration():
     assert seen >= {1, 2}, seen
 
 
-def test_camin_slave_not_enabled_rejected():
+def test_s7_1500_camin_slave_not_enabled_rejected():
     h = Camming()
     h.rig.enable[h.rig.slave.name] = False
     h.run(0.05)
@@ -95,7 +95,7 @@ def test_camin_slave_not_enabled_rejected():
     h.check_log()
 
 
-def test_once_master_reverses_before_end_ends_at_start():
+def test_s7_1500_once_master_reverses_before_end_ends_at_start():
     """§5.3: non-cyclic, run in the negative direction -> ends at the cam start point."""
     h = Camming()
     h.cam_in(SyncProfileReference=2, MasterSyncPosition=100.0, ApplicationMode=0)
@@ -110,14 +110,14 @@ def test_once_master_reverses_before_end_ends_at_start():
     assert h.s == pytest.approx(so + flin(HUMP, 0.0), abs=1e-6)
 
 
-def test_spr2_master_and_slave_offset_not_relevant():
+def test_s7_1500_spr2_master_and_slave_offset_not_relevant():
     """§9.1.5: MasterOffset/SlaveOffset 'When SyncProfileReference = 2: Not relevant' -> not checked."""
     h = Camming()
     h.cam_in(SyncProfileReference=2, ApplicationMode=1, MasterOffset=5.0e12, SlaveOffset=float("nan"))
     assert not h.ci[0].Error and h.ci[0].InSync, hex(h.ci[0].ErrorID)
 
 
-def test_irrelevant_inputs_for_spr2_not_checked_start_distance():
+def test_s7_1500_irrelevant_inputs_for_spr2_not_checked_start_distance():
     h = Camming()
     h.cam_in(SyncProfileReference=2, ApplicationMode=1, MasterStartDistance=-5.0, Velocity=0.0)
     assert not h.ci[0].Error and h.ci[0].InSync

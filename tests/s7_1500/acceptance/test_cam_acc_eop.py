@@ -14,14 +14,14 @@ def _first_pulse_vs_insync(spr, **inp):
     return pulses
 
 
-def test_cyclic_spr1_no_end_of_profile_at_sync_position():
+def test_s7_1500_cyclic_spr1_no_end_of_profile_at_sync_position():
     """Synchronizing in advance onto the cam start (MSP 0): the first EndOfProfile belongs to the cam end
     (master at MasterOffset + 360), not to the synchronous position at the cam start."""
     pulses = _first_pulse_vs_insync(1, MasterStartDistance=100.0, MasterSyncPosition=0.0)
     assert pulses and pulses[0] >= 360.0 - 1e-6, f"EndOfProfile at cam position {pulses[0]:.2f}"
 
 
-def test_cyclic_spr0_no_end_of_profile_at_sync_position():
+def test_s7_1500_cyclic_spr0_no_end_of_profile_at_sync_position():
     pulses = _first_pulse_vs_insync(0, MasterSyncPosition=0.0, Velocity=2000.0, Acceleration=20000.0,
                                     Deceleration=20000.0)
     assert pulses and pulses[0] >= 360.0 - 1e-6, f"EndOfProfile at cam position {pulses[0]:.2f}"

@@ -6,7 +6,7 @@ from _s7_1500_rig import ROTARY, VIRTUAL, merge, modulo
 from _cam_h import HUMP, Camming, flin
 
 
-def test_cyclic_cam_on_modulo_master_spr1():
+def test_s7_1500_cyclic_cam_on_modulo_master_spr1():
     h = Camming(master_params=merge(VIRTUAL, ROTARY, modulo(360.0)))
     h.move(360.0)
     h.cam_in(MasterOffset=0.0, MasterSyncPosition=0.0, MasterStartDistance=90.0, SyncProfileReference=1,
@@ -20,7 +20,7 @@ def test_cyclic_cam_on_modulo_master_spr1():
     h.check_log()
 
 
-def test_once_cam_on_modulo_master_ends_after_one_revolution():
+def test_s7_1500_once_cam_on_modulo_master_ends_after_one_revolution():
     h = Camming(master_params=merge(VIRTUAL, ROTARY, modulo(360.0)))
     h.move(360.0)
     h.cam_in(MasterOffset=0.0, MasterSyncPosition=0.0, MasterStartDistance=90.0, SyncProfileReference=1,

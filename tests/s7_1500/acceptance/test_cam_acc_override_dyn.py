@@ -5,7 +5,7 @@ from plcmotion.s7_1500 import MC_Halt
 from _cam_h import Camming
 
 
-def test_halt_from_fast_camming_is_smooth():
+def test_s7_1500_halt_from_fast_camming_is_smooth():
     steep = [(0, 0), (180, 1800), (360, 0)]
     h = Camming(cams={"Cam": steep})
     halt = MC_Halt()

@@ -1,4 +1,4 @@
-"""Rejected jobs (§9.1.1.1, §9.1.2.1, §9.1.3.1, §9.1.4.1 parameter tables and requirements): Error TRUE,
+"""Rejected jobs (S7-1500T V5 §9.1.1.1, §9.1.2.1, §9.1.3.1, §9.1.4.1 parameter tables and requirements): Error TRUE,
 ErrorID != 0, Busy FALSE, no motion, the running synchronous operation continues."""
 import math
 import pytest
@@ -38,7 +38,7 @@ def _rejected(fb, code=None):
     ({"Deceleration": math.inf}, 0x8105),
     ({"Jerk": math.nan}, 0x8106),
 ])
-def test_gear_in_invalid_inputs(inp, code):
+def test_s7_1500_gear_in_invalid_inputs(inp, code):
     h = H()
     fb = MC_GearIn()
     _start(h, fb, **inp)
@@ -46,7 +46,7 @@ def test_gear_in_invalid_inputs(inp, code):
     assert h.s.StatusSynchronizedMotion.FunctionState == 0
 
 
-def test_gear_in_jerk_zero_is_trapezoid_not_error():
+def test_s7_1500_gear_in_jerk_zero_is_trapezoid_not_error():
     h = H()
     h.move_master(50.0)
     fb = MC_GearIn()
@@ -55,7 +55,7 @@ def test_gear_in_jerk_zero_is_trapezoid_not_error():
     h.until(lambda: fb.InGear, 2.0)
 
 
-def test_gear_in_negative_dynamics_use_defaults_no_error():
+def test_s7_1500_gear_in_negative_dynamics_use_defaults_no_error():
     h = H()
     fb = MC_GearIn()
     _start(h, fb, Acceleration=-5.0, Deceleration=-1.0, Jerk=-3.0)
@@ -77,7 +77,7 @@ def test_gear_in_negative_dynamics_use_defaults_no_error():
     ({"SyncProfileReference": 0, "Acceleration": 0.0}, 0x8104),
     ({"SyncProfileReference": 0, "Deceleration": 0.0}, 0x8105),
 ])
-def test_gear_in_pos_invalid_inputs(inp, code):
+def test_s7_1500_gear_in_pos_invalid_inputs(inp, code):
     h = H()
     fb = MC_GearInPos()
     base = dict(MasterSyncPosition=500.0, SlaveSyncPosition=0.0, MasterStartDistance=100.0)
@@ -89,7 +89,7 @@ def test_gear_in_pos_invalid_inputs(inp, code):
 
 
 @pytest.mark.parametrize("direction", [0, 4, -1])
-def test_gear_in_pos_invalid_sync_direction_on_modulo_axes(direction):
+def test_s7_1500_gear_in_pos_invalid_sync_direction_on_modulo_axes(direction):
     """§9.1.2.1: SyncDirection 1, 2, 3 with modulo axes; another value is rejected (16#8111)."""
     h = H(mp=merge(VIRTUAL, modulo()), sp=merge(VIRTUAL, modulo()))
     fb = MC_GearInPos()
@@ -98,7 +98,7 @@ def test_gear_in_pos_invalid_sync_direction_on_modulo_axes(direction):
     _rejected(fb, 0x8111)
 
 
-def test_gear_in_pos_sync_direction_not_read_between_linear_axes():
+def test_s7_1500_gear_in_pos_sync_direction_not_read_between_linear_axes():
     """§9.1.2.1: SyncDirection is in effect for axes with the modulo setting only."""
     h = H()
     fb = MC_GearInPos()
@@ -107,7 +107,7 @@ def test_gear_in_pos_sync_direction_not_read_between_linear_axes():
 
 
 @pytest.mark.parametrize("spr", [1, 3])
-def test_gear_in_pos_dynamics_not_relevant_for_spr_1_3(spr):
+def test_s7_1500_gear_in_pos_dynamics_not_relevant_for_spr_1_3(spr):
     """§9.1.2.1: Velocity/Acceleration/Deceleration/Jerk 'not relevant' with SPR 1, 3: 0.0 must not be rejected."""
     h = H()
     fb = MC_GearInPos()
@@ -116,14 +116,14 @@ def test_gear_in_pos_dynamics_not_relevant_for_spr_1_3(spr):
     assert fb.Busy and not fb.Error, hex(fb.ErrorID)
 
 
-def test_gear_in_pos_start_distance_not_relevant_for_spr_0():
+def test_s7_1500_gear_in_pos_start_distance_not_relevant_for_spr_0():
     h = H()
     fb = MC_GearInPos()
     _start(h, fb, SyncProfileReference=0, MasterSyncPosition=500.0, MasterStartDistance=-5.0)
     assert fb.Busy and not fb.Error, hex(fb.ErrorID)
 
 
-def test_gear_in_pos_spr1_master_too_close():
+def test_s7_1500_gear_in_pos_spr1_master_too_close():
     """§9.1.2.1 requirement: SPR 1 needs the master >= MasterStartDistance from MasterSyncPosition."""
     h = H()
     fb = MC_GearInPos()
@@ -131,7 +131,7 @@ def test_gear_in_pos_spr1_master_too_close():
     _rejected(fb)
 
 
-def test_gear_in_pos_spr1_master_too_close_moving_negative():
+def test_s7_1500_gear_in_pos_spr1_master_too_close_moving_negative():
     h = H()
     h.move_master(-100.0)
     fb = MC_GearInPos()
@@ -140,7 +140,7 @@ def test_gear_in_pos_spr1_master_too_close_moving_negative():
     _rejected(fb)
 
 
-def test_slave_not_enabled():
+def test_s7_1500_slave_not_enabled():
     h = H()
     h.en["S1"] = False
     fb = MC_GearIn()
@@ -152,7 +152,7 @@ def test_slave_not_enabled():
     _rejected(fb, 0x8201)
 
 
-def test_gear_in_pos_slave_not_enabled():
+def test_s7_1500_gear_in_pos_slave_not_enabled():
     h = H()
     h.en["S1"] = False
     fb = MC_GearInPos()
@@ -164,7 +164,7 @@ def test_gear_in_pos_slave_not_enabled():
     _rejected(fb, 0x8201)
 
 
-def test_master_not_configured_as_leading_value():
+def test_s7_1500_master_not_configured_as_leading_value():
     """§4.6: ErrorWord.X14 SynchronousError: the leading axis given is not configured as possible leading axis."""
     h = H(masters=2, leading=["M1"])
     fb = MC_GearIn()
@@ -178,7 +178,7 @@ def test_master_not_configured_as_leading_value():
 
 
 @pytest.mark.parametrize("which", ["slave_positioning", "master_cam", "master_none", "slave_is_master"])
-def test_wrong_technology_objects(which):
+def test_s7_1500_wrong_technology_objects(which):
     h = H()
     fb = MC_GearIn()
     cam = h.ctl.add_cam("C", points=[(0, 0), (360, 10)], interpolation_mode=1)
@@ -198,14 +198,14 @@ def test_wrong_technology_objects(which):
     _rejected(fb)
 
 
-def test_gear_in_pos_needs_t_family():
+def test_s7_1500_gear_in_pos_needs_t_family():
     h = H(family="S7-1500")
     fb = MC_GearInPos()
     _start(h, fb, MasterSyncPosition=500.0, MasterStartDistance=100.0)
     _rejected(fb, 0x8302)
 
 
-def test_gear_in_works_on_s7_1500_non_t():
+def test_s7_1500_gear_in_works_on_s7_1500_non_t():
     h = H(family="S7-1500")
     h.move_master(50.0)
     fb = MC_GearIn()
@@ -215,7 +215,7 @@ def test_gear_in_works_on_s7_1500_non_t():
 
 
 @pytest.mark.parametrize("cls", [MC_PhasingRelative, MC_PhasingAbsolute])
-def test_phasing_needs_t_family(cls):
+def test_s7_1500_phasing_needs_t_family(cls):
     """§2.2 / §9.1.3, §9.1.4: MC_PhasingRelative/Absolute are S7-1500T functions; on an S7-1500 with a
     synchronous MC_GearIn they must be rejected."""
     h = H(family="S7-1500")
@@ -232,7 +232,7 @@ def test_phasing_needs_t_family(cls):
 @pytest.mark.parametrize("cls", [MC_PhasingRelative, MC_PhasingAbsolute])
 @pytest.mark.parametrize("inp,code", [({"Velocity": 0.0}, 0x8103), ({"Acceleration": 0.0}, 0x8104),
                                       ({"Deceleration": 0.0}, 0x8105), ({"PhaseShift": math.nan}, 0x8117)])
-def test_phasing_invalid_inputs_keep_gearing(cls, inp, code):
+def test_s7_1500_phasing_invalid_inputs_keep_gearing(cls, inp, code):
     h = H()
     h.move_master(50.0)
     g = MC_GearIn()
@@ -246,7 +246,7 @@ def test_phasing_invalid_inputs_keep_gearing(cls, inp, code):
     assert h.s.StatusSynchronizedMotion.PhaseShift == 0.0
 
 
-def test_phasing_while_gear_in_pos_only_synchronizing_rejected():
+def test_s7_1500_phasing_while_gear_in_pos_only_synchronizing_rejected():
     """§9.1.3.1 requirement: InSync must be TRUE; during synchronization (StartSync only) the job is rejected."""
     h = H()
     h.move_master(100.0)
@@ -262,7 +262,7 @@ def test_phasing_while_gear_in_pos_only_synchronizing_rejected():
     assert g.Busy and not g.CommandAborted
 
 
-def test_phasing_with_other_master_rejected():
+def test_s7_1500_phasing_with_other_master_rejected():
     h = H(masters=2)
     h.move_master(50.0)
     g = MC_GearIn()
@@ -274,7 +274,7 @@ def test_phasing_with_other_master_rejected():
     assert g.InGear
 
 
-def test_phasing_with_camming_rejected():
+def test_s7_1500_phasing_with_camming_rejected():
     """§4.5 / catalog 2.5: phasing not available for camming."""
     from plcmotion.s7_1500 import MC_CamIn, MC_InterpolateCam
     h = H()
@@ -292,7 +292,7 @@ def test_phasing_with_camming_rejected():
     _rejected(ph)
 
 
-def test_new_rejected_gear_in_does_not_abort_running_gearing():
+def test_s7_1500_new_rejected_gear_in_does_not_abort_running_gearing():
     h = H()
     h.move_master(50.0)
     g = MC_GearIn()
@@ -305,7 +305,7 @@ def test_new_rejected_gear_in_does_not_abort_running_gearing():
     assert g.InGear and g.Busy and not g.CommandAborted
 
 
-def test_new_rejected_gear_in_pos_does_not_abort_running_gearing():
+def test_s7_1500_new_rejected_gear_in_pos_does_not_abort_running_gearing():
     h = H()
     h.move_master(50.0)
     g = MC_GearIn()
@@ -318,7 +318,7 @@ def test_new_rejected_gear_in_pos_does_not_abort_running_gearing():
     assert g.InGear and g.Busy and not g.CommandAborted
 
 
-def test_after_unconfigured_master_error_a_valid_gear_in_is_possible_after_reset():
+def test_s7_1500_after_unconfigured_master_error_a_valid_gear_in_is_possible_after_reset():
     from plcmotion.s7_1500 import MC_Reset
     h = H(masters=2, leading=["M1"])
     h.move_master(50.0)
@@ -341,7 +341,7 @@ def test_after_unconfigured_master_error_a_valid_gear_in_is_possible_after_reset
     assert good.InGear
 
 
-def test_master_disable_keeps_waiting_gear_in_pos():
+def test_s7_1500_master_disable_keeps_waiting_gear_in_pos():
     h = H()
     h.move_master(100.0)
     g = MC_GearInPos()

@@ -1,10 +1,10 @@
-"""More gearing corner cases from the manual text."""
+"""More gearing corner cases from the text of the S7-1500T V5 manual."""
 import pytest
 from plcmotion.s7_1500 import MC_GearIn, MC_GearInPos, MC_Halt, MC_Home, MC_PhasingRelative
 from _gear_h import H, VIRTUAL, merge, modulo
 
 
-def test_cascade_master_slave_slave():
+def test_s7_1500_cascade_master_slave_slave():
     """§9.1.1.1: the leading axis may be a synchronous axis."""
     from plcmotion import Controller
     from plcmotion.s7_1500 import MC_Power, MC_MoveVelocity
@@ -34,7 +34,7 @@ def test_cascade_master_slave_slave():
     assert g1.InGear and g2.InGear
 
 
-def test_spr3_master_standing_at_master_sync_position():
+def test_s7_1500_spr3_master_standing_at_master_sync_position():
     """§4.3.4: 'Synchronization begins as soon as the leading value has reached the synchronous position'."""
     h = H()
     g = MC_GearInPos()
@@ -50,7 +50,7 @@ def test_spr3_master_standing_at_master_sync_position():
     assert h.s.Position == pytest.approx(h.m.Position, abs=1e-6)
 
 
-def test_master_modulo_start_distance_larger_than_modulo_length():
+def test_s7_1500_master_modulo_start_distance_larger_than_modulo_length():
     h = H(mp=merge(VIRTUAL, modulo(360.0)))
     h.move_master(200.0)
     g = MC_GearInPos()
@@ -68,7 +68,7 @@ def test_master_modulo_start_distance_larger_than_modulo_length():
     assert sy[2] == pytest.approx(sy[1] - 100.0, abs=1e-6)
 
 
-def test_sync_direction_ignored_on_linear_slave():
+def test_s7_1500_sync_direction_ignored_on_linear_slave():
     """SyncDirection is 'in effect for axes with activated Modulo setting' only."""
     h = H()
     hm = MC_Home()
@@ -83,7 +83,7 @@ def test_sync_direction_ignored_on_linear_slave():
     assert g.InSync and h.s.Position == pytest.approx(h.m.Position - (p + 200.0), abs=0.5)
 
 
-def test_sync_status_bits_cleared_after_override():
+def test_s7_1500_sync_status_bits_cleared_after_override():
     h = H(sp=merge(VIRTUAL, {"DynamicLimits": {"MaxVelocity": 150.0, "Velocity": 150.0},
                              "DynamicDefaults": {"Velocity": 100.0}}))
     h.move_master(100.0)
@@ -97,7 +97,7 @@ def test_sync_status_bits_cleared_after_override():
     assert int(h.s.StatusSynchronizedMotion.StatusWord) & 0b111 == 0
 
 
-def test_phasing_jerk_limited_extra_dynamics():
+def test_s7_1500_phasing_jerk_limited_extra_dynamics():
     h = H()
     h.move_master(100.0)
     g = MC_GearIn()
@@ -115,7 +115,7 @@ def test_phasing_jerk_limited_extra_dynamics():
 
 
 @pytest.mark.parametrize("num", [1, -2])
-def test_gear_in_modulo_master_wrap_no_jump(num):
+def test_s7_1500_gear_in_modulo_master_wrap_no_jump(num):
     h = H(mp=merge(VIRTUAL, modulo(360.0)))
     h.move_master(300.0)
     g = MC_GearIn()

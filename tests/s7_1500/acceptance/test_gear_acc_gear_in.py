@@ -1,4 +1,4 @@
-"""MC_GearIn (§4.1, §4.3.1, §4.4.1, §9.1.1): outputs and status tags over time, synchronous criterion,
+"""MC_GearIn (S7-1500T V5 §4.1, §4.3.1, §4.4.1, §9.1.1): outputs and status tags over time, synchronous criterion,
 overrides, dynamic limits, master reversal."""
 import pytest
 from plcmotion.s7_1500 import MC_GearIn, MC_Halt, MC_MoveVelocity, MC_MoveRelative, MC_MoveSuperimposed
@@ -23,7 +23,7 @@ def _gear(h, **inp):
     return fb, d
 
 
-def test_gear_in_outputs_and_tags_timeline():
+def test_s7_1500_gear_in_outputs_and_tags_timeline():
     h = H()
     h.move_master(100.0)
     fb, d = _gear(h, RatioNumerator=3, RatioDenominator=2, Acceleration=500.0, Deceleration=500.0, Jerk=1e4)
@@ -47,7 +47,7 @@ def test_gear_in_outputs_and_tags_timeline():
         assert r["s"] - 1.5 * r["m"] == pytest.approx(c0, abs=1e-6)
 
 
-def test_gear_in_synchronizing_respects_job_acceleration():
+def test_s7_1500_gear_in_synchronizing_respects_job_acceleration():
     """§4.3.1/§4.4.1: during synchronization the following axis moves with the job's dynamics (master at
     constant velocity, so the slave's acceleration is the synchronizing part only)."""
     h = H()
@@ -63,7 +63,7 @@ def test_gear_in_synchronizing_respects_job_acceleration():
     assert t1 - t0 == pytest.approx(0.5, abs=0.02)
 
 
-def test_gear_in_in_acceleration_phase_needs_ratio_times_acceleration():
+def test_s7_1500_gear_in_in_acceleration_phase_needs_ratio_times_acceleration():
     """§4.1: synchronous when velocity AND acceleration of the leading axis times the ratio are reached."""
     h = H()
     mv = MC_MoveVelocity()
@@ -79,7 +79,7 @@ def test_gear_in_in_acceleration_phase_needs_ratio_times_acceleration():
     assert r["sa"] == pytest.approx(200.0, abs=1e-6)
 
 
-def test_gear_in_master_at_standstill():
+def test_s7_1500_gear_in_master_at_standstill():
     h = H()
     fb, d = _gear(h)
     h.until(h.enabled, 1.0)
@@ -88,7 +88,7 @@ def test_gear_in_master_at_standstill():
     assert fb.Busy and h.s.StatusWord.X22
 
 
-def test_gear_in_negative_ratio():
+def test_s7_1500_gear_in_negative_ratio():
     h = H()
     h.move_master(100.0)
     fb, d = _gear(h, RatioNumerator=-1, RatioDenominator=4)
@@ -98,7 +98,7 @@ def test_gear_in_negative_ratio():
     assert h.s.Velocity == pytest.approx(-25.0, abs=1e-6)
 
 
-def test_gear_in_follows_master_reversal_and_stays_in_gear():
+def test_s7_1500_gear_in_follows_master_reversal_and_stays_in_gear():
     h = H()
     mv, inp = h.move_master(100.0)
     fb, d = _gear(h, RatioNumerator=2)
@@ -118,7 +118,7 @@ def test_gear_in_follows_master_reversal_and_stays_in_gear():
     assert max(c) - min(c) < 1e-6
 
 
-def test_gear_in_ratio_change_on_same_master_with_second_instance():
+def test_s7_1500_gear_in_ratio_change_on_same_master_with_second_instance():
     """§9.3.2: MC_GearIn aborts an active MC_GearIn; the new ratio is reached by synchronizing (no jump)."""
     h = H()
     h.move_master(100.0)
@@ -139,7 +139,7 @@ def test_gear_in_ratio_change_on_same_master_with_second_instance():
     assert max(abs(b - a) for a, b in zip(sv, sv[1:])) <= 500.0 * 0.004 + 1e-6   # no velocity step
 
 
-def test_gear_in_ratio_change_same_instance_retrigger():
+def test_s7_1500_gear_in_ratio_change_same_instance_retrigger():
     h = H()
     h.move_master(100.0)
     fb, d = _gear(h, RatioNumerator=1, Acceleration=500.0, Deceleration=500.0, Jerk=0.0)
@@ -156,7 +156,7 @@ def test_gear_in_ratio_change_same_instance_retrigger():
 
 
 @pytest.mark.parametrize("kind", ["halt", "move_velocity", "move_relative"])
-def test_single_axis_job_aborts_gear_in(kind):
+def test_s7_1500_single_axis_job_aborts_gear_in(kind):
     h = H()
     h.move_master(100.0)
     fb, d = _gear(h, RatioNumerator=2)
@@ -187,7 +187,7 @@ def test_single_axis_job_aborts_gear_in(kind):
     h.until(lambda: getattr(new, "InVelocity", False) or getattr(new, "Done", False), 5.0)
 
 
-def test_superimposed_does_not_abort_gear_in():
+def test_s7_1500_superimposed_does_not_abort_gear_in():
     h = H()
     h.move_master(100.0)
     fb, d = _gear(h)
@@ -200,7 +200,7 @@ def test_superimposed_does_not_abort_gear_in():
     assert fb.InGear and fb.Busy and not fb.CommandAborted
 
 
-def test_gear_in_synchronous_exceeds_configured_limits_warns_not_errors():
+def test_s7_1500_gear_in_synchronous_exceeds_configured_limits_warns_not_errors():
     """§4.4.1: in synchronous motion only Actor.DriveParameter.MaxSpeed limits; exceeding the configured
     MaxVelocity is shown in StatusSynchronizedMotion.StatusWord.X0, no error."""
     h = H(sp=merge(VIRTUAL, {"DynamicLimits": {"MaxVelocity": 200.0, "Velocity": 200.0}}))
@@ -215,7 +215,7 @@ def test_gear_in_synchronous_exceeds_configured_limits_warns_not_errors():
     assert h.s.ErrorWord == 0 and not h.s.StatusWord.X1
 
 
-def test_gear_in_acceleration_above_limit_is_limited_not_rejected():
+def test_s7_1500_gear_in_acceleration_above_limit_is_limited_not_rejected():
     """§4.4.1: 'During the synchronizing phase, dynamic limits configured for the technology object apply to
     the following axis.'  §A DynamicLimits: greater values given at an instruction -> motion with the limits
     and a warning (alarms 501-503, WarningWord.X6 DynamicWarning)."""
@@ -232,7 +232,7 @@ def test_gear_in_acceleration_above_limit_is_limited_not_rejected():
     assert warned, "WarningWord.X6 (DynamicWarning) not set"
 
 
-def test_gear_in_dynamic_warning_when_acceleration_above_limit():
+def test_s7_1500_gear_in_dynamic_warning_when_acceleration_above_limit():
     h = H(sp=merge(VIRTUAL, {"DynamicLimits": {"MaxAcceleration": 300.0, "MaxDeceleration": 300.0}}))
     h.move_master(100.0)
     fb, d = _gear(h, Acceleration=5000.0, Deceleration=5000.0, Jerk=0.0)
@@ -241,7 +241,7 @@ def test_gear_in_dynamic_warning_when_acceleration_above_limit():
     assert h.s.WarningWord.X6, "WarningWord.X6 (DynamicWarning) not set"
 
 
-def test_disable_slave_aborts_gear_in_with_command_aborted():
+def test_s7_1500_disable_slave_aborts_gear_in_with_command_aborted():
     h = H()
     h.move_master(100.0)
     fb, d = _gear(h)
@@ -253,7 +253,7 @@ def test_disable_slave_aborts_gear_in_with_command_aborted():
     assert h.s.StatusSynchronizedMotion.FunctionState == 0
 
 
-def test_disable_master_keeps_gear_in_during_braking_ramp():
+def test_s7_1500_disable_master_keeps_gear_in_during_braking_ramp():
     h = H()
     h.move_master(100.0)
     fb, d = _gear(h, RatioNumerator=2)

@@ -1,4 +1,4 @@
-"""MC_GearInPos (§4.2, §4.3.2–§4.3.4, §4.4.2, §9.1.2): waiting / synchronizing / synchronous states,
+"""MC_GearInPos (S7-1500T V5 §4.2, §4.3.2–§4.3.4, §4.4.2, §9.1.2): waiting / synchronizing / synchronous states,
 exact synchronism at the synchronous positions, directions, modulo, overrides."""
 import pytest
 from plcmotion.s7_1500 import MC_GearIn, MC_GearInPos, MC_Home, MC_MoveVelocity, MC_Halt
@@ -53,7 +53,7 @@ def _check_states(h, start_at, sync_at, direction, law):
 
 @pytest.mark.parametrize("num,den", [(1, 1), (-3, 2), (2, 5)])
 @pytest.mark.parametrize("direction", [1.0, -1.0])
-def test_spr1_in_advance_leading_value_distance(num, den, direction):
+def test_s7_1500_spr1_in_advance_leading_value_distance(num, den, direction):
     h = H()
     h.move_master(100.0 * direction)
     p0 = h.m.Position
@@ -72,7 +72,7 @@ def test_spr1_in_advance_leading_value_distance(num, den, direction):
 
 @pytest.mark.parametrize("num,den", [(1, 1), (-1, 3)])
 @pytest.mark.parametrize("direction", [1.0, -1.0])
-def test_spr3_subsequent_leading_value_distance(num, den, direction):
+def test_s7_1500_spr3_subsequent_leading_value_distance(num, den, direction):
     h = H()
     h.move_master(100.0 * direction)
     p0 = h.m.Position
@@ -87,7 +87,7 @@ def test_spr3_subsequent_leading_value_distance(num, den, direction):
 
 @pytest.mark.parametrize("num,den", [(1, 1), (-2, 1)])
 @pytest.mark.parametrize("direction", [1.0, -1.0])
-def test_spr0_in_advance_dynamic_parameters(num, den, direction):
+def test_s7_1500_spr0_in_advance_dynamic_parameters(num, den, direction):
     h = H()
     h.move_master(100.0 * direction)
     p0 = h.m.Position
@@ -108,7 +108,7 @@ def test_spr0_in_advance_dynamic_parameters(num, den, direction):
     assert max(abs(r["sa"]) for r in syncing) <= 800.0 + 1e-6
 
 
-def test_spr1_master_reverses_during_synchronization():
+def test_s7_1500_spr1_master_reverses_during_synchronization():
     """§4.3.3: master dynamics are superimposed 'in accordance with the synchronous operation function'; the
     leading value may reverse (catalog erratum 1): the profile is a function of the leading value."""
     h = H()
@@ -140,7 +140,7 @@ def test_spr1_master_reverses_during_synchronization():
     assert first_sync["s"] == pytest.approx(ssp + first_sync["m"] - msp, abs=1e-6)
 
 
-def test_waiting_gear_in_pos_while_gear_in_active():
+def test_s7_1500_waiting_gear_in_pos_while_gear_in_active():
     """§9.3.2: a waiting GearInPos aborts nothing; when it becomes active it aborts the GearIn.
     §4.6: FunctionState shows the active function, WaitingFunctionState the waiting one."""
     h = H()
@@ -166,7 +166,7 @@ def test_waiting_gear_in_pos_while_gear_in_active():
     assert h.s.Position == pytest.approx(0.0 + (h.m.Position - (p0 + 200.0)), abs=1e-6)
 
 
-def test_second_waiting_job_aborts_first_waiting_job():
+def test_s7_1500_second_waiting_job_aborts_first_waiting_job():
     h = H()
     h.move_master(100.0)
     p0 = h.m.Position
@@ -183,7 +183,7 @@ def test_second_waiting_job_aborts_first_waiting_job():
     h.until(lambda: a2.InSync, 8.0)
 
 
-def test_disable_slave_aborts_waiting_gear_in_pos():
+def test_s7_1500_disable_slave_aborts_waiting_gear_in_pos():
     """§9.1.2.1 / §9.3.2 note 1: MC_Power.Enable = FALSE aborts the synchronous operation in every status
     (table legend A: CommandAborted)."""
     h = H()
@@ -198,7 +198,7 @@ def test_disable_slave_aborts_waiting_gear_in_pos():
     assert h.s.StatusSynchronizedMotion.WaitingFunctionState == 0
 
 
-def test_disable_slave_aborts_synchronizing_gear_in_pos():
+def test_s7_1500_disable_slave_aborts_synchronizing_gear_in_pos():
     h = H()
     h.move_master(100.0)
     p0 = h.m.Position
@@ -210,7 +210,7 @@ def test_disable_slave_aborts_synchronizing_gear_in_pos():
     assert not fb.Busy and fb.CommandAborted and not fb.StartSync and not fb.InSync
 
 
-def test_halt_does_not_abort_waiting_but_aborts_active():
+def test_s7_1500_halt_does_not_abort_waiting_but_aborts_active():
     h = H()
     h.move_master(100.0)
     p0 = h.m.Position
@@ -230,7 +230,7 @@ def test_halt_does_not_abort_waiting_but_aborts_active():
     assert h.s.StatusSynchronizedMotion.FunctionState == 0
 
 
-def test_synchronization_exceeding_limits_only_flags():
+def test_s7_1500_synchronization_exceeding_limits_only_flags():
     """§4.4.2: during synchronization/synchronous motion only MaxSpeed limits; exceeding the configured limits
     is shown in StatusSynchronizedMotion.StatusWord, no error."""
     h = H(sp=merge(VIRTUAL, {"DynamicLimits": {"MaxAcceleration": 50.0, "MaxDeceleration": 50.0}}))
@@ -247,7 +247,7 @@ def test_synchronization_exceeding_limits_only_flags():
 
 @pytest.mark.parametrize("sync_direction,num", [(1, 1), (2, -1), (3, 1), (3, -1)])
 @pytest.mark.parametrize("slave_start", [60.0, 350.0, 180.0])
-def test_sync_direction_modulo_following_axis(sync_direction, num, slave_start):
+def test_s7_1500_sync_direction_modulo_following_axis(sync_direction, num, slave_start):
     """§9.1.2.1 SyncDirection: 1 = the following axis may only travel in positive direction during
     synchronization; 2 = only negative; 3 = shortest (direction changes permitted)."""
     h = H(sp=merge(VIRTUAL, modulo(360.0)))
@@ -273,7 +273,7 @@ def test_sync_direction_modulo_following_axis(sync_direction, num, slave_start):
         assert max(vs) <= 1e-6, max(vs)
 
 
-def test_master_modulo_sync_position_next_occurrence():
+def test_s7_1500_master_modulo_sync_position_next_occurrence():
     h = H(mp=merge(VIRTUAL, modulo(360.0)))
     h.move_master(100.0)
     h.until(lambda: 290.0 < h.m.Position < 300.0, 5.0)
@@ -291,7 +291,7 @@ def test_master_modulo_sync_position_next_occurrence():
 
 
 @pytest.mark.parametrize("spr", [0, 1, 3])
-def test_exact_at_sync_position_with_accelerating_master(spr):
+def test_s7_1500_exact_at_sync_position_with_accelerating_master(spr):
     """§4.3.x: master dynamics changes during synchronization are superimposed; synchronism still exactly at
     the synchronous positions."""
     h = H()

@@ -1,4 +1,4 @@
-"""Monitoring during gearing (§4.4.1, §4.4.2, §6.1.5.4), other leading value sources, output latching,
+"""Monitoring during gearing (S7-1500T V5 §4.4.1, §4.4.2, §6.1.5.4), other leading value sources, output latching,
 single-axis motion before gearing."""
 import pytest
 from plcmotion.s7_1500 import MC_GearIn, MC_GearInPos, MC_Home, MC_MoveVelocity
@@ -15,7 +15,7 @@ def _homed_slave(h):
 
 
 @pytest.mark.parametrize("which", ["gear_in", "gear_in_pos"])
-def test_sw_limit_switch_monitored_during_gearing(which):
+def test_s7_1500_sw_limit_switch_monitored_during_gearing(which):
     """§4.4.1/§4.4.2: 'The SW limit switches continue to be monitored with the configured dynamic limits of the
     following axis.'  §6.1.5.4: with active SW limit switches an active motion comes to a stop at the
     position of the SW limit switch and the technology object signals an error (ErrorWord.X8)."""
@@ -36,7 +36,7 @@ def test_sw_limit_switch_monitored_during_gearing(which):
     assert not fb.Busy and (fb.Error or fb.CommandAborted)
 
 
-def test_gear_in_from_external_encoder_master():
+def test_s7_1500_gear_in_from_external_encoder_master():
     """§9.1.1.1: the leading axis may be an external encoder (actual value coupling, S7-1500T)."""
     from plcmotion import Controller
     from plcmotion.s7_1500 import MC_Power
@@ -58,7 +58,7 @@ def test_gear_in_from_external_encoder_master():
     assert s.StatusSynchronizedMotion.ActualMaster == enc.db_number
 
 
-def test_error_latched_while_execute_then_cleared():
+def test_s7_1500_error_latched_while_execute_then_cleared():
     h = H()
     fb = MC_GearIn()
     d = h.call(fb, {"Master": h.m, "Slave": h.s, "Execute": False, "RatioDenominator": 0})
@@ -71,7 +71,7 @@ def test_error_latched_while_execute_then_cleared():
     assert not fb.Error and fb.ErrorID == 0
 
 
-def test_command_aborted_pulse_when_execute_false():
+def test_s7_1500_command_aborted_pulse_when_execute_false():
     h = H()
     h.move_master(100.0)
     g = MC_GearIn()
@@ -87,7 +87,7 @@ def test_command_aborted_pulse_when_execute_false():
     assert not g.CommandAborted    # shown for exactly one call with Execute FALSE
 
 
-def test_gear_in_takes_over_running_move_velocity_smoothly():
+def test_s7_1500_gear_in_takes_over_running_move_velocity_smoothly():
     """§4.3.1: synchronization starts from the dynamics of the following axis at the start time; MC_GearIn
     aborts the running MC_MoveVelocity (§9.3.1 part 2)."""
     h = H()
@@ -111,7 +111,7 @@ def test_gear_in_takes_over_running_move_velocity_smoothly():
     assert all(not r["bad"] for r in h.rows)
 
 
-def test_gear_in_pos_spr1_from_moving_slave_exact():
+def test_s7_1500_gear_in_pos_spr1_from_moving_slave_exact():
     h = H()
     h.move_master(100.0)
     mv = MC_MoveVelocity()

@@ -1,4 +1,4 @@
-"""MC_PhasingRelative / MC_PhasingAbsolute (§4.5, §9.1.3, §9.1.4, §9.3.2)."""
+"""MC_PhasingRelative / MC_PhasingAbsolute (S7-1500T V5 §4.5, §9.1.3, §9.1.4, §9.3.2)."""
 import pytest
 from plcmotion.s7_1500 import (MC_GearIn, MC_GearInPos, MC_Halt, MC_MoveSuperimposed, MC_PhasingAbsolute,
                                MC_PhasingRelative)
@@ -42,7 +42,7 @@ def _rec(h, ph, g):
 
 
 @pytest.mark.parametrize("ratio", [1, 2, -2])
-def test_relative_dynamics_are_following_axis_dynamics_added_to_sync_motion(ratio):
+def test_s7_1500_relative_dynamics_are_following_axis_dynamics_added_to_sync_motion(ratio):
     """§9.1.3.1: Velocity/Acceleration 'of the following axis for leading value shift (added to synchronous
     operation motion)'."""
     h = H()
@@ -69,7 +69,7 @@ def test_relative_dynamics_are_following_axis_dynamics_added_to_sync_motion(rati
     assert ph.CoveredPhaseShift == pytest.approx(50.0) and g.InGear
 
 
-def test_relative_done_timing_trapezoid():
+def test_s7_1500_relative_done_timing_trapezoid():
     h = H()
     g = _geared(h)
     ph, d = _phasing(h, MC_PhasingRelative, PhaseShift=50.0, Velocity=100.0, Acceleration=1000.0,
@@ -84,7 +84,7 @@ def test_relative_done_timing_trapezoid():
     assert progs == sorted(progs) and progs[0] < 50.0
 
 
-def test_phasing_at_master_standstill_moves_following_axis():
+def test_s7_1500_phasing_at_master_standstill_moves_following_axis():
     """The shift acts on the effective leading value; with the leading axis at rest the following axis moves."""
     h = H()
     g = _geared(h, ratio=2, v=0.0)
@@ -96,7 +96,7 @@ def test_phasing_at_master_standstill_moves_following_axis():
     assert h.s.Position == pytest.approx(s0 - 60.0, abs=1e-6)
 
 
-def test_absolute_from_existing_shift():
+def test_s7_1500_absolute_from_existing_shift():
     h = H()
     g = _geared(h, pos=True)
     ph, d = _phasing(h, MC_PhasingAbsolute, PhaseShift=50.0)
@@ -118,7 +118,7 @@ def test_absolute_from_existing_shift():
     assert all(-20.0 - 1e-9 <= p <= 50.0 + 1e-9 for p in progs)
 
 
-def test_new_phasing_aborts_running_phasing():
+def test_s7_1500_new_phasing_aborts_running_phasing():
     h = H()
     g = _geared(h)
     p1, d1 = _phasing(h, MC_PhasingRelative, PhaseShift=100.0, Velocity=20.0)
@@ -139,7 +139,7 @@ def test_new_phasing_aborts_running_phasing():
     assert not h.s.StatusWord.X24
 
 
-def test_superimposed_does_not_abort_phasing():
+def test_s7_1500_superimposed_does_not_abort_phasing():
     h = H()
     g = _geared(h)
     ph, d = _phasing(h, MC_PhasingRelative, PhaseShift=50.0, Velocity=20.0)
@@ -153,7 +153,7 @@ def test_superimposed_does_not_abort_phasing():
     h.until(lambda: ph.Done, 5.0)
 
 
-def test_halt_aborts_phasing_and_gearing_and_resets_shift():
+def test_s7_1500_halt_aborts_phasing_and_gearing_and_resets_shift():
     h = H()
     g = _geared(h)
     ph, d = _phasing(h, MC_PhasingRelative, PhaseShift=100.0, Velocity=20.0)
@@ -168,7 +168,7 @@ def test_halt_aborts_phasing_and_gearing_and_resets_shift():
     assert not h.s.StatusWord.X24
 
 
-def test_new_gear_in_aborts_phasing_and_resets_shift():
+def test_s7_1500_new_gear_in_aborts_phasing_and_resets_shift():
     h = H()
     g = _geared(h)
     ph, d = _phasing(h, MC_PhasingRelative, PhaseShift=100.0, Velocity=20.0)
@@ -181,7 +181,7 @@ def test_new_gear_in_aborts_phasing_and_resets_shift():
     assert h.s.StatusSynchronizedMotion.PhaseShift == 0.0
 
 
-def test_waiting_gear_in_pos_does_not_abort_phasing_active_one_does():
+def test_s7_1500_waiting_gear_in_pos_does_not_abort_phasing_active_one_does():
     h = H()
     g = _geared(h)
     ph, d = _phasing(h, MC_PhasingRelative, PhaseShift=1000.0, Velocity=10.0)
@@ -200,7 +200,7 @@ def test_waiting_gear_in_pos_does_not_abort_phasing_active_one_does():
     assert h.s.StatusSynchronizedMotion.PhaseShift == 0.0
 
 
-def test_disabling_master_does_not_abort_phasing():
+def test_s7_1500_disabling_master_does_not_abort_phasing():
     h = H()
     g = _geared(h)
     ph, d = _phasing(h, MC_PhasingRelative, PhaseShift=30.0, Velocity=20.0)
@@ -212,7 +212,7 @@ def test_disabling_master_does_not_abort_phasing():
     assert h.s.StatusSynchronizedMotion.PhaseShift == pytest.approx(30.0)
 
 
-def test_phase_shift_reset_after_gearing_overridden_by_halt_done():
+def test_s7_1500_phase_shift_reset_after_gearing_overridden_by_halt_done():
     h = H()
     g = _geared(h)
     ph, d = _phasing(h, MC_PhasingRelative, PhaseShift=20.0)
@@ -226,7 +226,7 @@ def test_phase_shift_reset_after_gearing_overridden_by_halt_done():
     assert h.s.StatusSynchronizedMotion.PhaseShift == 0.0
 
 
-def test_relative_zero_shift_completes():
+def test_s7_1500_relative_zero_shift_completes():
     h = H()
     g = _geared(h)
     ph, d = _phasing(h, MC_PhasingRelative, PhaseShift=0.0)
@@ -235,7 +235,7 @@ def test_relative_zero_shift_completes():
     assert ph.Done and ph.CoveredPhaseShift == 0.0
 
 
-def test_done_output_latched_while_execute_and_pulse_otherwise():
+def test_s7_1500_done_output_latched_while_execute_and_pulse_otherwise():
     h = H()
     g = _geared(h)
     ph, d = _phasing(h, MC_PhasingRelative, PhaseShift=5.0)
@@ -247,7 +247,7 @@ def test_done_output_latched_while_execute_and_pulse_otherwise():
     assert not ph.Done and not ph.Busy
 
 
-def test_disable_slave_aborts_phasing_and_gearing():
+def test_s7_1500_disable_slave_aborts_phasing_and_gearing():
     h = H()
     g = _geared(h)
     ph, d = _phasing(h, MC_PhasingRelative, PhaseShift=100.0, Velocity=20.0)
@@ -260,7 +260,7 @@ def test_disable_slave_aborts_phasing_and_gearing():
     assert not h.s.StatusWord.X24 and h.s.StatusSynchronizedMotion.PhaseShift == 0.0
 
 
-def test_phasing_on_gear_in_pos_law_shifted():
+def test_s7_1500_phasing_on_gear_in_pos_law_shifted():
     """Slave = SlaveSyncPosition + ratio * (master + PhaseShift - MasterSyncPosition) (decisions #20)."""
     h = H()
     h.move_master(100.0)

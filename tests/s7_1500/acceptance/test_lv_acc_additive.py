@@ -1,4 +1,4 @@
-"""§3.5, §3.5.1, §9.1.7, §9.3.2: MC_LeadingValueAdditive."""
+"""S7-1500T V5 §3.5, §3.5.1, §9.1.7, §9.3.2: MC_LeadingValueAdditive."""
 import pytest
 
 from plcmotion import Controller
@@ -48,7 +48,7 @@ class AddRig:
         return self.s.StatusSynchronizedMotion.EffectiveLeadingValue
 
 
-def test_effective_lv_is_master_plus_additive_and_acts_immediately_s3_5():
+def test_s7_1500_effective_lv_is_master_plus_additive_and_acts_immediately_s3_5():
     r = AddRig()
     r.until(lambda: r.gear.InGear)
     r.run(0.1)
@@ -72,7 +72,7 @@ def test_effective_lv_is_master_plus_additive_and_acts_immediately_s3_5():
     assert r.eff().Position == pytest.approx(r.m.Position, abs=1e-9)
 
 
-def test_additive_acceleration_in_effective_leading_value_s3_5_1():
+def test_s7_1500_additive_acceleration_in_effective_leading_value_s3_5_1():
     r = AddRig()
     r.until(lambda: r.gear.InGear)
     r.st.update(lva=True, a=7.0)
@@ -80,7 +80,7 @@ def test_additive_acceleration_in_effective_leading_value_s3_5_1():
     assert r.eff().Acceleration == pytest.approx(r.m.Acceleration + 7.0, abs=1e-9)
 
 
-def test_can_start_without_synchronous_operation_s3_5():
+def test_s7_1500_can_start_without_synchronous_operation_s3_5():
     r = AddRig()
     r.st["gear"] = False
     r.run(0.05)
@@ -89,7 +89,7 @@ def test_can_start_without_synchronous_operation_s3_5():
     assert r.lva.Busy and not r.lva.Error and r.s.StatusSynchronizedMotion.StatusWord.X4
 
 
-def test_rejected_when_axis_disabled_and_not_simulated_s9_1_7():
+def test_s7_1500_rejected_when_axis_disabled_and_not_simulated_s9_1_7():
     r = AddRig()
     r.st["slave_en"] = False
     r.st["gear"] = False
@@ -99,7 +99,7 @@ def test_rejected_when_axis_disabled_and_not_simulated_s9_1_7():
     assert r.lva.Error and r.lva.ErrorID != 0 and not r.lva.Busy
 
 
-def test_survives_leading_value_switchover_s3_5():
+def test_s7_1500_survives_leading_value_switchover_s3_5():
     r = AddRig()
     r.until(lambda: r.gear.InGear)
     r.st.update(lva=True, p=10.0)
@@ -112,7 +112,7 @@ def test_survives_leading_value_switchover_s3_5():
 
 
 @pytest.mark.parametrize("job", ["halt", "mabs"])
-def test_single_axis_jobs_do_not_abort_it_s9_3_2(job):
+def test_s7_1500_single_axis_jobs_do_not_abort_it_s9_3_2(job):
     r = AddRig()
     r.until(lambda: r.gear.InGear)
     r.st.update(lva=True, p=1.0)
@@ -123,7 +123,7 @@ def test_single_axis_jobs_do_not_abort_it_s9_3_2(job):
     assert r.lva.Busy and r.s.StatusSynchronizedMotion.StatusWord.X4
 
 
-def test_aborted_by_mc_stop_s9_1_7():
+def test_s7_1500_aborted_by_mc_stop_s9_1_7():
     r = AddRig()
     r.until(lambda: r.gear.InGear)
     r.st.update(lva=True, p=1.0)
@@ -134,7 +134,7 @@ def test_aborted_by_mc_stop_s9_1_7():
     assert not r.s.StatusSynchronizedMotion.StatusWord.X4
 
 
-def test_aborted_by_reset_with_restart_s9_1_7():
+def test_s7_1500_aborted_by_reset_with_restart_s9_1_7():
     r = AddRig()
     r.st["gear"] = False
     r.st.update(lva=True, p=1.0)
@@ -147,7 +147,7 @@ def test_aborted_by_reset_with_restart_s9_1_7():
     assert not r.lva.Busy and not r.s.StatusSynchronizedMotion.StatusWord.X4
 
 
-def test_not_aborted_by_mc_reset_without_restart_s9_1_7():
+def test_s7_1500_not_aborted_by_mc_reset_without_restart_s9_1_7():
     r = AddRig()
     r.until(lambda: r.gear.InGear)
     r.st.update(lva=True, p=1.0)
@@ -157,7 +157,7 @@ def test_not_aborted_by_mc_reset_without_restart_s9_1_7():
     assert r.lva.Busy
 
 
-def test_second_job_aborts_the_first_only_one_active_s3_5_s9_3_2():
+def test_s7_1500_second_job_aborts_the_first_only_one_active_s3_5_s9_3_2():
     r = AddRig()
     r.until(lambda: r.gear.InGear)
     r.st.update(lva=True, p=10.0)
@@ -168,7 +168,7 @@ def test_second_job_aborts_the_first_only_one_active_s3_5_s9_3_2():
     assert r.eff().Position == pytest.approx(r.m.Position + 1.0, abs=1e-9)
 
 
-def test_section_b_start_position_from_effective_leading_value_s9_1_7_2():
+def test_s7_1500_section_b_start_position_from_effective_leading_value_s9_1_7_2():
     """Chart §9.1.7.2 B: additive value 100 first, then GearInPos (SPR 1, start at effective LV 200):
     StartSync when the master is at 100.  After InSync the additive value ramps down while the master
     moves on: the effective LV stays constant and the following axis stands still."""
@@ -207,7 +207,7 @@ def test_section_b_start_position_from_effective_leading_value_s9_1_7_2():
     assert s.Velocity == pytest.approx(100.0)
 
 
-def test_needs_the_t_cpu_s2_2():
+def test_s7_1500_needs_the_t_cpu_s2_2():
     r = AddRig(family="S7-1500")
     r.st["gear"] = True
     r.run(0.1)

@@ -1,5 +1,5 @@
-"""§3.3.1-§3.3.3, §3.3.5, §6.1.3, §8.1.3/§8.1.4: coupling types, chains, cycles, non-position-controlled
-leading axes, external encoder as a leading value source."""
+"""S7-1500T V5 §3.3.1-§3.3.3, §3.3.5, §6.1.3, §8.1.3/§8.1.4: coupling types, chains, cycles,
+non-position-controlled leading axes, external encoder as a leading value source."""
 import pytest
 
 from plcmotion import Controller
@@ -11,7 +11,7 @@ from _lh import VIRTUAL, check_error_outputs, encoder_rig
 DRIVE = {"Actor": {"Type": 1}}
 
 
-def test_delayed_coupling_uses_the_setpoint_of_delay_time_ago_s3_3_3():
+def test_s7_1500_delayed_coupling_uses_the_setpoint_of_delay_time_ago_s3_3_3():
     """Delayed coupling: the local followers get the leading value delayed by
     CrossPlcSynchronousOperation.LocalLeadingValueDelayTime (shown in StatusProvidedLeadingValue)."""
     D = 0.008
@@ -43,7 +43,7 @@ def test_delayed_coupling_uses_the_setpoint_of_delay_time_ago_s3_3_3():
     assert gd.InGear and gs.InGear
 
 
-def test_external_encoder_delayed_coupling_is_delayed_s3_3_3():
+def test_s7_1500_external_encoder_delayed_coupling_is_delayed_s3_3_3():
     """§3.3.3: the leading value of an external encoder can be delayed ("Delayed" coupling).  At constant
     velocity the delayed follower lags the actual-value follower by v * LocalLeadingValueDelayTime."""
     D, v = 0.008, 100.0
@@ -59,7 +59,7 @@ def test_external_encoder_delayed_coupling_is_delayed_s3_3_3():
     assert lag == pytest.approx(v * D, abs=0.01)
 
 
-def test_external_encoder_provides_a_cross_plc_leading_value_s8_1_3():
+def test_s7_1500_external_encoder_provides_a_cross_plc_leading_value_s8_1_3():
     """§8.1.3: a positioning axis, external encoder or synchronous axis can be the leading axis on CPU 1;
     §8.1.4 lists CrossPlcSynchronousOperation.* and StatusProvidedLeadingValue.* for the external encoder."""
     ctl, enc, _, gears, _ = encoder_rig(
@@ -72,13 +72,13 @@ def test_external_encoder_provides_a_cross_plc_leading_value_s8_1_3():
     assert enc.tag("StatusProvidedLeadingValue.DelayedLeadingValue.Velocity") == pytest.approx(100.0, rel=0.05)
 
 
-def test_external_encoder_status_provided_leading_value_tag_exists_s8_1_4():
+def test_s7_1500_external_encoder_status_provided_leading_value_tag_exists_s8_1_4():
     ctl, enc, _, gears, _ = encoder_rig(plant={"Velocity": 100.0})
     ctl.run(0.05)
     enc.tag("StatusProvidedLeadingValue.DelayedLeadingValue.Position")
 
 
-def test_external_encoder_cannot_be_setpoint_coupled_s3_3_1():
+def test_s7_1500_external_encoder_cannot_be_setpoint_coupled_s3_3_1():
     """§3.3.1: setpoint coupling is possible for positioning axis, synchronous axis, proxy - not for an
     external encoder (it has no setpoint)."""
     ctl, enc, _, gears, _ = encoder_rig(plant={"Velocity": 100.0}, followers=(("S", "setpoint"),))
@@ -86,7 +86,7 @@ def test_external_encoder_cannot_be_setpoint_coupled_s3_3_1():
     assert gears[0].Error and gears[0].ErrorID != 0
 
 
-def test_proxy_cannot_be_actual_value_coupled_s3_3_2():
+def test_s7_1500_proxy_cannot_be_actual_value_coupled_s3_3_2():
     ctl = Controller(family="S7-1500T")
     proxy = ctl.add_leading_axis_proxy("P", {}, source_link=LocalLink())
     s = ctl.add_synchronous_axis("S", VIRTUAL, leading_values=[("P", "actual")])
@@ -116,7 +116,7 @@ def _non_pc_rig(mode):
     return ctl, m, s, mv, g, st
 
 
-def test_actual_value_coupling_starts_with_a_non_position_controlled_leading_axis_s3_3_5():
+def test_s7_1500_actual_value_coupling_starts_with_a_non_position_controlled_leading_axis_s3_3_5():
     ctl, m, s, mv, g, st = _non_pc_rig("actual")
     ctl.run_until(lambda: mv.InVelocity, timeout=2.0)
     assert m.StatusWord.NonPositionControlled
@@ -126,7 +126,7 @@ def test_actual_value_coupling_starts_with_a_non_position_controlled_leading_axi
     assert s.Velocity == pytest.approx(100.0, rel=0.02)
 
 
-def test_setpoint_coupling_waits_for_a_non_position_controlled_leading_axis_s3_3_5():
+def test_s7_1500_setpoint_coupling_waits_for_a_non_position_controlled_leading_axis_s3_3_5():
     ctl, m, s, mv, g, st = _non_pc_rig("setpoint")
     ctl.run_until(lambda: mv.InVelocity, timeout=2.0)
     st["go"] = True
@@ -135,7 +135,7 @@ def test_setpoint_coupling_waits_for_a_non_position_controlled_leading_axis_s3_3
     assert s.Velocity == 0.0
 
 
-def test_actual_value_coupling_stays_when_leading_axis_becomes_non_position_controlled_s3_3_5():
+def test_s7_1500_actual_value_coupling_stays_when_leading_axis_becomes_non_position_controlled_s3_3_5():
     ctl, m, s, mv, g, st = _non_pc_rig("actual")
     st["pc"] = True
     ctl.run_until(lambda: mv.InVelocity, timeout=2.0)
@@ -150,7 +150,7 @@ def test_actual_value_coupling_stays_when_leading_axis_becomes_non_position_cont
     assert s.Velocity == pytest.approx(100.0, rel=0.02)
 
 
-def test_chain_evaluated_in_one_cycle_independent_of_creation_order_s3_3():
+def test_s7_1500_chain_evaluated_in_one_cycle_independent_of_creation_order_s3_3():
     """A following axis that leads another one: S2 (created first) sees S1's setpoint of the same cycle."""
     ctl = Controller(family="S7-1500T")
     m = ctl.add_positioning_axis("M", VIRTUAL)
@@ -179,7 +179,7 @@ def test_chain_evaluated_in_one_cycle_independent_of_creation_order_s3_3():
         assert s3.Position - p3 == pytest.approx(-6 * dx, abs=1e-9)
 
 
-def test_three_axis_cycle_rejected_s8_1_3():
+def test_s7_1500_three_axis_cycle_rejected_s8_1_3():
     ctl = Controller(family="S7-1500T")
     a = ctl.add_synchronous_axis("A", VIRTUAL, leading_values=["C"])
     b = ctl.add_synchronous_axis("B", VIRTUAL, leading_values=["A"])
@@ -199,7 +199,7 @@ def test_three_axis_cycle_rejected_s8_1_3():
     assert ga.Error and ga.ErrorID == 0x8306 and gb.InGear and gc.InGear
 
 
-def test_waiting_gearinpos_cycle_rejected_s8_1_3():
+def test_s7_1500_waiting_gearinpos_cycle_rejected_s8_1_3():
     """A cycle closed by a waiting GearInPos is also a recursion that would become effective."""
     ctl = Controller(family="S7-1500T")
     a = ctl.add_synchronous_axis("A", VIRTUAL, leading_values=["B"])
@@ -217,7 +217,7 @@ def test_waiting_gearinpos_cycle_rejected_s8_1_3():
     assert gb.Error and gb.ErrorID == 0x8306
 
 
-def test_actual_value_coupling_to_a_virtual_positioning_axis_s3_3_2():
+def test_s7_1500_actual_value_coupling_to_a_virtual_positioning_axis_s3_3_2():
     """§3.3.2 lists positioning axis and synchronous axis without exception; a virtual axis has actual
     values (they equal its setpoints)."""
     ctl = Controller(family="S7-1500T")
@@ -236,7 +236,7 @@ def test_actual_value_coupling_to_a_virtual_positioning_axis_s3_3_2():
     assert g.InGear, hex(g.ErrorID)
 
 
-def test_actual_value_coupling_to_a_simulated_drive_axis_s3_3_2():
+def test_s7_1500_actual_value_coupling_to_a_simulated_drive_axis_s3_3_2():
     ctl = Controller(family="S7-1500T")
     m = ctl.add_positioning_axis("M", {"Actor": {"Type": 1}, "Simulation": {"Mode": 1}})
     s = ctl.add_synchronous_axis("S", VIRTUAL, leading_values=[("M", "actual")])

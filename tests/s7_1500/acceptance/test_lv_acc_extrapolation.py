@@ -1,4 +1,4 @@
-"""§3.3.4 / §3.3.6 / §6.1.5.8 / §A.1.10 / §A.1.32: extrapolation of actual leading values."""
+"""S7-1500T V5 §3.3.4 / §3.3.6 / §6.1.5.8 / §A.1.10 / §A.1.32: extrapolation of actual leading values."""
 import pytest
 
 from _lh import encoder_rig
@@ -9,7 +9,7 @@ def _settle(ctl, gears, t=0.5):
     ctl.run(t)
 
 
-def test_leading_axis_dependent_time_is_ti_tipo_plus_position_filters_s3_3_6():
+def test_s7_1500_leading_axis_dependent_time_is_ti_tipo_plus_position_filters_s3_3_6():
     ctl, enc, _, gears, _ = encoder_rig({"PositionFilter": {"T1": 0.003, "T2": 0.002}}, plant={"Velocity": 100.0})
     _settle(ctl, gears, 0.05)
     # T_i + T_Ipo (one servo cycle each, decision 29) + T1 + T2
@@ -17,7 +17,7 @@ def test_leading_axis_dependent_time_is_ti_tipo_plus_position_filters_s3_3_6():
 
 
 @pytest.mark.parametrize("sde", [0, 1])
-def test_extrapolated_position_is_filtered_plus_velocity_times_effective_time_s3_3_4(sde):
+def test_s7_1500_extrapolated_position_is_filtered_plus_velocity_times_effective_time_s3_3_4(sde):
     """Effective extrapolation time = (LeadingAxisDependentTime if SystemDefinedExtrapolation = 1)
     + FollowingAxisDependentTime + CrossPlcSynchronousOperation.LocalLeadingValueDelayTime."""
     ctl, enc, _, gears, _ = encoder_rig(
@@ -30,7 +30,7 @@ def test_extrapolated_position_is_filtered_plus_velocity_times_effective_time_s3
     assert se.ExtrapolatedPosition == pytest.approx(se.FilteredPosition + se.FilteredVelocity * t_eff, abs=1e-6)
 
 
-def test_following_axis_dependent_time_changed_at_runtime_takes_effect_s3_3_4_dir():
+def test_s7_1500_following_axis_dependent_time_changed_at_runtime_takes_effect_s3_3_4_dir():
     ctl, enc, _, gears, _ = encoder_rig({"Settings": {"SystemDefinedExtrapolation": 0}}, plant={"Velocity": 100.0})
     _settle(ctl, gears, 0.2)
     se = enc.StatusExtrapolation
@@ -40,7 +40,7 @@ def test_following_axis_dependent_time_changed_at_runtime_takes_effect_s3_3_4_di
     assert se.ExtrapolatedPosition == pytest.approx(se.FilteredPosition + se.FilteredVelocity * 0.002, abs=1e-6)
 
 
-def test_constant_velocity_delay_is_compensated_s3_3_4():
+def test_s7_1500_constant_velocity_delay_is_compensated_s3_3_4():
     v = 200.0
     ctl, enc, (s,), gears, _ = encoder_rig(
         {"PositionFilter": {"T1": 0.002}, "VelocityFilter": {"T1": 0.01, "T2": 0.01}, "FollowingAxisDependentTime": 0.01},
@@ -55,7 +55,7 @@ def test_constant_velocity_delay_is_compensated_s3_3_4():
         assert enc.StatusExtrapolation.ExtrapolatedPosition == pytest.approx(fn(ctl.time + 0.011), abs=0.01)
 
 
-def test_constant_acceleration_delay_is_compensated_s3_3_4():
+def test_s7_1500_constant_acceleration_delay_is_compensated_s3_3_4():
     """§3.3.4: 'Delay times at constant velocity or at constant acceleration or deceleration can be
     compensated for with the extrapolation.'  Only a change of acceleration (jerk) displaces the follower."""
     a = 2000.0
@@ -72,7 +72,7 @@ def test_constant_acceleration_delay_is_compensated_s3_3_4():
     assert max(abs(e) for e in errors) < 0.05, f"steady-state error at constant acceleration: {errors}"
 
 
-def test_effective_leading_value_acceleration_of_an_accelerating_actual_value_s3_5_1():
+def test_s7_1500_effective_leading_value_acceleration_of_an_accelerating_actual_value_s3_5_1():
     """§3.5.1/§A.1.33: EffectiveLeadingValue.Acceleration is the acceleration of the effective leading value."""
     a = 2000.0
     ctl, enc, (s,), gears, _ = encoder_rig({"VelocityFilter": {"T1": 0.005}})
@@ -82,7 +82,7 @@ def test_effective_leading_value_acceleration_of_an_accelerating_actual_value_s3
 
 
 @pytest.mark.parametrize("mode", [0, 1])
-def test_extrapolated_velocity_mode_s3_3_4(mode):
+def test_s7_1500_extrapolated_velocity_mode_s3_3_4(mode):
     a = 1000.0
     ctl, enc, (s,), gears, _ = encoder_rig(
         {"VelocityFilter": {"T1": 0.01}, "FollowingAxisDependentTime": 0.01,
@@ -100,7 +100,7 @@ def test_extrapolated_velocity_mode_s3_3_4(mode):
         assert se.ExtrapolatedVelocity == pytest.approx((p1 - p0) / (t1 - t0), rel=0.01)
 
 
-def test_tolerance_band_play_operator_s3_3_4():
+def test_s7_1500_tolerance_band_play_operator_s3_3_4():
     """Tolerance band: no new output while the filtered velocity stays within the band; when it moves
     more than half the band from the last output, the new output is the velocity minus (plus) half the band."""
     ctl, enc, (s,), gears, _ = encoder_rig({"VelocityTolerance": {"Range": 10.0},
@@ -127,7 +127,7 @@ def _hysteresis_rig(value):
     return ctl, enc, s, gears
 
 
-def test_hysteresis_suppresses_reversal_smaller_than_value_s3_3_4():
+def test_s7_1500_hysteresis_suppresses_reversal_smaller_than_value_s3_3_4():
     ctl, enc, s, gears = _hysteresis_rig(2.0)
     # forward 10 mm, back 1.5 mm (< hysteresis), forward again
     prof = lambda t: 100 * t if t < 0.1 else 10 - 100 * (t - 0.1) if t < 0.115 else 8.5 + 100 * (t - 0.115)
@@ -141,7 +141,7 @@ def test_hysteresis_suppresses_reversal_smaller_than_value_s3_3_4():
         last = se.ExtrapolatedPosition
 
 
-def test_hysteresis_lets_a_reversal_larger_than_value_through_s3_3_4():
+def test_s7_1500_hysteresis_lets_a_reversal_larger_than_value_through_s3_3_4():
     ctl, enc, s, gears = _hysteresis_rig(2.0)
     prof = lambda t: 100 * t if t < 0.1 else 10 - 100 * (t - 0.1)
     enc.drive_plant(prof)
@@ -150,7 +150,7 @@ def test_hysteresis_lets_a_reversal_larger_than_value_through_s3_3_4():
     assert enc.StatusExtrapolation.ExtrapolatedPosition < 9.0
 
 
-def test_hysteresis_does_not_displace_the_leading_value_without_reversal_s3_3_4():
+def test_s7_1500_hysteresis_does_not_displace_the_leading_value_without_reversal_s3_3_4():
     """The hysteresis acts on a change of direction only ('A change of direction only takes effect when
     ...'); in steady one-way motion the LV is the extrapolated position."""
     ctl, enc, s, gears = _hysteresis_rig(2.0)

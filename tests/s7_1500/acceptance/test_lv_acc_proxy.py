@@ -1,4 +1,4 @@
-"""§8 cross-PLC synchronous operation, §A.3 leading axis proxy tags, §8.3.1.1 diagnostics."""
+"""S7-1500T V5 §8 cross-PLC synchronous operation, §A.3 leading axis proxy tags, §8.3.1.1 diagnostics."""
 import socket
 import threading
 import time
@@ -64,7 +64,7 @@ class Cross:
             self.b.step()
 
 
-def test_proxy_value_is_the_leading_value_of_delay_time_ago_s8_1_4():
+def test_s7_1500_proxy_value_is_the_leading_value_of_delay_time_ago_s8_1_4():
     x = Cross(sender_delay=0.008, proxy_delay=0.008)
     hist = {}
     for _ in range(100):
@@ -76,7 +76,7 @@ def test_proxy_value_is_the_leading_value_of_delay_time_ago_s8_1_4():
     assert x.p.StatusWord.X4 and x.p.StatusExternalLeadingValue.AdjustmentTime < 0.0
 
 
-def test_followers_in_step_when_only_the_leading_axis_delay_is_set_s8_1_3():
+def test_s7_1500_followers_in_step_when_only_the_leading_axis_delay_is_set_s8_1_3():
     """§8.1.3: the delay is configured at the leading axis; 'depending on the set delay time, the leading
     value at the leading axis proxy is automatically interpolated or extrapolated ... guarantees the
     synchronicity of all following axes'.  §8.2.3.2: the proxy's own Delay time is the one of a virtual
@@ -88,7 +88,7 @@ def test_followers_in_step_when_only_the_leading_axis_delay_is_set_s8_1_3():
     assert x.la.Position == pytest.approx(x.rb.Position, abs=1e-6), f"followers differ by {diff}"
 
 
-def test_modulo_leading_axis_s8_1_4_a_3():
+def test_s7_1500_modulo_leading_axis_s8_1_4_a_3():
     x = Cross(master={**VIRTUAL, "Modulo": {"Enable": True, "Length": 360.0, "StartValue": 0.0}}, v=2000.0)
     x.step(60)
     p = x.p
@@ -98,7 +98,7 @@ def test_modulo_leading_axis_s8_1_4_a_3():
     assert x.m.Position < 360.0
 
 
-def test_tracking_leading_axis_clears_leading_axis_control_s8_1_4():
+def test_s7_1500_tracking_leading_axis_clears_leading_axis_control_s8_1_4():
     """StatusWord.X6 (LeadingAxisControl): 0 = leading axis in follow-up (tracking) mode."""
     x = Cross(master={"Actor": {"Type": 1}}, pc=True)
     x.step(60)
@@ -111,7 +111,7 @@ def test_tracking_leading_axis_clears_leading_axis_control_s8_1_4():
     assert not x.p.StatusWord.X6
 
 
-def test_setpoint_coupling_to_proxy_waits_until_leading_value_is_valid_s3_3_5():
+def test_s7_1500_setpoint_coupling_to_proxy_waits_until_leading_value_is_valid_s3_3_5():
     x = Cross()
     x.link.lost = True
     x.step(20)
@@ -125,7 +125,7 @@ def test_setpoint_coupling_to_proxy_waits_until_leading_value_is_valid_s3_3_5():
     assert x.gb.InSync
 
 
-def test_values_stop_alarm_900_after_tolerance_time_follower_extrapolated_meanwhile_s8_1_2():
+def test_s7_1500_values_stop_alarm_900_after_tolerance_time_follower_extrapolated_meanwhile_s8_1_2():
     tol = 0.02
     x = Cross(tolerance=tol, sender_delay=0.0, proxy_delay=0.0)
     x.step(150)
@@ -146,7 +146,7 @@ def test_values_stop_alarm_900_after_tolerance_time_follower_extrapolated_meanwh
     assert x.p.StatusWord.X1 and not x.p.StatusWord.X4
 
 
-def test_follower_keeps_moving_during_tolerance_time_s8_1_2():
+def test_s7_1500_follower_keeps_moving_during_tolerance_time_s8_1_2():
     tol = 0.05
     x = Cross(tolerance=tol, sender_delay=0.0, proxy_delay=0.0)
     x.step(150)
@@ -156,7 +156,7 @@ def test_follower_keeps_moving_during_tolerance_time_s8_1_2():
     assert x.rb.Position == pytest.approx(p0 + 100.0 * 0.02, abs=1e-6)
 
 
-def test_invalid_telegram_when_leading_axis_disabled_s8_1_4():
+def test_s7_1500_invalid_telegram_when_leading_axis_disabled_s8_1_4():
     x = Cross(tolerance=0.02)
     x.step(100)
     x.st["m_en"] = False
@@ -165,7 +165,7 @@ def test_invalid_telegram_when_leading_axis_disabled_s8_1_4():
     assert x.p.ErrorDetail.Number == 900
 
 
-def test_mc_reset_acknowledges_after_values_return_s8_1_2():
+def test_s7_1500_mc_reset_acknowledges_after_values_return_s8_1_2():
     x = Cross(tolerance=0.02)
     x.step(100)
     x.link.lost = True
@@ -186,13 +186,13 @@ def test_s7_1500_sender_can_provide_the_leading_value_s8_1():
     assert x.rb.Position == pytest.approx(x.m.Position - 20.0, abs=1e-6)
 
 
-def test_proxy_needs_an_s7_1500t_receiver_s8_1():
+def test_s7_1500_proxy_needs_an_s7_1500t_receiver_s8_1():
     ctl = Controller(family="S7-1500")
     with pytest.raises(Exception):
         ctl.add_leading_axis_proxy("P", {}, source_link=LocalLink())
 
 
-def test_uadp_modulo_and_tracking_fields_arrive_s8_1_2():
+def test_s7_1500_uadp_modulo_and_tracking_fields_arrive_s8_1_2():
     pytest.importorskip("asyncua")
     from plcmotion.crossplc import UadpLeadingValuePublisher, UadpLeadingValueSubscriber
     with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:

@@ -1,4 +1,4 @@
-"""§3.4, §3.4.1, §9.1.6: MC_SynchronizedMotionSimulation."""
+"""S7-1500T V5 §3.4, §3.4.1, §9.1.6: MC_SynchronizedMotionSimulation."""
 import pytest
 
 from plcmotion import Controller
@@ -54,7 +54,7 @@ class SimRig:
         self.st["mv"] = False
 
 
-def test_rejected_when_not_synchronous_s9_1_6():
+def test_s7_1500_rejected_when_not_synchronous_s9_1_6():
     r = SimRig()
     r.st["gear"] = False              # no synchronous operation at all
     r.run(0.05)
@@ -65,7 +65,7 @@ def test_rejected_when_not_synchronous_s9_1_6():
     assert not r.s.StatusSynchronizedMotion.StatusWord.X3
 
 
-def test_needs_the_t_cpu_s2_2():
+def test_s7_1500_needs_the_t_cpu_s2_2():
     r = SimRig(family="S7-1500")
     r.until(lambda: r.gear.InGear)
     r.st["sim"] = True
@@ -73,7 +73,7 @@ def test_needs_the_t_cpu_s2_2():
     assert r.sim.Error and r.sim.ErrorID != 0
 
 
-def test_procedure_disable_and_reenable_without_resynchronization_s9_1_6_1():
+def test_s7_1500_procedure_disable_and_reenable_without_resynchronization_s9_1_6_1():
     r = SimRig()
     r.synchronous_and_halted()
     r.st["sim"] = True
@@ -98,7 +98,7 @@ def test_procedure_disable_and_reenable_without_resynchronization_s9_1_6_1():
     assert r.s.Position == pytest.approx(2 * r.m.Position, abs=1e-6)
 
 
-def test_synchronous_velocity_setpoint_set_to_zero_at_start_s9_1_6():
+def test_s7_1500_synchronous_velocity_setpoint_set_to_zero_at_start_s9_1_6():
     r = SimRig()
     r.until(lambda: r.gear.InGear)
     r.run(0.1)
@@ -111,7 +111,7 @@ def test_synchronous_velocity_setpoint_set_to_zero_at_start_s9_1_6():
     assert r.s.StatusWord.Synchronous
 
 
-def test_single_axis_job_during_simulation_moves_the_axis_and_keeps_the_sync_s3_4():
+def test_s7_1500_single_axis_job_during_simulation_moves_the_axis_and_keeps_the_sync_s3_4():
     r = SimRig()
     r.synchronous_and_halted()
     r.st["sim"] = True
@@ -132,7 +132,7 @@ def test_single_axis_job_during_simulation_moves_the_axis_and_keeps_the_sync_s3_
     assert r.s.Position == pytest.approx(2 * r.m.Position, abs=1e-9)
 
 
-def test_end_of_simulation_with_position_difference_is_a_setpoint_step_s9_1_6():
+def test_s7_1500_end_of_simulation_with_position_difference_is_a_setpoint_step_s9_1_6():
     r = SimRig()
     r.synchronous_and_halted()
     r.st["sim"] = True
@@ -145,7 +145,7 @@ def test_end_of_simulation_with_position_difference_is_a_setpoint_step_s9_1_6():
     assert r.s.Position == pytest.approx(2 * r.m.Position, abs=1e-9)   # acts immediately
 
 
-def test_mc_stop_does_not_end_the_simulated_synchronous_operation_s9_1_6():
+def test_s7_1500_mc_stop_does_not_end_the_simulated_synchronous_operation_s9_1_6():
     r = SimRig()
     r.synchronous_and_halted()
     r.st["sim"] = True
@@ -160,7 +160,7 @@ def test_mc_stop_does_not_end_the_simulated_synchronous_operation_s9_1_6():
     assert r.gear.InGear and r.s.StatusSynchronizedMotion.FunctionState == 1
 
 
-def test_superimposed_motion_continues_during_simulation_s3_4():
+def test_s7_1500_superimposed_motion_continues_during_simulation_s3_4():
     r = SimRig()
     r.synchronous_and_halted()
     r.st["sup"] = True
@@ -174,7 +174,7 @@ def test_superimposed_motion_continues_during_simulation_s3_4():
     r.until(lambda: r.sup.Done)
 
 
-def test_synchronous_operation_jobs_rejected_while_enable_true_s9_1_6():
+def test_s7_1500_synchronous_operation_jobs_rejected_while_enable_true_s9_1_6():
     r = SimRig()
     r.synchronous_and_halted()
     r.st["sim"] = True
@@ -186,7 +186,7 @@ def test_synchronous_operation_jobs_rejected_while_enable_true_s9_1_6():
     assert r.gear.InGear and not r.gear.CommandAborted
 
 
-def test_restart_ends_simulation_and_aborts_synchronous_operation_s9_1_6():
+def test_s7_1500_restart_ends_simulation_and_aborts_synchronous_operation_s9_1_6():
     r = SimRig()
     r.synchronous_and_halted()
     r.st["sim"] = True
@@ -200,7 +200,7 @@ def test_restart_ends_simulation_and_aborts_synchronous_operation_s9_1_6():
     assert r.s.StatusSynchronizedMotion.FunctionState == 0
 
 
-def test_lv_additive_allowed_in_simulation_while_disabled_s9_1_7():
+def test_s7_1500_lv_additive_allowed_in_simulation_while_disabled_s9_1_7():
     """§9.1.7 requirement: the TO is enabled OR in simulation with MC_SynchronizedMotionSimulation."""
     r = SimRig()
     r.synchronous_and_halted()
@@ -214,7 +214,7 @@ def test_lv_additive_allowed_in_simulation_while_disabled_s9_1_7():
     assert r.s.StatusSynchronizedMotion.StatusWord.X4
 
 
-def test_rejected_while_synchronizing_s9_1_6():
+def test_s7_1500_rejected_while_synchronizing_s9_1_6():
     ctl = Controller(family="S7-1500T", app_cycle=0.001)
     m = ctl.add_positioning_axis("M", VIRTUAL)
     s = ctl.add_synchronous_axis("S", VIRTUAL, leading_values=["M"])

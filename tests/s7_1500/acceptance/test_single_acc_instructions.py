@@ -15,7 +15,7 @@ MOD = {"Modulo": {"Enable": True, "Length": 360.0, "StartValue": 0.0}}
 
 
 # --- dynamic input rule --------------------------------------------------------------------------------
-def test_negative_dynamic_inputs_take_the_defaults_and_zero_jerk_is_a_trapezoid_s9_1():
+def test_s7_1500_negative_dynamic_inputs_take_the_defaults_and_zero_jerk_is_a_trapezoid_s9_1():
     r = AxisRig({"DynamicDefaults": {"Velocity": 80.0, "Acceleration": 400.0, "Deceleration": 200.0,
                                      "Jerk": 0.0}})
     ax = r.axis
@@ -29,7 +29,7 @@ def test_negative_dynamic_inputs_take_the_defaults_and_zero_jerk_is_a_trapezoid_
     assert v.max() == pytest.approx(80.0) and a.max() == pytest.approx(400.0) and a.min() == pytest.approx(-200.0)
 
 
-def test_default_jerk_is_used_for_negative_jerk_s9_1():
+def test_s7_1500_default_jerk_is_used_for_negative_jerk_s9_1():
     r = AxisRig({"DynamicDefaults": {"Jerk": 2000.0}, "DynamicLimits": {"MaxJerk": 0.0}})
     ax = r.axis
     rel = MC_MoveRelative()
@@ -41,7 +41,7 @@ def test_default_jerk_is_used_for_negative_jerk_s9_1():
     assert jerk == pytest.approx(2000.0, rel=0.02)
 
 
-def test_changed_defaults_act_at_the_next_execute_edge_not_on_the_running_job_sA_1_17():
+def test_s7_1500_changed_defaults_act_at_the_next_execute_edge_not_on_the_running_job_sA_1_17():
     r = AxisRig()
     ax = r.axis
     rel = MC_MoveRelative()
@@ -59,7 +59,7 @@ def test_changed_defaults_act_at_the_next_execute_edge_not_on_the_running_job_sA
     assert ax.Velocity == pytest.approx(50.0)
 
 
-def test_move_velocity_negative_velocity_is_not_the_default_sA_1_17():
+def test_s7_1500_move_velocity_negative_velocity_is_not_the_default_sA_1_17():
     """§A.1.17: defaults are used for values < 0 "exceptions: MC_MoveJog.Velocity, MC_MoveVelocity.Velocity"."""
     r = AxisRig()
     mv = MC_MoveVelocity()
@@ -70,7 +70,7 @@ def test_move_velocity_negative_velocity_is_not_the_default_sA_1_17():
 
 @pytest.mark.parametrize("v, d, expect", [(40.0, 0, 40.0), (-40.0, 0, -40.0), (-40.0, 1, 40.0), (40.0, 1, 40.0),
                                           (40.0, 2, -40.0), (-40.0, 2, -40.0)])
-def test_move_velocity_direction(v, d, expect):
+def test_s7_1500_move_velocity_direction(v, d, expect):
     r = AxisRig()
     mv = MC_MoveVelocity()
     r.call(mv, Execute=True, Velocity=v, Direction=d)
@@ -78,7 +78,7 @@ def test_move_velocity_direction(v, d, expect):
     assert r.axis.Velocity == pytest.approx(expect) and mv.Busy and not mv.Error
 
 
-def test_move_velocity_current_keeps_the_present_velocity():
+def test_s7_1500_move_velocity_current_keeps_the_present_velocity():
     r = AxisRig()
     mv = MC_MoveVelocity()
     r.call(mv, Execute=True, Velocity=70.0)
@@ -95,7 +95,7 @@ def test_move_velocity_current_keeps_the_present_velocity():
 
 # --- emergency stop, MC_Power -------------------------------------------------------------------------
 @pytest.mark.parametrize("mode, decel", [(0, 4000.0), (2, 6000.0)])
-def test_mc_stop_modes_ramps_s9_3_1(mode, decel):
+def test_s7_1500_mc_stop_modes_ramps_s9_3_1(mode, decel):
     r = AxisRig({"DynamicLimits": {"MaxJerk": 1.0e5}, "DynamicDefaults": {"Jerk": 1.0e5}})
     ax = r.axis
     mv = MC_MoveVelocity()
@@ -112,7 +112,7 @@ def test_mc_stop_modes_ramps_s9_3_1(mode, decel):
     assert mv.CommandAborted and ax.Velocity == 0.0
 
 
-def test_power_stop_mode_1_removes_the_enable_at_once():
+def test_s7_1500_power_stop_mode_1_removes_the_enable_at_once():
     r = AxisRig(stop_mode=1)
     ax = r.axis
     mv = MC_MoveVelocity()
@@ -123,14 +123,14 @@ def test_power_stop_mode_1_removes_the_enable_at_once():
     assert not r.power.Status and not ax.StatusWord.Enable
 
 
-def test_power_invalid_stop_mode_is_an_error_and_error_has_an_id():
+def test_s7_1500_power_invalid_stop_mode_is_an_error_and_error_has_an_id():
     r = AxisRig(enable=False)
     r.en.update(on=True, stop_mode=7)
     r.run(0.1)
     assert r.power.Error and r.power.ErrorID != 0 and not r.power.Status
 
 
-def test_power_reports_an_alarm_and_reset_clears_it():
+def test_s7_1500_power_reports_an_alarm_and_reset_clears_it():
     r = AxisRig({"PositionLimits_SW": {"Active": True, "MinPosition": -10.0, "MaxPosition": 10.0}})
     r.home(0.0)
     mv = MC_MoveVelocity()
@@ -147,7 +147,7 @@ def test_power_reports_an_alarm_and_reset_clears_it():
 
 
 # --- MC_Reset ---------------------------------------------------------------------------------------------
-def test_reset_restart_reloads_start_values_and_loses_incremental_homing():
+def test_s7_1500_reset_restart_reloads_start_values_and_loses_incremental_homing():
     r = AxisRig(virtual=False)
     ax = r.axis
     r.home(5.0)
@@ -164,7 +164,7 @@ def test_reset_restart_reloads_start_values_and_loses_incremental_homing():
 
 # --- MC_Home ----------------------------------------------------------------------------------------------
 @pytest.mark.parametrize("mode", [0, 1])
-def test_direct_homing_does_not_abort_the_running_motion_s6_1_5_5(mode):
+def test_s7_1500_direct_homing_does_not_abort_the_running_motion_s6_1_5_5(mode):
     r = AxisRig()
     ax = r.axis
     mv = MC_MoveVelocity()
@@ -183,7 +183,7 @@ def test_direct_homing_does_not_abort_the_running_motion_s6_1_5_5(mode):
 
 
 @pytest.mark.parametrize("virtual", [True, False], ids=["virtual", "drive"])
-def test_active_homing_aborts_the_running_motion_and_ends_at_standstill_s6_1_5_5(virtual):
+def test_s7_1500_active_homing_aborts_the_running_motion_and_ends_at_standstill_s6_1_5_5(virtual):
     """§6.1.5.5: "With active homing, MC_Home performs the configured home position approach. Active traversing
     motions are aborted." After the homing job is Done no motion may be left running without a job."""
     params = {} if virtual else {"Sensor": {"Sensor[1]": {"ActiveHoming": {"Mode": 2, "DigitalInputAddress": "I0.0"}}},
@@ -203,7 +203,7 @@ def test_active_homing_aborts_the_running_motion_and_ends_at_standstill_s6_1_5_5
     assert ax.Velocity == 0.0 and ax.StatusWord.StandStill and ax.StatusWord.Done
 
 
-def test_active_homing_aborts_a_superimposed_motion_virtual_axis_s9_3_1():
+def test_s7_1500_active_homing_aborts_a_superimposed_motion_virtual_axis_s9_3_1():
     r = AxisRig()
     ax = r.axis
     sup = MC_MoveSuperimposed()
@@ -216,7 +216,7 @@ def test_active_homing_aborts_a_superimposed_motion_virtual_axis_s9_3_1():
     assert sup.CommandAborted and not ax.StatusWord.SuperimposedMotionCommand
 
 
-def test_active_homing_is_rejected_while_mc_stop_holds_the_axis_virtual_axis():
+def test_s7_1500_active_homing_is_rejected_while_mc_stop_holds_the_axis_virtual_axis():
     """§9.3.1: running MC_Stop vs new MC_Home Mode 3/5 = '-' (MC_Stop continues); decisions #24: the axis stays
     locked while MC_Stop.Execute is TRUE (new jobs rejected, 16#8204)."""
     r = AxisRig()
@@ -231,7 +231,7 @@ def test_active_homing_is_rejected_while_mc_stop_holds_the_axis_virtual_axis():
 
 
 @pytest.mark.parametrize("mode, expect", [(5, 42.0), (10, 42.0), (0, 7.0)])
-def test_home_position_modes_use_the_configured_home_position(mode, expect):
+def test_s7_1500_home_position_modes_use_the_configured_home_position(mode, expect):
     r = AxisRig({"Homing": {"HomePosition": 42.0},
                  "Sensor": {"Sensor[1]": {"PassiveHoming": {"Mode": 2, "DigitalInputAddress": "I0.0", "Direction": 0},
                                           "ActiveHoming": {"Mode": 2, "DigitalInputAddress": "I0.0"}}},
@@ -248,7 +248,7 @@ def test_home_position_modes_use_the_configured_home_position(mode, expect):
 
 
 @pytest.mark.parametrize("mode, homed_while_busy", [(2, False), (8, True)])
-def test_passive_homing_reset_of_the_homing_status(mode, homed_while_busy):
+def test_s7_1500_passive_homing_reset_of_the_homing_status(mode, homed_while_busy):
     r = AxisRig({"Sensor": {"Sensor[1]": {"PassiveHoming": {"Mode": 2, "DigitalInputAddress": "I0.0",
                                                             "Direction": 0}}},
                  "Plant": {"HomingSwitchPosition": 50.0}}, virtual=False)
@@ -266,7 +266,7 @@ def test_passive_homing_reset_of_the_homing_status(mode, homed_while_busy):
     assert not ax.StatusWord.HomingCommand
 
 
-def test_home_mode_9_cancels_passive_homing_s9_3_1():
+def test_s7_1500_home_mode_9_cancels_passive_homing_s9_3_1():
     r = AxisRig({"Sensor": {"Sensor[1]": {"PassiveHoming": {"Mode": 2, "DigitalInputAddress": "I0.0"}}},
                  "Plant": {"HomingSwitchPosition": 1.0e6}}, virtual=False)
     h = MC_Home()
@@ -282,7 +282,7 @@ def test_home_mode_9_cancels_passive_homing_s9_3_1():
 
 @pytest.mark.parametrize("d, start, target, sign", [(1, 350.0, 10.0, 1), (2, 350.0, 10.0, -1), (3, 350.0, 10.0, 1),
                                                     (3, 10.0, 350.0, -1), (1, 10.0, 350.0, 1), (2, 10.0, 350.0, -1)])
-def test_move_absolute_direction_on_a_modulo_axis(d, start, target, sign):
+def test_s7_1500_move_absolute_direction_on_a_modulo_axis(d, start, target, sign):
     r = AxisRig(MOD)
     ax = r.axis
     r.home(start)
@@ -297,7 +297,7 @@ def test_move_absolute_direction_on_a_modulo_axis(d, start, target, sign):
 
 
 @pytest.mark.parametrize("d", [0, 4, -1])
-def test_move_absolute_invalid_direction_modulo(d):
+def test_s7_1500_move_absolute_invalid_direction_modulo(d):
     r = AxisRig(MOD)
     r.home(0.0)
     ma = MC_MoveAbsolute()
@@ -306,7 +306,7 @@ def test_move_absolute_invalid_direction_modulo(d):
     assert ma.Error and ma.ErrorID != 0 and r.axis.Position == 0.0
 
 
-def test_done_stays_while_execute_true_and_one_cycle_after_a_short_pulse():
+def test_s7_1500_done_stays_while_execute_true_and_one_cycle_after_a_short_pulse():
     r = AxisRig()
     rel = MC_MoveRelative()
     inp = r.call(rel, Execute=True, Distance=10.0)
@@ -325,7 +325,7 @@ def test_done_stays_while_execute_true_and_one_cycle_after_a_short_pulse():
     assert log[0][0] and sum(d for b, d in log) == 1          # Done visible for exactly one call
 
 
-def test_command_aborted_and_busy_false_when_overridden():
+def test_s7_1500_command_aborted_and_busy_false_when_overridden():
     r = AxisRig()
     rel = MC_MoveRelative()
     inp = r.call(rel, Execute=True, Distance=1000.0)
@@ -343,7 +343,7 @@ def test_command_aborted_and_busy_false_when_overridden():
     assert not rel.CommandAborted
 
 
-def test_move_relative_target_status_sA_1_28():
+def test_s7_1500_move_relative_target_status_sA_1_28():
     r = AxisRig()
     r.home(10.0)
     rel = MC_MoveRelative()
@@ -355,7 +355,7 @@ def test_move_relative_target_status_sA_1_28():
 
 
 # --- MC_MoveJog, MC_Halt ----------------------------------------------------------------------------------
-def test_jog_release_brakes_and_the_job_ends():
+def test_s7_1500_jog_release_brakes_and_the_job_ends():
     r = AxisRig()
     jog = MC_MoveJog()
     keys = r.call(jog, JogForward=False, JogBackward=True, Velocity=60.0)
@@ -367,7 +367,7 @@ def test_jog_release_brakes_and_the_job_ends():
     assert not jog.Busy and not jog.Error and not jog.InVelocity
 
 
-def test_jog_aborted_by_move_velocity():
+def test_s7_1500_jog_aborted_by_move_velocity():
     r = AxisRig()
     jog = MC_MoveJog()
     r.call(jog, JogForward=True, JogBackward=False, Velocity=60.0)
@@ -378,7 +378,7 @@ def test_jog_aborted_by_move_velocity():
     assert jog.CommandAborted and r.axis.Velocity == pytest.approx(20.0)
 
 
-def test_halt_done_at_standstill_with_its_deceleration():
+def test_s7_1500_halt_done_at_standstill_with_its_deceleration():
     r = AxisRig()
     ax = r.axis
     mv = MC_MoveVelocity()
@@ -397,7 +397,7 @@ def test_halt_done_at_standstill_with_its_deceleration():
     (MC_MoveRelative, dict(Distance=5.0)), (MC_MoveVelocity, dict(Velocity=5.0)), (MC_Halt, {}),
     (MC_MoveSuperimposed, dict(Distance=5.0)), (MC_Home, dict(Mode=3)),
 ])
-def test_mc_stop_holds_the_axis_while_execute_is_true(fb, inputs):
+def test_s7_1500_mc_stop_holds_the_axis_while_execute_is_true(fb, inputs):
     r = AxisRig()
     stop = MC_Stop()
     si = r.call(stop, Execute=True, Mode=2)
@@ -408,7 +408,7 @@ def test_mc_stop_holds_the_axis_while_execute_is_true(fb, inputs):
     assert inst.Error and inst.ErrorID != 0 and r.axis.Position == 0.0
 
 
-def test_same_stop_mode_aborts_the_running_stop_s9_3_1_b():
+def test_s7_1500_same_stop_mode_aborts_the_running_stop_s9_3_1_b():
     r = AxisRig({"DynamicLimits": {"MaxDeceleration": 500.0}})
     mv = MC_MoveVelocity()
     r.call(mv, Execute=True, Velocity=400.0)
@@ -423,7 +423,7 @@ def test_same_stop_mode_aborts_the_running_stop_s9_3_1_b():
 
 
 # --- MC_MoveSuperimposed ----------------------------------------------------------------------------------
-def test_new_motion_job_aborts_a_superimposed_motion_s9_3_1():
+def test_s7_1500_new_motion_job_aborts_a_superimposed_motion_s9_3_1():
     r = AxisRig()
     mv = MC_MoveVelocity()
     r.call(mv, Execute=True, Velocity=50.0)
@@ -439,7 +439,7 @@ def test_new_motion_job_aborts_a_superimposed_motion_s9_3_1():
     assert not r.axis.StatusWord.SuperimposedMotionCommand
 
 
-def test_superimposed_does_not_abort_the_basic_motion_but_a_new_superimposed_one_s9_3_1():
+def test_s7_1500_superimposed_does_not_abort_the_basic_motion_but_a_new_superimposed_one_s9_3_1():
     r = AxisRig()
     rel = MC_MoveRelative()
     r.call(rel, Execute=True, Distance=300.0)
@@ -473,7 +473,7 @@ BAD = [
 
 
 @pytest.mark.parametrize("fb, inputs", BAD, ids=[f"{f.__name__}-{i}" for i, (f, _) in enumerate(BAD)])
-def test_bad_input_rejected_running_job_unaffected(fb, inputs):
+def test_s7_1500_bad_input_rejected_running_job_unaffected(fb, inputs):
     r = AxisRig()
     r.home(0.0)
     ax = r.axis
@@ -489,7 +489,7 @@ def test_bad_input_rejected_running_job_unaffected(fb, inputs):
     assert not ax.StatusWord.Error and math.isfinite(ax.Position)
 
 
-def test_bad_jog_velocity_rejected():
+def test_s7_1500_bad_jog_velocity_rejected():
     r = AxisRig()
     jog = MC_MoveJog()
     r.call(jog, JogForward=True, JogBackward=False, Velocity=float("nan"))
@@ -498,7 +498,7 @@ def test_bad_jog_velocity_rejected():
 
 
 # --- velocity override §A.1.21 ------------------------------------------------------------------------------
-def test_override_change_acts_at_once_with_the_jobs_dynamics_sA_1_21():
+def test_s7_1500_override_change_acts_at_once_with_the_jobs_dynamics_sA_1_21():
     """§A.1.21: "An override change takes effect immediately, and is performed with the dynamic settings in
     effect in the Motion Control instruction"."""
     r = AxisRig()
@@ -514,7 +514,7 @@ def test_override_change_acts_at_once_with_the_jobs_dynamics_sA_1_21():
     assert min(acc) == pytest.approx(-120.0)
 
 
-def test_override_zero_holds_a_positioning_busy_and_resumes_sA_1_21():
+def test_s7_1500_override_zero_holds_a_positioning_busy_and_resumes_sA_1_21():
     r = AxisRig()
     ax = r.axis
     rel = MC_MoveRelative()

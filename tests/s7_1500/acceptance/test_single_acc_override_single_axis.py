@@ -89,7 +89,7 @@ def start_new(r, kind):
 
 @pytest.mark.parametrize("new", list(TABLE))
 @pytest.mark.parametrize("running", list(RUNNING))
-def test_override_s9_3_1(running, new):
+def test_s7_1500_override_s9_3_1(running, new):
     r = AxisRig(HOMING, virtual=False)
     r.ctl.inputs["I0.0"] = False
     if running != "home3":
@@ -108,7 +108,7 @@ def test_override_s9_3_1(running, new):
 
 @pytest.mark.parametrize("mode", [3, 5])
 @pytest.mark.parametrize("running", ["velocity", "absolute", "jog", "halt", "superimposed", "stop"])
-def test_override_active_homing_row_on_a_virtual_axis_s9_3_1(running, mode):
+def test_s7_1500_override_active_homing_row_on_a_virtual_axis_s9_3_1(running, mode):
     """The same row 'MC_Home Mode 3, 5' on a virtual axis (homing completes at once there). A cell: the running
     job is aborted AND its motion ends (no setpoint motion left without a job); '-' (MC_Stop): MC_Stop goes on
     and the lock rejects the homing job (decisions #24)."""
@@ -127,7 +127,7 @@ def test_override_active_homing_row_on_a_virtual_axis_s9_3_1(running, mode):
 
 
 @pytest.mark.parametrize("virtual", [True, False], ids=["virtual-slave", "drive-slave"])
-def test_active_homing_aborts_gear_in_s9_3_2(virtual):
+def test_s7_1500_active_homing_aborts_gear_in_s9_3_2(virtual):
     """§9.3.2 row 'MC_Home Mode 3, 5', column MC_GearIn: A."""
     from plcmotion import Controller
     from plcmotion.s7_1500 import MC_GearIn, MC_Power

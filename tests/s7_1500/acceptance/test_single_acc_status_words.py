@@ -28,7 +28,7 @@ WARNING_BITS = {0: "SystemWarning", 1: "ConfigWarning", 2: "UserWarning", 3: "Co
 
 @pytest.mark.parametrize("word, table", [("StatusWord", STATUS_BITS), ("ErrorWord", ERROR_BITS),
                                          ("WarningWord", WARNING_BITS)])
-def test_bit_names_and_numbers_sA_1_37_39_41(word, table):
+def test_s7_1500_bit_names_and_numbers_sA_1_37_39_41(word, table):
     r = AxisRig(synchronous=True, family="S7-1500T")
     w = getattr(r.axis, word)
     for bit, name in table.items():
@@ -36,13 +36,13 @@ def test_bit_names_and_numbers_sA_1_37_39_41(word, table):
     assert r.axis.StatusWord2.StopCommand == r.axis.StatusWord2.X0
 
 
-def test_standstill_bit_name_of_the_appendix_sA_1_37():
+def test_s7_1500_standstill_bit_name_of_the_appendix_sA_1_37():
     """§A.1.37 bit 7 and §A.1.26 call the bit "Standstill" (the §7.1.1 diagnostics view: "StandStill")."""
     r = AxisRig()
     assert r.axis.StatusWord.Standstill == r.axis.StatusWord.X7
 
 
-def test_enabled_axis_at_rest_s7_1_1():
+def test_s7_1500_enabled_axis_at_rest_s7_1_1():
     r = AxisRig()
     sw = r.axis.StatusWord
     assert sw.Enable and not sw.Error and sw.Done and sw.StandStill
@@ -50,7 +50,7 @@ def test_enabled_axis_at_rest_s7_1_1():
     assert not sw.HomingDone and not sw.Accelerating and not sw.Decelerating
 
 
-def test_constant_velocity_is_shown_at_standstill_s7_1_1():
+def test_s7_1500_constant_velocity_is_shown_at_standstill_s7_1_1():
     """§7.1.1 Motion status: "Constant velocity: The axis is moved with constant velocity or is stationary.
     (<TO>.StatusWord.X12 (ConstantVelocity))"."""
     r = AxisRig()
@@ -63,7 +63,7 @@ def test_constant_velocity_is_shown_at_standstill_s7_1_1():
     assert r.axis.StatusWord.StandStill and r.axis.StatusWord.ConstantVelocity
 
 
-def test_motion_bits_through_a_positioning_sA_1_37():
+def test_s7_1500_motion_bits_through_a_positioning_sA_1_37():
     r = AxisRig()
     rel = MC_MoveRelative()
     r.call(rel, Execute=True, Distance=200.0, Velocity=100.0, Acceleration=500.0, Deceleration=500.0)
@@ -93,7 +93,7 @@ def test_motion_bits_through_a_positioning_sA_1_37():
     assert sw.Done and not sw.PositioningCommand
 
 
-def test_velocity_jog_homing_superimposed_command_bits_sA_1_37():
+def test_s7_1500_velocity_jog_homing_superimposed_command_bits_sA_1_37():
     r = AxisRig()
     ax = r.axis
     mv = MC_MoveVelocity()
@@ -117,7 +117,7 @@ def test_velocity_jog_homing_superimposed_command_bits_sA_1_37():
     assert not ax.StatusWord.JogCommand and ax.StatusWord.StandStill
 
 
-def test_done_bit_is_false_while_mc_stop_brakes_the_axis_sA_1_37():
+def test_s7_1500_done_bit_is_false_while_mc_stop_brakes_the_axis_sA_1_37():
     """§A.1.37 bit 6 Done: "0 = A motion job is in progress"; §7.1.1: "Done (no job running): No job active at
     technology object". MC_Stop braking the axis is a job in progress."""
     r = AxisRig()
@@ -132,7 +132,7 @@ def test_done_bit_is_false_while_mc_stop_brakes_the_axis_sA_1_37():
     assert not ax.StatusWord.Done
 
 
-def test_stopcommand_bit_follows_mc_stop_sA_1_38():
+def test_s7_1500_stopcommand_bit_follows_mc_stop_sA_1_38():
     r = AxisRig()
     ax = r.axis
     stop = MC_Stop()
@@ -146,7 +146,7 @@ def test_stopcommand_bit_follows_mc_stop_sA_1_38():
     assert not ax.StatusWord2.X0
 
 
-def test_rejected_job_sets_command_not_accepted_s7_1_1():
+def test_s7_1500_rejected_job_sets_command_not_accepted_s7_1_1():
     """§7.1.1 Error table: "Job rejected: A job cannot be executed. You cannot execute a Motion Control
     instruction because necessary requirements are not fulfilled (for example, technology object not
     homed). (<TO>.ErrorWord.X3 (CommandNotAccepted))"; warnings table: the same as WarningWord.X3."""
@@ -162,7 +162,7 @@ SW = {"PositionLimits_SW": {"Active": True, "MinPosition": -100.0, "MaxPosition"
 
 
 @pytest.mark.parametrize("sign", [1, -1])
-def test_sw_limit_stops_at_the_switch_and_signals_an_error_s6_1_5_4(sign):
+def test_s7_1500_sw_limit_stops_at_the_switch_and_signals_an_error_s6_1_5_4(sign):
     r = AxisRig(SW)
     ax = r.axis
     r.home(0.0)
@@ -188,7 +188,7 @@ def test_sw_limit_stops_at_the_switch_and_signals_an_error_s6_1_5_4(sign):
     assert not ax.StatusWord.SWLimitMaxActive and not ax.StatusWord.SWLimitMinActive
 
 
-def test_sw_limits_act_only_on_a_homed_axis_s6_1_5_4():
+def test_s7_1500_sw_limits_act_only_on_a_homed_axis_s6_1_5_4():
     r = AxisRig(SW)
     rel = MC_MoveRelative()
     r.call(rel, Execute=True, Distance=300.0, Velocity=300.0)
@@ -197,7 +197,7 @@ def test_sw_limits_act_only_on_a_homed_axis_s6_1_5_4():
     assert not r.axis.ErrorWord.SWLimit and not r.axis.StatusWord.SWLimitMaxActive
 
 
-def test_hw_limit_switch_alarm_531_removes_the_enable_s6_1_5_4():
+def test_s7_1500_hw_limit_switch_alarm_531_removes_the_enable_s6_1_5_4():
     r = AxisRig({"PositionLimits_HW": {"Active": True, "MinSwitchAddress": "I1.0", "MaxSwitchAddress": "I1.1",
                                        "MinSwitchLevel": True, "MaxSwitchLevel": True}}, virtual=False, enable=False)
     ax = r.axis
@@ -215,7 +215,7 @@ def test_hw_limit_switch_alarm_531_removes_the_enable_s6_1_5_4():
     assert not ax.StatusWord.Enable and mv.Error
 
 
-def test_following_error_alarm_521_and_warning_522_s6_1_5_6():
+def test_s7_1500_following_error_alarm_521_and_warning_522_s6_1_5_6():
     r = AxisRig({"FollowingError": {"MaxValue": 0.5, "MinValue": 0.5, "WarningLevel": 50.0},
                  "PositionControl": {"Kpc": 0.0}}, virtual=False)
     ax = r.axis
@@ -230,7 +230,7 @@ def test_following_error_alarm_521_and_warning_522_s6_1_5_6():
     assert not ax.StatusWord.Enable and mv.Error and mv.ErrorID != 0
 
 
-def test_positioning_monitoring_alarm_541_s6_1_5_6():
+def test_s7_1500_positioning_monitoring_alarm_541_s6_1_5_6():
     r = AxisRig({"PositioningMonitoring": {"ToleranceTime": 0.01, "Window": 0.001},
                  "PositionControl": {"Kv": 2.0, "Kpc": 0.0}, "FollowingError": {"EnableMonitoring": False}},
                 virtual=False)
@@ -243,7 +243,7 @@ def test_positioning_monitoring_alarm_541_s6_1_5_6():
     assert not ax.StatusWord.Enable
 
 
-def test_done_only_after_the_minimum_dwell_time_in_the_window_sA_1_25():
+def test_s7_1500_done_only_after_the_minimum_dwell_time_in_the_window_sA_1_25():
     r = AxisRig({"PositioningMonitoring": {"MinDwellTime": 0.2, "Window": 1.0}}, virtual=False)
     ax = r.axis
     rel = MC_MoveRelative()
@@ -261,7 +261,7 @@ def test_done_only_after_the_minimum_dwell_time_in_the_window_sA_1_25():
     assert inside_since is not None and t_done - inside_since >= 0.2 - 1e-9
 
 
-def test_standstill_signal_needs_the_minimum_dwell_time_sA_1_26():
+def test_s7_1500_standstill_signal_needs_the_minimum_dwell_time_sA_1_26():
     r = AxisRig({"StandstillSignal": {"VelocityThreshold": 5.0, "MinDwellTime": 0.2}}, virtual=False)
     ax = r.axis
     rel = MC_MoveRelative()
@@ -283,7 +283,7 @@ def test_standstill_signal_needs_the_minimum_dwell_time_sA_1_26():
     (MC_MoveJog, dict(JogForward=True, Velocity=500.0)),
     (MC_MoveRelative, dict(Execute=True, Distance=1000.0, Velocity=500.0)),
 ])
-def test_dynamic_warning_when_the_velocity_limit_cuts_a_job_sA_1_16(fb, inputs):
+def test_s7_1500_dynamic_warning_when_the_velocity_limit_cuts_a_job_sA_1_16(fb, inputs):
     """§A.1.16: "If you have specified greater values in a Motion Control instruction, then motion is
     performed using the dynamic limits, and a warning is indicated (alarm 501 to 503)" -> WarningWord.X6."""
     r = AxisRig({"DynamicLimits": {"Velocity": 300.0}})
@@ -296,19 +296,19 @@ def test_dynamic_warning_when_the_velocity_limit_cuts_a_job_sA_1_16(fb, inputs):
     assert any(seen) and not r.axis.StatusWord.Error and not inst.Error
 
 
-def test_error_detail_is_zero_without_alarm_sA_1_40():
+def test_s7_1500_error_detail_is_zero_without_alarm_sA_1_40():
     r = AxisRig()
     assert r.axis.ErrorDetail.Number == 0 and r.axis.ErrorDetail.Reaction == 0 and int(r.axis.ErrorWord) == 0
 
 
-def test_axis_simulation_bit_sA_1_37():
+def test_s7_1500_axis_simulation_bit_sA_1_37():
     r = AxisRig({"Simulation": {"Mode": 1}}, virtual=False)
     assert r.axis.StatusWord.AxisSimulation
     r2 = AxisRig(virtual=False)
     assert not r2.axis.StatusWord.AxisSimulation
 
 
-def test_non_position_controlled_bit_sA_1_37():
+def test_s7_1500_non_position_controlled_bit_sA_1_37():
     r = AxisRig(virtual=False)
     mv = MC_MoveVelocity()
     r.call(mv, Execute=True, Velocity=50.0, PositionControlled=False)

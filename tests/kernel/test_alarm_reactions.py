@@ -1,0 +1,94 @@
+"""The alarm component (``kernel.alarm_reactions.AlarmReactions``): alone on a fake axis, then on a kernel
+``Controller`` axis (no dialect).
+
+Expected behaviour from S7-1200 Motion Control V6 (seeds/000): §12.8 (an alarm ends the running job with an
+error and reacts: none, stop, emergency stop or remove enable), §11.1.2 MC_Reset (acknowledges alarms whose
+cause is gone; Restart = TRUE only on a disabled axis, §9.7).
+"""
+from __future__ import annotations
+
+from types import SimpleNamespace
+
+from plcmotion import Controller
+from plcmotion.kernel import faults as F
+from plcmotion.kernel.alarm_reactions import AlarmReactions
+from plcmotion.kernel.faults import Reaction
+from plcmotion.kernel.jobs import Job, JobKind, JobState
+
+
+class FakeAxis:
+    """An AlarmHost of a disabled axis that records the reactions it is asked for."""
+
+    def __init__(self, state="disabled"):
+        self.now = 1.0
+        self.alarms: list[F.Fault] = []
+        self.job: Job | None = None
+        self.state = state
+        self.power_owner = None
+        self.homing = SimpleNamespace(end_passive=lambda state, fault: self.calls.append(("end_passive",)))
+        self.calls: list[tuple] = []
+
+    def _finish_job(self, job, state, t, fault=None):
+        job.finish(state, fault)
+        self.calls.append(("finish", state))
+
+    def _end_runner_jobs(self, state, t, fault=None):
+        self.calls.append(("runners", state))
+
+    def _remove_enable(self, t, by_power=False):
+        self.calls.append(("remove_enable", by_power))
+
+    def reinitialize(self, reason):
+        self.calls.append(("reinitialize", reason))
+
+
+def test_kernel_alarm_reactions_warning_ends_the_job_only():
+    """§12.8: an alarm ends the job it belongs to with an error; without a reaction nothing else happens."""
+    ax = FakeAxis(state="enabled")
+    job = Job(JobKind.RELATIVE, position=1.0)
+    ax.job = job
+    warning = F.alarm(F.INTERNAL, "test", Reaction.NONE)
+    AlarmReactions(ax).raise_alarm(warning)
+    assert ax.alarms == [warning] and job.state == JobState.ERROR and job.fault is warning
+    assert ax.calls == [("finish", JobState.ERROR)]
+
+
+def test_kernel_alarm_reactions_remove_enable():
+    """§12.8 reaction "remove enable": the runners' jobs end, passive homing ends, the enable is removed."""
+    ax = FakeAxis(state="enabled")
+    fault = F.alarm(F.INTERNAL, "test", Reaction.REMOVE_ENABLE)
+    alarms = AlarmReactions(ax)
+    alarms.raise_alarm(fault)
+    alarms.raise_alarm(fault)                         # the same alarm is listed once
+    assert ax.alarms == [fault]
+    assert ax.calls[:3] == [("runners", JobState.ERROR), ("end_passive",), ("remove_enable", False)]
+
+
+def test_kernel_alarm_reactions_restart_only_when_disabled():
+    """§11.1.2 / §9.7: MC_Reset Restart = TRUE restarts a disabled axis; an enabled one is refused."""
+    ax = FakeAxis(state="enabled")
+    ax.power_owner = object()
+    fault = AlarmReactions(ax).restart()
+    assert fault is not None and fault.kind == F.RESTART_IMPOSSIBLE and ax.calls == []
+    ax.state, ax.power_owner = "disabled", None
+    assert AlarmReactions(ax).restart() is None and ax.calls == [("reinitialize", "restart")]
+
+
+def test_kernel_alarm_reactions_controller_axis_acknowledge_and_enable_again():
+    """§12.8 / §11.1.2: an alarm with "remove enable" disables the axis and blocks enabling until MC_Reset
+    acknowledges it (its cause is gone); then MC_Power enables the axis again."""
+    ctl = Controller(servo_cycle=0.001, app_cycle=0.004, input_filter=0.0)
+    axis = ctl.add_positioning_axis("Axis_1", {"Actor.Type": 1, "DynamicLimits.MaxVelocity": 100.0})
+    owner = object()
+    axis.power(owner, True, 1, 0)
+    ctl.run(0.1)
+    assert axis.state == "enabled"
+    axis.raise_alarm(F.alarm(F.INTERNAL, "test", Reaction.REMOVE_ENABLE))
+    assert axis.state == "disabled" and axis.alarms
+    axis.power(owner, True, 1, 0)
+    ctl.run(0.1)
+    assert axis.state == "disabled"
+    assert axis.acknowledge() is None and axis.alarms == []
+    axis.power(owner, True, 1, 0)
+    ctl.run(0.1)
+    assert axis.state == "enabled"

@@ -42,7 +42,7 @@ def axis_types(family: families.Family) -> tuple[str, ...]:
 
 
 def _plural(kind: str) -> str:
-    """ "a synchronous axis" -> "synchronous axes" """
+    """The plural without the article: "a synchronous axis" -> "synchronous axes"."""
     noun = kind.split(" ", 1)[1]
     if noun.endswith("axis"):
         return noun[:-4] + "axes"

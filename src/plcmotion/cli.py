@@ -18,6 +18,7 @@ from typing import Sequence
 
 from . import CycleOverrunWarning, ProgramErrorWarning, __version__
 from .drives.spec import SetpointInterface
+from .kernel import family as families
 
 #: longest ``--duration`` [s of virtual time] (116 days): beyond it a run does not end in practice
 MAX_DURATION = 1e7
@@ -167,7 +168,7 @@ def cmd_check(args: argparse.Namespace) -> int:
     axes = ", ".join(f"{name} ({_describe(ax)})" for name, ax in ctl.axes.items())
     others = [f"{name} ({type(to).__name__})" for name, to in {**ctl.objects, **ctl.cams}.items()]
     more = f"; {', '.join(others)}" if others else ""
-    family = "" if ctl.family == "S7-1200" else f"{ctl.family}, "
+    family = "" if ctl.family == families.default().name else f"{ctl.family}, "
     print(f"{args.project}: OK - {family}servo cycle {ctl.servo_cycle * 1000:g} ms, application cycle "
           f"{ctl.app_cycle * 1000:g} ms, {len(ctl.axes)} axes: {axes or '-'}{more}")
     return 0
@@ -201,7 +202,6 @@ def load_program(ctl, program: str) -> None:
 
 
 def cmd_run(args: argparse.Namespace) -> int:
-    from .s7_1500.technology.tags import alarm_description
     from .kernel.runtime import exception_text
     from .project import ProjectError, load_project
     from .trace import Trace, plot_csv
@@ -272,10 +272,12 @@ def cmd_run(args: argparse.Namespace) -> int:
             plot_failed = f"--plot {args.plot}: {getattr(exc, 'strerror', None) or exc}"
     print(f"ran {ctl.time:.3f} s of virtual time in {wall:.2f} s (x{ctl.time / wall if wall else 0:.1f} real time), "
           f"mode {ctl.mode}")
+    describe = families.lookup(ctl.family).describe_fault      # the family's alarm numbers and texts
+
     def alarms(to) -> str:
-        if ctl.family == "S7-1200":
+        if describe is None:
             return ", ".join(str(a) for a in to.alarms) or "no error"
-        return ", ".join(f"{alarm_description(a)} [{a}]" for a in to.alarms) or "no error"
+        return ", ".join(f"{describe(a)} [{a}]" for a in to.alarms) or "no error"
 
     for name, ax in ctl.axes.items():
         errors = alarms(ax)

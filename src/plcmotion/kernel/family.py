@@ -46,7 +46,11 @@ class Family:
     available".  ``rules(version)`` gives the names of version-dependent rules the kernel asks for (e.g. a
     newer technology version's homing of a disabled axis).  ``policy``: the override rules of its instructions
 (which running job a new one aborts, keeps or is rejected by), the depth of the axis job queue and the
-mapping of its buffer-mode input (``kernel.policy``); None: the PLCopen default, every motion job takes over."""
+mapping of its buffer-mode input (``kernel.policy``); None: the PLCopen default, every motion job takes over.
+    ``schemas`` map an object kind to the ``kernel.schema.AxisSchema`` that checks its tags, so a project
+    file can report every bad tag of an object before creating it (a kind without one cannot be declared
+    in a project file).  ``describe_fault(fault)``: how summaries name a kernel fault of the family's
+    objects (its alarm number and text); None: the fault's own text."""
 
     name: str
     versions: tuple[int, ...]
@@ -56,6 +60,8 @@ mapping of its buffer-mode input (``kernel.policy``); None: the PLCopen default,
     features: frozenset[str] = frozenset()
     rules: Callable[[int], frozenset[str]] = field(default=_no_rules)
     policy: OverridePolicy | None = None
+    schemas: Mapping[str, Any] = field(default_factory=dict)
+    describe_fault: Callable[[Any], str] | None = None
 
 
 _REGISTRY: dict[str, Family] = {}

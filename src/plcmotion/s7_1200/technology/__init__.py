@@ -13,6 +13,7 @@ from ...kernel import family as K
 from .axis import PositioningAxis
 from .command_table import CommandTable
 from .override import POLICY
+from .parameters import S7_1200 as SCHEMA
 from .table_runner import TableRunner
 
 
@@ -36,6 +37,6 @@ def _command_table(ctl: Any, name: str, commands: Any) -> CommandTable:
 
 S7_1200 = K.register(K.Family("S7-1200", versions=(6, 7), default_version=6,
                               factories={K.POSITIONING_AXIS: _positioning_axis, K.COMMAND_TABLE: _command_table},
-                              rules=_rules, policy=POLICY))
+                              rules=_rules, policy=POLICY, schemas={K.POSITIONING_AXIS: SCHEMA}))
 
 __all__ = ["S7_1200"]

@@ -20,7 +20,9 @@ from .axes import PositioningAxis1500, SynchronousAxis
 from .cam_to import CamTO
 from .external_encoder import ENCODER_SCHEMA, ExternalEncoder
 from .override import POLICY
+from .parameters import S7_1500 as SCHEMA
 from .proxy import PROXY_SCHEMA, LeadingAxisProxy
+from .tags import alarm_description
 
 #: jobs only the T CPU runs (S7-1500T sync V5 §1: camming, GearInPos, phasing, simulation, additive value)
 T_ONLY_JOBS = frozenset({JobKind.GEAR_IN_POS, JobKind.CAM_IN, JobKind.PHASING, JobKind.SYNC_SIMULATION,
@@ -90,14 +92,20 @@ def _cam(ctl: Any, name: str, points: Any, segments: Any, *, interpolation_mode:
 
 _AXES = {K.POSITIONING_AXIS: _positioning_axis, K.SYNCHRONOUS_AXIS: _synchronous_axis}
 _ALL_JOBS = frozenset(JobKind)
+# the tags of every kind are checked with the S7-1500 schemas in both families (a project file of an S7-1500
+# without T is checked as such; its factories then refuse what the CPU does not have)
+_SCHEMAS = {K.POSITIONING_AXIS: SCHEMA, K.SYNCHRONOUS_AXIS: SCHEMA, K.EXTERNAL_ENCODER: ENCODER_SCHEMA,
+            K.LEADING_AXIS_PROXY: PROXY_SCHEMA}
 
 S7_1500 = K.register(K.Family("S7-1500", versions=(5,), default_version=5, factories=_AXES,
-                              job_kinds=_ALL_JOBS - T_ONLY_JOBS, policy=POLICY))
+                              job_kinds=_ALL_JOBS - T_ONLY_JOBS, policy=POLICY, schemas=_SCHEMAS,
+                              describe_fault=alarm_description))
 S7_1500T = K.register(K.Family(
     "S7-1500T", versions=(5,), default_version=5,
     factories={**_AXES, K.EXTERNAL_ENCODER: _external_encoder, K.LEADING_AXIS_PROXY: _leading_axis_proxy,
                K.CAM: _cam},
-    job_kinds=_ALL_JOBS, features=frozenset({K.ACTUAL_VALUE_COUPLING}), policy=POLICY))
+    job_kinds=_ALL_JOBS, features=frozenset({K.ACTUAL_VALUE_COUPLING}), policy=POLICY, schemas=_SCHEMAS,
+    describe_fault=alarm_description))
 
 __all__ = ["S7_1500", "S7_1500T", "PositioningAxis1500", "SynchronousAxis", "ExternalEncoder", "LeadingAxisProxy",
            "CamTO", "T_ONLY_JOBS"]

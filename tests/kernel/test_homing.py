@@ -313,3 +313,48 @@ def test_kernel_homing_active_aborts_passive_homing():
     active = Job(JobKind.HOME_ACTIVE, position=0.0, mode=3)
     axis.home(active)
     assert passive.state == JobState.ABORTED and axis.homing.passive is None and active.busy
+
+
+# --- an axis kind without homing ------------------------------------------------------------------------
+def test_kernel_homing_an_axis_kind_without_homing_refuses_it_and_still_moves():
+    """An axis kind that takes no homing part (``NoHoming``, e.g. a speed-controlled axis) refuses every
+    homing request as a function it does not have (PLCopen: a function block the axis type does not
+    support ends with an error and moves nothing), and its motion jobs run as on any axis."""
+    from plcmotion.kernel import family as families
+    from plcmotion.kernel import faults as F
+    from plcmotion.kernel.axis import PositioningAxis
+    from plcmotion.kernel.homing import NoHoming
+
+    from ._schema_axis import with_schema
+
+    class SpeedAxis(PositioningAxis):
+        homing_class = NoHoming
+
+    params = {"Actor.Type": 1, "DynamicLimits.MaxVelocity": 100.0, "DynamicDefaults.Acceleration": 200.0,
+              "DynamicDefaults.Deceleration": 200.0, "DynamicDefaults.Jerk": 0.0}
+    axis_class = with_schema(SpeedAxis, params)
+    fam = families.register(families.Family(
+        "Kernel-No-Homing", versions=(1,), default_version=1,
+        factories={families.POSITIONING_AXIS: lambda ctl, name, flat, where: ctl.new_axis(axis_class, name, flat,
+                                                                                        where)}))
+    try:
+        ctl = Controller(family=fam.name, servo_cycle=DT)
+        axis = ctl.add_positioning_axis("Speed_1", params)
+        assert isinstance(axis.homing, NoHoming) and not axis.homing_configured(3)
+        assert axis.power(object(), True, 1, 0) is None
+        ctl.run_until(lambda: axis.state == "enabled", 5.0)
+        jobs = [Job(JobKind.HOME_DIRECT, position=5.0, mode=0), Job(JobKind.HOME_ACTIVE, mode=3),
+                Job(JobKind.HOME_PASSIVE, mode=2)]
+        axis.home_direct(jobs[0])
+        axis.submit(jobs[1])
+        axis.submit(jobs[2])
+        for job in jobs:
+            assert job.state == JobState.ERROR and job.fault.kind == F.NOT_AVAILABLE
+        assert not axis.homed and axis.homing.passive is None
+        move = Job(JobKind.VELOCITY, velocity=20.0)
+        axis.submit(move)
+        ctl.run(1.0)
+        assert move.busy and float(ctl.bank.act_v[axis.index]) == pytest.approx(20.0, rel=1e-3)
+        assert _position(ctl, axis) > 10.0
+    finally:
+        families._REGISTRY.pop(fam.name)

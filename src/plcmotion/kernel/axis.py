@@ -45,6 +45,9 @@ MAX_COMMANDS_PTO, MAX_COMMANDS_SERVO = 200, 100
 class PositioningAxis(TagViews):
     """Positioning axis technology object (TO_PositioningAxis)."""
 
+    #: the homing part of this axis kind (``kernel.homing.NoHoming`` for a kind without homing)
+    homing_class: type = Homing
+
     #: a simulated axis executes active homing at once, without motion (S7-1200 V6 §5.4.3.1)
     _sim_homing_at_once = True
 
@@ -65,7 +68,7 @@ class PositioningAxis(TagViews):
         t = ctl.time
         self.drive = ctl._drive_group(spec.actuator.value).add(self.index, spec, ctl.servo_cycle, t)
         self.motion = MotionPlanner(self)
-        self.homing = Homing(self, at_once_in_simulation=self._sim_homing_at_once)
+        self.homing = self.homing_class(self, at_once_in_simulation=self._sim_homing_at_once)
 
         self.state = DISABLED
         self.homed = False

@@ -101,6 +101,9 @@ class Homing:
     homes at standstill (S7-1500T V5 §6.1.5.5).
     """
 
+    #: an axis kind without homing has :class:`NoHoming` instead
+    available = True
+
     def __init__(self, axis: HomingAxis, *, at_once_in_simulation: bool = True):
         self.axis = axis
         self.at_once_in_simulation = at_once_in_simulation
@@ -539,3 +542,52 @@ class Homing:
         self.passive = None
         job.finish(JobState.DONE)
         a._replan()
+
+
+class NoHoming:
+    """The homing part of an axis kind that has no homing (a speed-controlled axis, say): the same interface
+    as :class:`Homing`, so the axis core needs no special case, and every homing request is refused as a
+    function this kind of technology object does not have."""
+
+    available = False
+    passive: Job | None = None
+    reference_mark = 0.0
+
+    def __init__(self, axis: HomingAxis, **_: Any):
+        self.axis = axis
+
+    def inputs(self) -> dict[str, str]:
+        return {"active": "", "passive": ""}
+
+    def configured(self, mode: int) -> bool:
+        return False
+
+    def absolute_encoder(self) -> bool:
+        return False
+
+    def absolute_raw(self) -> float:
+        return 0.0
+
+    def _refuse(self, job: Job) -> None:
+        job.finish(JobState.ERROR, F.reject(F.NOT_AVAILABLE, "homing"))
+
+    def home(self, job: Job) -> None:
+        self._refuse(job)
+
+    def home_direct(self, job: Job) -> None:
+        self._refuse(job)
+
+    def start_active(self, job: Job, t: float) -> None:     # not reached: check_start refuses the job
+        self.axis._finish_job(job, JobState.ERROR, t, F.reject(F.NOT_AVAILABLE, "homing"))
+
+    def end_passive(self, state: JobState, fault: Fault | None = None) -> None:
+        return None
+
+    def on_profile_end(self, job: Job, t: float) -> None:
+        return None
+
+    def check_inputs(self, t: float) -> None:
+        return None
+
+    def hw_limit(self, side: str, t: float) -> bool:
+        return False

@@ -107,6 +107,8 @@ class JobStart:
             return F.reject(F.TOO_MANY_COMMANDS)
         if job.kind == JobKind.ABSOLUTE and not ax.homed:
             return F.reject(F.NOT_HOMED)
+        if job.kind in (JobKind.HOME_ACTIVE, JobKind.HOME_PASSIVE) and not ax.homing.available:
+            return F.reject(F.NOT_AVAILABLE, "homing")      # an axis kind without homing
         needs_control = job.kind in POSITIONING_KINDS or job.kind == JobKind.HOME_ACTIVE or (
             job.kind in (JobKind.VELOCITY, JobKind.JOG) and job.position_controlled)
         if ax.servo and needs_control and not ax.sensor_valid:

@@ -83,6 +83,10 @@ class PositioningAxis(TagViews):
         self.job_start = JobStart(self)                # check, override, target and plan of a new job
         self.power_owner: Any = None
         self.power_control = PowerControl(self)        # enable / disable (MC_Power, §11.1.1)
+        if type(self).power is PositioningAxis.power:
+            # MC_Power calls axis.power every application cycle for every axis: bind the component's method
+            # directly so the hot call costs no hand-over frame (a family class that overrides power keeps it)
+            self.power = self.power_control.power
         self.stop_mode = 0
         self.busy_commands: set[int] = set()          # id() of instructions with Busy = TRUE
         self.max_commands = MAX_COMMANDS_PTO if self.pto else MAX_COMMANDS_SERVO

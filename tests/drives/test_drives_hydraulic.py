@@ -280,7 +280,7 @@ def test_drives_hydraulic_fault_ramps_the_output_down_and_clears():
 
 
 def test_drives_hydraulic_output_limits_and_homing_reference():
-    """S7-Technology V4.1 §4.6.10: manipulated variable limiting (high/low); homing re-references the actual
+    """S7-Technology V4.1 §4.6.13.1: manipulated variable limiting (high/low); homing re-references the actual
     value without moving the piston."""
     rig = Rig(spec(HydraulicSpec(reference_velocity=500.0, output_min=-40.0, output_max=80.0)))
     rig.cycle(10000.0)

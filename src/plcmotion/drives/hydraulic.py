@@ -190,6 +190,7 @@ class HydraulicDrives(ServoDrives):
         # spool: first-order lag towards the opening the held output asks for
         target = interp_rows(self.fu, self.fy, self.out)
         y = target + (self.y - target) * self.ev
+        y = np.where(np.abs(y) < 1e-12, 0.0, y)     # a spool settled within 1e-12 of centre is closed
         self.y = y
         drive_raw = np.where(y > 0.0, self.ps * self.aa, np.where(y < 0.0, -self.ps * self.ab, 0.0))
         drive = np.clip(drive_raw, -self.flim, self.flim)

@@ -13,6 +13,8 @@ import math
 from dataclasses import replace
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from plcmotion.drives import (ActuatorKind, CylinderSpec, DriveSpec, DriveSpecError, EncoderSpec, HydraulicSpec,
                               PlantSpec, SetpointInterface, ValveType, new_drive_group)
@@ -190,3 +192,19 @@ def test_drives_end_stop_pq_valve_yields_to_a_load_above_its_force_limit():
     expected = -k * 0.5 * math.sqrt(1000.0 / (20e-4 ** 3 + 10e-4 ** 3)) * 1000.0
     assert (rig.ch.mechanical_position() - x0) / 0.1 == pytest.approx(expected, rel=1e-3)
     assert rig.ch.force == pytest.approx(6000.0, rel=1e-6) and rig.ch.torque_limit_active
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.lists(st.tuples(st.floats(-1e4, 1e4, allow_nan=False), st.integers(1, 200),
+                          st.one_of(st.none(), st.floats(0.01, 50.0))), min_size=1, max_size=8))
+def test_drives_end_stop_servo_load_never_passes_its_end_stops(seq):
+    """S7-Technology V4.1 §6.2.11: whatever the speed commands and torque limits, the load stays between its
+    fixed end stops [-5, 5] and the torque never exceeds the limit in force."""
+    rig = Rig(SERVO)
+    for command, cycles, limit in seq:
+        rig.ch.set_torque_limit(limit)
+        for _ in range(cycles):
+            rig.run(DT, command)
+            assert -5.0 <= rig.ch.mechanical_position() <= 5.0
+            if limit is not None:
+                assert abs(rig.ch.torque) <= limit * (1 + 1e-12)

@@ -349,3 +349,19 @@ def test_drives_hydraulic_output_within_10_volts_and_piston_within_stroke(seq, x
             rig.cycle(command)
             assert -10.0 <= rig.ch.output_voltage <= 10.0
             assert 0.0 <= rig.ch.mechanical_position() <= 500.0
+
+
+def test_drives_hydraulic_zero_mark_latched_when_the_piston_passes_it():
+    """S7-Technology V4.1 §4.6.14 (homing as for electric axes, active homing with zero mark): the encoder of
+    the cylinder latches its actual value at the zero mark passed in the armed direction."""
+    drive = spec(HydraulicSpec(reference_velocity=500.0), CylinderSpec(valve_time_constant=0.0),
+                 zero_mark_offset=150.0)
+    rig = Rig(drive)
+    rig.ch.arm_zero_mark(-1.0)                    # armed for the negative direction: passing upwards is ignored
+    rig.run(0.3, 250.0)
+    assert rig.ch.mechanical_position() > 150.0 and rig.ch.zero_mark_latched() is None
+    rig.ch.arm_zero_mark(1.0)
+    rig.run(0.3, -250.0)
+    rig.run(0.4, 250.0)
+    assert rig.ch.zero_mark_latched() == pytest.approx(150.0, abs=0.001)
+    assert rig.ch.zero_mark_latched() is None     # once

@@ -6,8 +6,11 @@ Every drive model takes a :class:`DriveSpec` (``drives.spec``) and serves the ke
 """
 from .base import DriveChannel, DriveGroup
 from .simulated import ServoDrives, SetpointDrives, new_drive_group
-from .spec import (ActuatorKind, CylinderSpec, DriveSpec, DriveSpecError, EncoderInterface, EncoderKind, EncoderSpec,
-                   HydraulicSpec, PlantSpec, SetpointInterface, SwitchSpec, ValveCharacteristic, ValveType)
+from .hydraulic_spec import CylinderSpec, HydraulicSpec, ValveType
+from .spec import (ActuatorKind, DriveSpec, EncoderInterface, EncoderKind, EncoderSpec, PlantSpec, SetpointInterface,
+                   SwitchSpec)
+from .spec_errors import DriveSpecError
+from .valve import ValveCharacteristic
 
 __all__ = ["ActuatorKind", "CylinderSpec", "DriveChannel", "DriveGroup", "DriveSpec", "DriveSpecError",
            "EncoderInterface", "EncoderKind", "EncoderSpec", "HydraulicSpec", "PlantSpec", "ServoDrives",

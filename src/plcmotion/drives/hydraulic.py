@@ -31,7 +31,8 @@ from .base import DriveChannel
 from .hydraulic_spec import CylinderSpec, HydraulicSpec, ValveType
 from .simulated import ServoDrives, _limit_value, _ServoChannel
 from .spec import ActuatorKind, DriveSpec, SetpointInterface
-from .valve import DriveSpecError, ValveCharacteristic, interp_rows, pad_rows
+from .spec_errors import DriveSpecError
+from .valve import ValveCharacteristic, interp_rows, pad_rows
 
 _COUNTS_PER_PERCENT = 276.48             # S7 analog output: 27648 = 100 % = 10 V
 

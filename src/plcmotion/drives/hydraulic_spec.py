@@ -14,7 +14,8 @@ import math
 from dataclasses import dataclass
 from enum import Enum
 
-from .valve import DriveSpecError, ValveCharacteristic, finite
+from .spec_errors import DriveSpecError, finite
+from .valve import ValveCharacteristic
 
 
 class ValveType(str, Enum):

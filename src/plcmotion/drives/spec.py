@@ -15,8 +15,8 @@ import math
 from dataclasses import dataclass, field
 from enum import Enum
 
-from .hydraulic_spec import CylinderSpec, HydraulicSpec, ValveType
-from .valve import DriveSpecError, ValveCharacteristic, finite
+from .hydraulic_spec import CylinderSpec, HydraulicSpec
+from .spec_errors import DriveSpecError, finite
 
 
 class ActuatorKind(str, Enum):

@@ -14,30 +14,12 @@ members at once on padded tables (no Python per axis).
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import Any, Iterable, Sequence
 
 import numpy as np
 
-
-class DriveSpecError(ValueError):
-    """A drive, plant or valve specification with a value outside its range: ``field`` names the parameter
-    (``CylinderSpec.area_b``), ``value`` the bad value, and the message the allowed range."""
-
-    def __init__(self, field: str, value: Any, allowed: str):
-        self.field, self.value, self.allowed = field, value, allowed
-        super().__init__(f"{field} = {value!r}: {allowed}")
-
-
-def finite(field: str, value: Any) -> float:
-    """``value`` as a finite float, or a :class:`DriveSpecError` naming ``field``."""
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise DriveSpecError(field, value, "must be a number")
-    x = float(value)
-    if not math.isfinite(x):
-        raise DriveSpecError(field, value, "must be a finite number")
-    return x
+from .spec_errors import DriveSpecError, finite
 
 
 @dataclass(frozen=True)
@@ -182,4 +164,4 @@ def interp_rows(X: np.ndarray, Y: np.ndarray, x: np.ndarray) -> np.ndarray:
     return y0 + (y1 - y0) * frac
 
 
-__all__ = ["DriveSpecError", "ValveCharacteristic", "interp_rows", "pad_rows"]
+__all__ = ["ValveCharacteristic", "interp_rows", "pad_rows"]

@@ -11,7 +11,9 @@ from __future__ import annotations
 import math
 from typing import Any, Iterable, Mapping
 
-from ..drives.spec import CylinderSpec, DriveSpecError, PlantSpec, SwitchSpec
+from ..drives.hydraulic_spec import CylinderSpec
+from ..drives.spec import PlantSpec, SwitchSpec
+from ..drives.spec_errors import DriveSpecError
 from .errors import ConfigurationError
 from .schema import E12, REAL, Issue, P, Param
 

@@ -105,7 +105,8 @@ def render_parameters() -> str:
            "= read only (writing gives 16#8081), RW = read and write. Effective: *Immediately* or at the next "
            "*Restart* of the TO (warning 16#0020 until then); \"–\" where the list gives none. Axis types: "
            "V speed-controlled, P positioning, Y synchronization axis; *hydr.* marks parameters of the hydraulic "
-           "axis. Index: data sets 1-16, encoders 1-8, synchronous objects 1 (basic) / 2 (superimposed). REAL "
+           "axis. Index (firmware V3.1 and higher): data sets 1-16, encoders 1-8, synchronous objects 1 (basic) / 2 "
+           "(superimposed); the list's firmware column is empty for every entry. REAL "
            "values must lie strictly inside ±1E+12 (§6.9.3); other printed bounds are inclusive. ENUM parameters "
            "take the ValueDint codes listed below at `ValueDInt`.", ""]
     for kind in (TOKind.AXIS, TOKind.EXTERNAL_ENCODER, TOKind.OUTPUT_CAM, TOKind.CAM_TRACK, TOKind.CAM,

@@ -10,6 +10,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .fb_tables import FB_BY_NAME, FB_NAMES, table  # noqa: F401  (FB_NAMES: FB number -> name, re-exported)
+
 # --- named codes (common list of §6, every FB table repeats them) ---------------------------------------------
 NO_ERROR = 0x0000
 INTERNAL_ERROR = 0x8001
@@ -218,20 +220,18 @@ def common(code: int) -> FBCode | None:
 
 def fb_codes(fb_name: str) -> frozenset[int]:
     """All ErrorIDs the FB's table lists (0000 included); KeyError for an FB name §6 does not have."""
-    from .fb_tables import table
     return table(fb_name).all_codes()
 
 
 def describe(code: int, fb_name: str | None = None) -> str:
     """"16#8043 Illegal parameter value: ..." for an FB ErrorID; with ``fb_name`` the FB's own cause is added, and
     a code the FB's table does not list is said to be so.  An unknown code is named as unknown.  Never raises."""
-    from .fb_tables import FB_BY_NAME
     try:
         code = int(code)
     except (TypeError, ValueError):
         return f"{code!r} is no ErrorID"
     head = f"16#{code & 0xFFFF:04X}" if 0 <= code <= 0xFFFF else f"{code}"
-    fb = FB_BY_NAME.get(fb_name) if fb_name is not None else None
+    fb = FB_BY_NAME.get(fb_name) if isinstance(fb_name, str) else None
     entry = common(code)
     if fb is not None and code in fb.messages:
         entry = FBCode(code, fb.messages[code], entry.remedy if entry else "")

@@ -204,7 +204,11 @@ FBS: tuple[FBTable, ...] = (
     FBTable(431, 'MC_CamSwitchTime', 19931,
              codes=_c(0x0000, 0x8001, 0x8005, 0x8043, 0x8044, 0x8045, 0x804A, 0x804C, 0x8050, 0x8052, 0x8053,
                  0x8083, 0x8084, 0x808B), causes={
+        0x8043: ('a REAL input, Mode, Direction, DoneFlagPos or DoneFlagNeg out of range; Hysteresis above a '
+                 'quarter of the operating range or modulo length'),
         0x8044: 'an output cam that is not time-based, or a measuring input',
+        0x8045: 'output hardware failed (e.g. ET 200M) or the TO is deactivated',
+        0x804A: 'the assigned axis is deactivated',
     }),
     FBTable(432, 'MC_ExternalEncoder', 21110,
              codes=_c(0x0000, 0x8001, 0x8005, 0x8022, 0x8040, 0x8043, 0x8044, 0x8045, 0x804C, 0x8050, 0x8052,

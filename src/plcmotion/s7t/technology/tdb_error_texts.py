@@ -2,7 +2,7 @@
 
 One entry per code: the manual's message (its name for the code), the causes and the remedy condensed, and the
 reaction of the technology object where the manual states one (§7.12, §4.5.7.2-§4.5.7.3 limit switches,
-§4.7.14 synchronous operation monitoring, §6.5.1 output cams); ``None`` where it states none.  Texts that
+§4.7.14.5 synchronous operation monitoring, §6.5.1 output cams); ``None`` where it states none.  Texts that
 differ per TO are in :data:`OVERRIDES`; which TDB lists which code, with its alarm numbers, is in
 :mod:`plcmotion.s7t.technology.tdb_errors`.
 """
@@ -107,7 +107,7 @@ TEXTS: dict[int, Text] = {
                  "the following axis is outside the configured synchronism tolerance (setpoint or actual value)",
                  "check synchronization and desynchronization settings, gear ratio and units; raise the tolerance",
                  "the following axis is stopped; with \"report error of master axis\" configured the leading axis is "
-                 "stopped too and reports 801A (§4.7.14)"),
+                 "stopped too and reports 801A (§4.7.14.5)"),
     0x801B: Text("Clamping monitoring error",
                  "the clamped axis left the position tolerance after fixed end stop detection without a new command",
                  "check the end stop, the position control loop and the clamping monitoring settings"),

@@ -60,6 +60,11 @@ class TDBError:
     def kind(self) -> str:
         return "warning" if self.warning else "error"
 
+    @property
+    def to_kinds(self) -> tuple[TOKind, ...]:
+        """The TO types whose technology DB can show this row."""
+        return SECTIONS[self.table][2]
+
 
 _ALARMS_8002 = (30004, 30005, 30010, 30011, 30015)
 _ALARMS_8082 = (40006, 40007, 40008, 40009, 40010, 40011)

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any, Mapping
 
 from ...kernel import faults as F
 from ...kernel.axis import DISABLED, ENABLING
-from ...kernel.faults import Fault
+from ...kernel.faults import Fault, Reaction
 from ...kernel.follower import Follower
 from ...kernel.jobs import Job, JobKind, JobState
 from ...kernel.layered_axis import LayeredAxis
@@ -84,6 +84,12 @@ class AxisT(LayeredAxis):
     def homing_required(self) -> bool:
         return self.cfg["TypeOfAxis.Homing.referencingNecessary"] == YES
 
+    def sw_limits_effective(self) -> bool:
+        """§4.5.7.3: the software limit switches act on a homed axis; with "Homing required" = NO always
+        (not on a modulo axis, which has no end)."""
+        c = self.config
+        return c.software_limits.enabled and not c.modulo.enabled and (self.homed or not self.homing_required)
+
     def queue_waiting(self) -> bool:
         return bool(self.queue.pending)
 
@@ -93,6 +99,10 @@ class AxisT(LayeredAxis):
     # --- the error channel of the technology DB (§5.12) -------------------------------------------------
     def raise_alarm(self, fault: Fault, job: Job | None = None) -> None:
         new = fault not in self.alarms
+        stop = self.stop_job
+        if stop is not None and stop.busy and fault.reaction != Reaction.NONE:
+            # the error reaction stops the axis: MC_Stop is done (only another MC_Stop aborts it, §6.2.3)
+            self._finish_job(stop, JobState.DONE, self.now)
         super().raise_alarm(fault, job)
         if new:
             self.errors.note(*tdb_error(fault))

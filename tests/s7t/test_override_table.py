@@ -306,3 +306,16 @@ def test_s7t_override_every_decision_is_defined(new, active, kind, position, vel
             and new != "MC_Stop" and new != "MC_MoveToEndPos":
         way = O.heading(new_job, at)
         assert side != 0 and way == -side and not math.isnan(way)
+
+
+def test_s7t_override_kernel_class_names_are_the_synchronous_rows():
+    """Kernel code that starts a coupling or reports one names it by the kernel's classes (gear_in,
+    sync_active, sync_waiting, phasing); for the S7-Technology policy they are MC_GearIn "d"/"w" and
+    MC_Phasing, as rows and as columns."""
+    from plcmotion.kernel import policy as P
+    for kernel_name, ours in ((P.GEAR_IN, "MC_GearIn d"), (P.SYNC_ACTIVE, "MC_GearIn d"),
+                              (P.SYNC_WAITING, "MC_GearIn w"), (P.PHASING, "MC_Phasing")):
+        for other in O.COLUMNS:
+            assert O.POLICY.cell(kernel_name, other) == O.POLICY.cell(ours, other), (kernel_name, other)
+        for row in O.ROWS:
+            assert O.POLICY.cell(row, kernel_name) == O.POLICY.cell(row, ours), (row, kernel_name)

@@ -18,9 +18,10 @@ Shape (what instructions and the axis must do for the policy to apply):
   else by kernel job kind (ABSOLUTE -> MC_MoveAbsolute, ...; MC_MoveAdditive and MC_MoveToEndPos must set
   it).  A synchronous job is "d" once ``start_sync``/``in_sync`` or ``extra["driving"]`` is set (a
   ``JobKind.GEAR_IN`` job synchronizes at once: always "d"); MC_MoveToEndPos is ``InClamping`` while
-  ``extra["clamped"]``.  The kernel re-applies the row when a waiting synchronous job starts to drive
-  (``axis._override(instruction(job), t, job)``), which is how "Waiting abort", "Abort 2" and
-  "Superimposed abort" happen at the condition, not at the start.
+  ``extra["clamped"]``.  When a waiting synchronous job starts to drive, its "d" row is applied again
+  (``axis._override(instruction(job), t, job)``; the kernel follower passes its own class names, which are
+  aliases of the MC_GearIn / MC_Phasing rows and columns here): that is how "Waiting abort", "Abort 2" and
+  "Superimposed abort" act at the condition, not at the start.
 * The axis yields each running command as a ``kernel.policy.Activity`` of its class: the axis job, a
   waiting passive homing, the superimposed motion, the couplings, and MC_Stop from its start until its
   Done (standstill and Execute = FALSE: the lock of §6.2.3).

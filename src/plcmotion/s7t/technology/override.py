@@ -41,6 +41,7 @@ from ...kernel import faults as F
 from ...kernel.faults import Fault
 from ...kernel.job_queue import BufferMode
 from ...kernel.jobs import Job, JobKind
+from ...kernel import policy as K
 from ...kernel.policy import (ABORT, GEAR_IN, KEEP, PHASING, SUPERIMPOSED_SLOT, SYNC_ACTIVE, SYNC_WAITING, Activity,
                               Cell, Judged, OverridePolicy, Reject, Response, merge, table)
 
@@ -306,8 +307,10 @@ def instruction(job: Job) -> str:
     return fb
 
 
-# the kernel's own class names (kernel code that starts a coupling, the follower's activities) -> ours
-_KERNEL_ALIASES = {GEAR_IN: d(GI), SYNC_ACTIVE: d(GI), SYNC_WAITING: w(GI), PHASING: PHASING_FB}
+# the kernel's own class names (kernel code that starts a coupling, the follower's activities; the layered
+# axis's held MC_Stop and its superimposed motion) -> ours
+_KERNEL_ALIASES = {GEAR_IN: d(GI), SYNC_ACTIVE: d(GI), SYNC_WAITING: w(GI), PHASING: PHASING_FB,
+                   K.STOP: STOP, K.SUPERIMPOSED: MOVE_SUPERIMPOSED}
 for _alias, _ours in _KERNEL_ALIASES.items():
     TABLE[_alias] = dict(TABLE[_ours])
     for _row in TABLE.values():

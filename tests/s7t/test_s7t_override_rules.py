@@ -206,14 +206,23 @@ def test_s7t_rule_second_waiting_command_is_refused():
 
 def test_s7t_rule_velocity_not_appended_to_velocity():
     """S7-Technology V4.1 §6.2.10 Prerequisites: MC_MoveVelocity Mode 1 onto a running MC_MoveVelocity:
-    16#8055; a positioning may wait behind it (it takes over at the reached velocity)."""
+    16#8055; a positioning may wait behind it and takes over when the velocity is reached (30/100 = 0.3 s),
+    which ends MC_MoveVelocity (it has no Done: CommandAborted); it moves 20 from there."""
     rig = Rig()
     vel, again, pos = MC_MoveVelocity(), MC_MoveVelocity(), MC_MoveRelative()
+    p0 = rig.p()
     vel(Axis=rig.axis, Execute=True, Velocity=30.0, **DYN)
     again(Axis=rig.axis, Execute=True, Velocity=10.0, Mode=1, **DYN)
     assert again.Error and again.ErrorID == 0x8055 and vel(Execute=True).Busy
     pos(Axis=rig.axis, Execute=True, Distance=20.0, Velocity=30.0, Mode=1, **DYN)
     assert pos.Busy and not pos.Error
+    rig.ctl.run(0.28)
+    assert vel(Execute=True).Busy and not vel.CommandAborted
+    rig.ctl.run(0.04)
+    assert vel(Execute=True).CommandAborted and pos(Execute=True).Busy
+    p_start = 0.5 * 30.0 * 0.3                      # where the velocity was reached
+    rig.ctl.run_until(lambda: pos(Execute=True).Done, 3.0)
+    assert rig.p() - p0 == pytest.approx(p_start + 20.0, abs=0.07)   # + up to one servo cycle at 30
 
 
 # --- R6: MC_MoveAdditive ---------------------------------------------------------------------------------------

@@ -276,3 +276,25 @@ def test_s7t_rule_restart_refuses_commands():
     assert rig.power.Error and rig.power.ErrorID == 0x8045 and not rig.power.Status
     rig.ctl.run(RESTART_TIME + 0.1)
     assert restart(Execute=True).Done and rig.power.Status and not rig.power.Error
+
+
+@pytest.mark.parametrize("fb, inputs", [
+    (MC_Halt, dict(Deceleration=100.0)),
+    (MC_MoveAbsolute, dict(Position=0.0, Velocity=10.0, **DYN)),
+    (MC_MoveRelative, dict(Distance=5.0, Velocity=10.0, **DYN)),
+    (MC_MoveAdditive, dict(Distance=5.0, Velocity=10.0, **DYN)),
+    (MC_MoveVelocity, dict(Velocity=10.0, **DYN)),
+], ids=["halt", "abs", "rel", "add", "vel"])
+def test_s7t_rule_basic_motion_ends_superimposed_motion(fb, inputs):
+    """S7-Technology V4.1 §6.2.2 (only the MC_Home Mode 7 configuration keeps a superimposed motion when a basic
+    motion starts; D16): a new basic motion command ends a running MC_MoveSuperImposed with CommandAborted."""
+    rig = Rig()
+    move, sup = MC_MoveVelocity(), MC_MoveSuperImposed()
+    move(Axis=rig.axis, Execute=True, Velocity=20.0, **DYN)
+    rig.ctl.run(0.3)
+    sup(Axis=rig.axis, Execute=True, Distance=100.0, VelocityDiff=10.0, **DYN)
+    rig.ctl.run(0.3)
+    assert sup(Execute=True).Busy
+    new = fb()
+    new(Axis=rig.axis, Execute=True, **inputs)
+    assert not new.Error and sup(Execute=True).CommandAborted and move(Execute=True).CommandAborted

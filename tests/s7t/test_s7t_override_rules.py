@@ -9,6 +9,8 @@ import pytest
 
 from plcmotion.s7t import (MC_Halt, MC_MoveAbsolute, MC_MoveAdditive, MC_MoveRelative, MC_MoveSuperImposed,
                            MC_MoveVelocity, MC_Power, MC_Reset, MC_Stop)
+from plcmotion.s7t import errors as E
+from plcmotion.s7t.technology import override as O
 from plcmotion.s7t.technology.axes import RESTART_TIME
 
 from _s7t_rig import VIRTUAL, controller
@@ -298,3 +300,20 @@ def test_s7t_rule_basic_motion_ends_superimposed_motion(fb, inputs):
     new = fb()
     new(Axis=rig.axis, Execute=True, **inputs)
     assert not new.Error and sup(Execute=True).CommandAborted and move(Execute=True).CommandAborted
+
+
+# --- the ErrorIDs of the refusals at the FB ----------------------------------------------------------------------
+@pytest.mark.parametrize("reject, error_id, warning", [
+    (O.STOP_ACTIVE, 0x8045, False),          # "MC_Stop active" (§6.2.4-§6.2.11 ErrorID tables)
+    (O.RESTARTING, 0x8045, False),           # "MC_Reset (Restart = TRUE) is already active" (§6.7.1)
+    (O.END_POS_ACTIVE, 0x8045, False),       # MC_Home Mode 0/1 while MC_MoveToEndPos is active (§6.2.2)
+    (O.END_POS_REVERSE, 0x8045, False),      # MC_MoveToEndPos reversing while clamped (§6.2.11)
+    (O.END_POS_IGNORED, 0x0029, True),       # warning: MC_MoveToEndPos ignored in reverse direction (§6.2.11)
+    (O.CLAMPED_AT_STOP, 0x8056, False),      # cancellation due to active travel to fixed stop
+    (O.LATCHING, 0x8055, False),             # appending / overlaying not allowed in the current state
+], ids=lambda x: getattr(x, "detail", None) or getattr(x, "kind", None) or str(x))
+def test_s7t_rule_refusal_error_ids(reject, error_id, warning):
+    """S7-Technology V4.1 §6.2 ErrorID tables, §5.10: each refusal of the command interaction shows its ErrorID at
+    the FB; only 16#0029 is a warning (Error FALSE)."""
+    assert E.fb_error(reject.fault()) == error_id
+    assert E.is_warning(error_id) is warning

@@ -14,6 +14,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from enum import Enum
+from typing import Any
 
 
 class ActuatorKind(str, Enum):
@@ -37,6 +38,8 @@ class SetpointInterface(str, Enum):
     ANALOG = "analog"
     #: pulse train (direction and pulses)
     PULSES = "pulses"
+    #: CANopen with the CiA 402 drive profile (PDOs on a CAN bus; ``DriveSpec.link`` says which)
+    CANOPEN = "canopen"
     #: no physical setpoint (ideal drive)
     NONE = "none"
 
@@ -143,6 +146,14 @@ class DriveSpec:
     fault_code: int = 7900               #: fault number the drive reports for a fault of its own
     encoder: EncoderSpec = field(default_factory=EncoderSpec)
     plant: PlantSpec = field(default_factory=PlantSpec)
+    #: a drive on a bus the kernel does not model itself (``drives.base.DriveLink``, e.g.
+    #: ``drives.cia402.Cia402Link``); None: the simulated drive of ``actuator``
+    link: Any = None
+
+    @property
+    def group_key(self) -> str:
+        """The drive group this drive belongs to: its link's group, else its actuator kind."""
+        return self.link.group_key if self.link is not None else self.actuator.value
 
     @property
     def max_velocity(self) -> float:

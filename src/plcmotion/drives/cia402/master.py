@@ -1,0 +1,409 @@
+"""The master side: axes driven by CiA 402 drives on one CAN bus, as one kernel drive group.
+
+One servo cycle of the group (``read`` at the start of the cycle, ``write`` at its end):
+
+``read(t)``
+    sends SYNC and waits - bounded - until every node that answered last cycle has sent its two
+    synchronous TPDOs (statusword, position actual, mode display; velocity actual, torque actual, error
+    code).  Those carry the values the drives sampled at this SYNC; heartbeats and EMCY messages a node
+    sent before them are in by then as well, because a node's frames arrive in the order it sent them.
+    Then, per node: the power state from the statusword, faults (statusword FAULT or an EMCY with an
+    error code) reported once to the axis as a drive fault, heartbeat and PDO timeouts reported as a
+    communication loss, and the actual values converted into the bank.
+``write(t)``
+    sends each node's RPDO: the controlword (the next step of the power state machine towards what the
+    kernel asked, a fault reset edge after MC_Reset, the new-set-point handshake in pp), the set value
+    of the mode (target position from ``sp_p`` in csp/pp, target velocity from ``cmd_v`` in csv/pv,
+    target torque from the master's speed controller on ``cmd_v`` in cst) and the mode of operation.
+    A synchronous RPDO takes effect in the drive at the next SYNC: the next ``read``.
+
+So the bus carries, per node and cycle, one RPDO, one SYNC (shared) and two TPDOs, and the group's
+outcome depends on the frames only, never on thread timing: with the simulated drive (which answers on
+its own notifier thread, synchronously on SYNC) the same program gives the same trace bit for bit.  On a
+real bus the group paces the virtual time to the wall clock (``Cia402Link.realtime``), and the waiting is
+bounded by 80 % of the servo cycle.
+
+Units: position [inc] = (axis position - homing offset) / increment, increment = load travel per motor
+revolution / increments per motor revolution (0x608F); velocities in inc/s.
+"""
+from __future__ import annotations
+
+import math
+import struct
+import threading
+import time
+from typing import Any
+
+import canopen
+from canopen.sdo import SdoAbortedError, SdoCommunicationError
+
+from ..base import DriveChannel, DriveGroup, DriveReports
+from ..spec import DriveSpec
+from . import profile as P
+from .drive_core import MotorSpec
+from .link import Cia402Link
+from .profile import MODE_NAMES, Mode, State
+
+_NMT_START, _NMT_PRE_OPERATIONAL = 0x01, 0x80
+_TPDO1, _TPDO2 = struct.Struct("<HiB"), struct.Struct("<ihH")
+#: cycles without the TPDOs of a node before it counts as lost (a node without heartbeat)
+PDO_TIMEOUT_CYCLES = 3
+
+
+class Cia402Error(ConnectionError):
+    """A CiA 402 drive could not be set up on its bus (no answer, an object it refuses)."""
+
+
+class _Channel(DriveChannel):
+    """One axis's CiA 402 drive (``axis.drive``)."""
+
+    def __init__(self, group: "Cia402Drives", index: int, spec: DriveSpec, link: Cia402Link):
+        self.group, self.index, self.link = group, index, link
+        self.node_id = link.node_id
+        self.mode = MODE_NAMES[link.mode]
+        self.spec = spec
+        self.q = 1.0                    # axis length unit per increment
+        self.off = 0.0                  # axis position = increments * q + off
+        self.reports: DriveReports | None = None
+        self.simulated: Any = None      # the SimulatedCia402 of this node when the project started one
+        self.remote: canopen.RemoteNode | None = None
+        # what the drive sent last
+        self.statusword = 0
+        self.state: State | None = None
+        self.mode_display = 0
+        self.position = 0
+        self.velocity = 0
+        self.torque = 0
+        self.error_code = 0
+        self.emcy: list[tuple[int, int]] = []     # (error code, error register) received, newest last
+        # what the master wants
+        self.enable = False
+        self.quick_stop_request = False
+        self.forced_fault = False                # a drive fault injected on the controller side
+        self.controlword = 0
+        self._reset_edge = False
+        self._nmt_start = False
+        self._pp_target: int | None = None
+        self._pp_pulse = False
+        # supervision
+        self.last_heartbeat = 0.0
+        self.heartbeat_state: int | None = None
+        self.missed = 0
+        self.fault_reported = False
+        self.comm_reported = False
+        self.settle_until = -math.inf
+        self._echo = False
+        self._emcy_fault = False
+
+    # --- the kernel's view ----------------------------------------------------------------------------
+    def attach(self, reports: DriveReports) -> None:
+        self.reports = reports
+
+    def set_enable(self, on: bool, t: float) -> None:
+        self.enable = on
+        if on:
+            self.quick_stop_request = False
+
+    def ready(self, t: float) -> bool:
+        return (self.state is State.OPERATION_ENABLED and self.mode_display == self.mode and not self.forced_fault
+                and self.communication_ok)
+
+    @property
+    def communication_ok(self) -> bool:
+        return not self.comm_reported and self.missed < PDO_TIMEOUT_CYCLES
+
+    def set_fault(self, on: bool) -> None:
+        if self._echo:
+            return                      # the alarm this channel reported comes back here: nothing to do
+        if on:
+            self.forced_fault = True
+            return
+        # MC_Reset: acknowledge - a fault reset edge to the drive, and look at the drive anew afterwards
+        self.forced_fault = False
+        self.fault_reported = self.comm_reported = False
+        self._reset_edge = True
+        self._nmt_start = self.heartbeat_state is not None and self.heartbeat_state != 0x05
+        g = self.group
+        self.settle_until = g.now + max(3 * g.servo_cycle, 0.02)
+
+    def set_actual(self, bank: Any, value: float) -> None:
+        self.off = value - self.position * self.q
+        bank.act_p[self.index] = value
+
+    def mechanical_position(self) -> float:
+        return self.position * self.q
+
+    def quick_stop(self) -> None:
+        """Send the quick stop command: the drive stops with its quick stop deceleration (0x6085) and ends
+        in SWITCH ON DISABLED; a new enable of the axis switches it on again."""
+        self.quick_stop_request = True
+
+    # --- the cycle ------------------------------------------------------------------------------------
+    def _report(self, kind: str) -> None:
+        if self.reports is None:
+            return
+        self._echo = True
+        try:
+            self.reports.inject(kind, "")
+        finally:
+            self._echo = False
+
+    def _take(self, tpdo1: bytes | None, tpdo2: bytes | None, events: list[tuple[int, bytes]], t: float) -> None:
+        for cob, data in events:
+            if cob >= 0x700:
+                self.last_heartbeat = t
+                self.heartbeat_state = data[0] & 0x7F if data else None
+            elif len(data) >= 3:
+                code, register = struct.unpack_from("<HB", data)
+                self.emcy.append((code, register))
+                del self.emcy[:-16]
+                if code:
+                    self._emcy_fault = True
+        if tpdo1 is not None and tpdo2 is not None:
+            self.missed = 0
+            self.statusword, self.position, self.mode_display = _TPDO1.unpack_from(tpdo1)
+            self.velocity, self.torque, self.error_code = _TPDO2.unpack_from(tpdo2)
+            self.state = P.state_of(self.statusword)
+        else:
+            self.missed += 1
+        if t < self.settle_until:
+            self._emcy_fault = False
+            return
+        faulted = self.state in (State.FAULT, State.FAULT_REACTION_ACTIVE) or self._emcy_fault
+        self._emcy_fault = False
+        if faulted and not self.fault_reported:
+            self.fault_reported = True
+            self._report("drive")
+        hb = self.link.heartbeat_ms * 1e-3
+        lost = self.missed >= PDO_TIMEOUT_CYCLES
+        if hb > 0:
+            lost = lost or t - self.last_heartbeat > max(1.5 * hb, 2 * self.group.servo_cycle)
+            lost = lost or (self.heartbeat_state is not None and self.heartbeat_state != 0x05)
+        if lost and not self.comm_reported:
+            self.comm_reported = True
+            self._report("communication_loss")
+
+    def _rpdo(self, bank: Any) -> bytes:
+        enable = self.enable and not self.forced_fault and self.communication_ok
+        cw = P.next_command(self.state, enable, self.quick_stop_request)
+        if self._reset_edge:
+            cw, self._reset_edge = P.FAULT_RESET, False
+        operating = self.state is State.OPERATION_ENABLED and enable
+        i = self.index
+        mode = self.mode
+        if mode in (Mode.CYCLIC_SYNC_POSITION, Mode.PROFILE_POSITION):
+            target = self._increments(float(bank.sp_p[i])) if operating else self.position
+            if mode is Mode.PROFILE_POSITION and operating:
+                # streamed set points: a new one (bit 4 rising, change at once) whenever it moved
+                if self._pp_pulse:
+                    self._pp_pulse = False
+                    target = self._pp_target if self._pp_target is not None else target
+                elif target != self._pp_target:
+                    self._pp_target, self._pp_pulse = target, True
+                    cw |= P.CW_NEW_SETPOINT | P.CW_CHANGE_IMMEDIATELY
+                else:
+                    target = self._pp_target
+            value = struct.pack("<i", target)
+        elif mode is Mode.CYCLIC_SYNC_TORQUE:
+            rev_s = (float(bank.cmd_v[i]) - float(bank.act_v[i])) / self.spec.length_per_revolution
+            torque = self.link.speed_gain * rev_s if operating else 0.0
+            value = struct.pack("<h", int(max(-32768, min(32767, round(torque)))))
+        else:
+            v = float(bank.cmd_v[i]) / self.q if operating else 0.0
+            value = struct.pack("<i", int(max(-2**31, min(2**31 - 1, round(v)))))
+        self.controlword = cw
+        return struct.pack("<H", cw) + value + struct.pack("<b", int(mode))
+
+    def _increments(self, position: float) -> int:
+        n = round((position - self.off) / self.q)
+        return int(max(-2**31, min(2**31 - 1, n)))
+
+
+class Cia402Drives(DriveGroup):
+    """The CiA 402 drives on one CAN bus (``interface``/``channel``)."""
+
+    def __init__(self, interface: str, channel: str, *, bitrate: int | None = None, paced: bool = False):
+        self.interface, self.channel, self.bitrate, self.paced = interface, channel, bitrate, paced
+        self.network = self._connect()
+        self.sim_network: canopen.Network | None = None
+        self.members: list[_Channel] = []
+        self.by_id: dict[int, _Channel] = {}
+        self.simulated: dict[int, Any] = {}
+        self.servo_cycle = 0.001
+        self.now = 0.0
+        self._cond = threading.Condition()
+        self._rx: dict[int, bytes] = {}
+        self._pending: set[int] = set()
+        self._events: list[tuple[int, bytes]] = []
+        self._wall0: float | None = None
+        self._t0 = 0.0
+        self.late_cycles = 0              # cycles in which a node's TPDOs did not arrive in time
+
+    def _connect(self) -> canopen.Network:
+        network = canopen.Network()
+        kw: dict[str, Any] = {"interface": self.interface, "channel": self.channel}
+        if self.bitrate is not None and self.interface != "virtual":
+            kw["bitrate"] = self.bitrate
+        try:
+            network.connect(**kw)
+        except Exception as exc:  # noqa: BLE001 - python-can raises many kinds; name the bus
+            raise Cia402Error(f"CAN bus {self.interface}/{self.channel} cannot be opened: {exc}") from None
+        return network
+
+    # --- members --------------------------------------------------------------------------------------
+    def add(self, index: int, spec: DriveSpec, servo_cycle: float, t: float) -> DriveChannel:
+        link: Cia402Link = spec.link
+        if link.node_id in self.by_id:
+            raise Cia402Error(f"node {link.node_id} on {self.interface}/{self.channel} drives another axis already")
+        self.servo_cycle, self.now = servo_cycle, t
+        ch = _Channel(self, index, spec, link)
+        inc = link.increments_per_revolution
+        if link.simulate:
+            from .simulated import SimulatedCia402
+            if self.sim_network is None:
+                self.sim_network = self._connect()
+            per_rev = inc or spec.encoder.steps_per_revolution << spec.encoder.fine_bits
+            motor = MotorSpec(speed_time_constant=spec.plant.speed_time_constant,
+                              initial_position=spec.plant.initial_position / spec.length_per_revolution * per_rev)
+            sim = SimulatedCia402(link.node_id, eds=link.eds, motor=motor)
+            sim.values[(0x608F, 1)], sim.values[(0x608F, 2)] = per_rev, 1
+            sim.connect(self.sim_network)
+            self.simulated[link.node_id] = ch.simulated = sim
+        self._configure(ch, spec, servo_cycle)
+        ch.last_heartbeat = t
+        self.members.append(ch)
+        self.by_id[link.node_id] = ch
+        tp1, tp2 = 0x180 + link.node_id, 0x280 + link.node_id
+        self.network.subscribe(tp1, self._on_tpdo)
+        self.network.subscribe(tp2, self._on_tpdo)
+        self.network.subscribe(0x80 + link.node_id, self._on_event)
+        self.network.subscribe(0x700 + link.node_id, self._on_event)
+        ch.remote.nmt.send_command(_NMT_START)
+        return ch
+
+    def _configure(self, ch: _Channel, spec: DriveSpec, servo_cycle: float) -> None:
+        """SDO set-up of a node in PRE-OPERATIONAL: timing, heartbeat, PDO mapping, mode, units, ramps."""
+        link = ch.link
+        node = canopen.RemoteNode(link.node_id, link.eds)
+        self.network.add_node(node)
+        ch.remote = node
+        nid = link.node_id
+        what = "NMT pre-operational"
+        try:
+            node.nmt.send_command(_NMT_PRE_OPERATIONAL)
+            sdo = node.sdo
+            what = "0x608F position encoder resolution"
+            if link.increments_per_revolution is not None:
+                sdo[0x608F][1].raw = link.increments_per_revolution
+                sdo[0x608F][2].raw = 1
+            per_rev = sdo[0x608F][1].raw / max(sdo[0x608F][2].raw, 1)
+            ch.q = spec.length_per_revolution / per_rev
+            us = int(round(servo_cycle * 1e6))
+            value, exp = (us // 100, -4) if us % 1000 else (us // 1000, -3)
+            for what, index, sub, v in (
+                    ("0x1006 communication cycle period", 0x1006, None, us),
+                    ("0x60C2 interpolation time period", 0x60C2, 1, min(value, 255)),
+                    ("0x60C2 interpolation time index", 0x60C2, 2, exp),
+                    ("0x1017 producer heartbeat time", 0x1017, None, link.heartbeat_ms),
+                    ("0x607E polarity", 0x607E, None, 0xC0 if spec.encoder.inverse_direction else 0),
+                    ("0x6080 max motor speed", 0x6080, None, int(round(spec.max_speed))),
+                    ("0x6060 modes of operation", 0x6060, None, int(ch.mode))):
+                (sdo[index] if sub is None else sdo[index][sub]).raw = v
+            ramp = spec.max_velocity / ch.q / spec.off_ramp_time if spec.off_ramp_time > 0 else 2**32 - 1
+            ramp = int(min(ramp, 2**32 - 1))
+            for what, index, v in (("0x6085 quick stop deceleration", 0x6085, ramp),
+                                   ("0x6083 profile acceleration", 0x6083, ramp),
+                                   ("0x6084 profile deceleration", 0x6084, ramp),
+                                   ("0x6081 profile velocity", 0x6081,
+                                    int(min(spec.max_velocity / ch.q, 2**32 - 1)))):
+                sdo[index].raw = v
+            target = {Mode.CYCLIC_SYNC_VELOCITY: (0x60FF, 32), Mode.PROFILE_VELOCITY: (0x60FF, 32),
+                      Mode.CYCLIC_SYNC_TORQUE: (0x6071, 16)}.get(ch.mode, (0x607A, 32))
+            maps = {0x1400: (0x200 + nid, [(0x6040, 16), target, (0x6060, 8)]),
+                    0x1800: (0x180 + nid, [(0x6041, 16), (0x6064, 32), (0x6061, 8)]),
+                    0x1801: (0x280 + nid, [(0x606C, 32), (0x6077, 16), (0x603F, 16)])}
+            for com in (0x1400, 0x1401, 0x1402, 0x1403, 0x1800, 0x1801, 0x1802, 0x1803):
+                what = f"PDO 0x{com:04X}"
+                cob = sdo[com][1].raw
+                sdo[com][1].raw = cob | 0x80000000
+                if com not in maps:
+                    continue
+                cob_id, entries = maps[com]
+                mapping = com + 0x200
+                sdo[com][2].raw = 1                     # synchronous, every SYNC
+                sdo[mapping][0].raw = 0
+                for k, (index, bits) in enumerate(entries, 1):
+                    sdo[mapping][k].raw = (index << 16) | bits
+                sdo[mapping][0].raw = len(entries)
+                sdo[com][1].raw = cob_id
+            what = "0x6064 position actual value"
+            ch.position = sdo[0x6064].raw
+        except (SdoCommunicationError, SdoAbortedError, KeyError) as exc:
+            raise Cia402Error(f"CiA 402 drive node {nid} on {self.interface}/{self.channel}: setting {what} "
+                              f"failed ({exc})") from None
+        ch.off = spec.plant.initial_position - ch.position * ch.q if link.simulate else 0.0
+
+    # --- bus callbacks (the network's notifier thread) -------------------------------------------------
+    def _on_tpdo(self, can_id: int, data: bytearray, timestamp: float) -> None:
+        with self._cond:
+            self._rx[can_id] = bytes(data)
+            self._pending.discard(can_id)
+            if not self._pending:
+                self._cond.notify_all()
+
+    def _on_event(self, can_id: int, data: bytearray, timestamp: float) -> None:
+        with self._cond:
+            self._events.append((can_id, bytes(data)))
+
+    # --- the cycle ------------------------------------------------------------------------------------
+    def read(self, bank: Any, t: float, dt: float) -> None:
+        if not self.members:
+            return
+        self.now = t
+        if self.paced:
+            self._pace(t)
+        expect = set()
+        for ch in self.members:
+            if ch.missed < PDO_TIMEOUT_CYCLES or ch.missed % PDO_TIMEOUT_CYCLES == 0:
+                expect.update((0x180 + ch.node_id, 0x280 + ch.node_id))
+        with self._cond:
+            self._rx.clear()
+            self._pending = expect
+        self.network.sync.transmit()
+        timeout = 0.8 * self.servo_cycle if self.paced else 0.5
+        with self._cond:
+            if not self._cond.wait_for(lambda: not self._pending, timeout):
+                self.late_cycles += 1
+            rx, events = dict(self._rx), self._events
+            self._events = []
+        for ch in self.members:
+            nid = ch.node_id
+            mine = [(cob, data) for cob, data in events if cob & 0x7F == nid]
+            ch._take(rx.get(0x180 + nid), rx.get(0x280 + nid), mine, t)
+            i = ch.index
+            bank.act_p[i] = ch.position * ch.q + ch.off
+            bank.act_v[i] = ch.velocity * ch.q
+
+    def write(self, bank: Any, t: float) -> None:
+        for ch in self.members:
+            if ch._nmt_start:
+                ch._nmt_start = False
+                ch.remote.nmt.send_command(_NMT_START)
+            self.network.send_message(0x200 + ch.node_id, ch._rpdo(bank))
+
+    def _pace(self, t: float) -> None:
+        now = time.perf_counter()
+        if self._wall0 is None:
+            self._wall0, self._t0 = now, t
+        delay = self._wall0 + (t - self._t0) - now
+        if delay > 0:
+            time.sleep(delay)
+
+    def close(self) -> None:
+        for net in (self.network, self.sim_network):
+            if net is not None:
+                try:
+                    net.disconnect()
+                except Exception:  # noqa: BLE001 - closing a bus that is gone already
+                    pass
+        self.sim_network = None

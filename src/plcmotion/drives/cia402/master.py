@@ -21,7 +21,8 @@ So the bus carries, per node and cycle, one RPDO, one SYNC (shared) and two TPDO
 outcome depends on the frames only, never on thread timing: with the simulated drive (which answers on
 its own notifier thread, synchronously on SYNC) the same program gives the same trace bit for bit.  On a
 real bus the group paces the virtual time to the wall clock (``Cia402Link.realtime``), and the waiting is
-bounded by 80 % of the servo cycle.
+bounded by 80 % of the servo cycle (0.1 s on the virtual bus).  A node that missed a cycle is not waited
+for until its TPDOs come again but looked for during 2 ms, so a lost node costs one bounded wait and a node that comes back is found.
 
 Units: position [inc] = (axis position - homing offset) / increment, increment = load travel per motor
 revolution / increments per motor revolution (0x608F); velocities in inc/s.
@@ -139,12 +140,12 @@ class _Channel(DriveChannel):
         self.quick_stop_request = True
 
     # --- the cycle ------------------------------------------------------------------------------------
-    def _report(self, kind: str) -> None:
+    def _report(self, kind: str, detail: str = "") -> None:
         if self.reports is None:
             return
         self._echo = True
         try:
-            self.reports.inject(kind, "")
+            self.reports.inject(kind, detail)
         finally:
             self._echo = False
 
@@ -159,6 +160,7 @@ class _Channel(DriveChannel):
                 del self.emcy[:-16]
                 if code:
                     self._emcy_fault = True
+        before = self.state
         if tpdo1 is not None and tpdo2 is not None:
             self.missed = 0
             self.statusword, self.position, self.mode_display = _TPDO1.unpack_from(tpdo1)
@@ -174,6 +176,11 @@ class _Channel(DriveChannel):
         if faulted and not self.fault_reported:
             self.fault_reported = True
             self._report("drive")
+        elif (self.enable and before is State.OPERATION_ENABLED and self.state is not State.OPERATION_ENABLED
+              and not faulted and not self.fault_reported):
+            # the drive left operation by itself (quick stop, its own shutdown) while the axis holds the enable
+            self.fault_reported = True
+            self._report("drive", "shutdown")
         hb = self.link.heartbeat_ms * 1e-3
         lost = self.missed >= PDO_TIMEOUT_CYCLES
         if hb > 0:
@@ -241,6 +248,7 @@ class Cia402Drives(DriveGroup):
 
     def _connect(self) -> canopen.Network:
         network = canopen.Network()
+        network.NOTIFIER_CYCLE = 0.05           # the notifier thread notices a disconnect within 50 ms
         kw: dict[str, Any] = {"interface": self.interface, "channel": self.channel}
         if self.bitrate is not None and self.interface != "virtual":
             kw["bitrate"] = self.bitrate
@@ -348,8 +356,7 @@ class Cia402Drives(DriveGroup):
         with self._cond:
             self._rx[can_id] = bytes(data)
             self._pending.discard(can_id)
-            if not self._pending:
-                self._cond.notify_all()
+            self._cond.notify_all()
 
     def _on_event(self, can_id: int, data: bytearray, timestamp: float) -> None:
         with self._cond:
@@ -362,18 +369,20 @@ class Cia402Drives(DriveGroup):
         self.now = t
         if self.paced:
             self._pace(t)
-        expect = set()
+        # wait for the nodes that answered last cycle; a silent node gets only a short look (2 ms)
+        main, extra = set(), set()
         for ch in self.members:
-            if ch.missed < PDO_TIMEOUT_CYCLES or ch.missed % PDO_TIMEOUT_CYCLES == 0:
-                expect.update((0x180 + ch.node_id, 0x280 + ch.node_id))
+            (extra if ch.missed else main).update((0x180 + ch.node_id, 0x280 + ch.node_id))
         with self._cond:
             self._rx.clear()
-            self._pending = expect
+            self._pending = main | extra
         self.network.sync.transmit()
-        timeout = 0.8 * self.servo_cycle if self.paced else 0.5
+        timeout = 0.8 * self.servo_cycle if self.paced else 0.1
         with self._cond:
-            if not self._cond.wait_for(lambda: not self._pending, timeout):
+            if not self._cond.wait_for(lambda: not self._pending & main, timeout):
                 self.late_cycles += 1
+            if extra:
+                self._cond.wait_for(lambda: not self._pending, min(0.002, timeout))
             rx, events = dict(self._rx), self._events
             self._events = []
         for ch in self.members:

@@ -202,11 +202,13 @@ del C
 def next_command(state: State | None, enable: bool, quick_stop: bool = False) -> int:
     """The controlword a master sends in ``state`` to walk towards OPERATION ENABLED (``enable``) or
     towards SWITCH ON DISABLED / READY TO SWITCH ON (not ``enable``); ``quick_stop`` requests a quick
-    stop from OPERATION ENABLED."""
+    stop (from OPERATION ENABLED; elsewhere it keeps the drive switched off)."""
     if state is None or state in (State.FAULT, State.FAULT_REACTION_ACTIVE, State.NOT_READY_TO_SWITCH_ON):
         return DISABLE_VOLTAGE
-    if quick_stop and state in (State.OPERATION_ENABLED, State.QUICK_STOP_ACTIVE):
-        return QUICK_STOP
+    if quick_stop:
+        # quick stop from operation; once it ended in SWITCH ON DISABLED the drive stays there until the
+        # master asks for operation anew
+        return QUICK_STOP if state in (State.OPERATION_ENABLED, State.QUICK_STOP_ACTIVE) else DISABLE_VOLTAGE
     if not enable:
         return SHUTDOWN if state is not State.QUICK_STOP_ACTIVE else DISABLE_VOLTAGE
     if state is State.SWITCH_ON_DISABLED:

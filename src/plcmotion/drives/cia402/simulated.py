@@ -276,6 +276,7 @@ def start_simulated(interface: str, channel: str, node_id: int, *, bitrate: int 
                     eds: str = EDS_PATH, motor: MotorSpec = MotorSpec()) -> tuple[SimulatedCia402, canopen.Network]:
     """A simulated drive on its own connection to the bus ``interface``/``channel``."""
     network = canopen.Network()
+    network.NOTIFIER_CYCLE = 0.05
     kw: dict[str, Any] = {"interface": interface, "channel": channel}
     if bitrate is not None and interface != "virtual":
         kw["bitrate"] = bitrate

@@ -99,8 +99,8 @@ class Cia402Link(DriveLink):
     def bind(self, spec: DriveSpec) -> DriveSpec:
         if spec.actuator is not ActuatorKind.SPEED_SERVO:
             what = "a stepper on a pulse output" if spec.actuator is ActuatorKind.PULSE else "a simulated axis"
-            raise ValueError(f"a CiA 402 drive needs an axis with a drive and an encoder (a servo axis); this "
-                             f"axis is configured as {what}")
+            raise ValueError(f"a CiA 402 drive (connect_drive, [drives.<axis>]) needs an axis with a drive and an "
+                             f"encoder (a servo axis); this axis is configured as {what}")
         return replace(spec, interface=SetpointInterface.CANOPEN, link=self)
 
 

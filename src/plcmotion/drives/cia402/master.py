@@ -415,4 +415,7 @@ class Cia402Drives(DriveGroup):
                     net.disconnect()
                 except Exception:  # noqa: BLE001 - closing a bus that is gone already
                     pass
+                net.subscribers.clear()         # no callback keeps the axes alive after the bus is closed
+        for ch in self.members:
+            ch.reports = None
         self.sim_network = None

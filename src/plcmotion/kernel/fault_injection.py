@@ -141,9 +141,9 @@ class FaultInjection:
                                  "(PROFIdrive or analog drive, Simulation.Mode = 0)")
             return [("encoder", "station" if on_bus else "hardware")]
         if not ax.servo or ax.config.drive.interface not in _BUS_INTERFACES:
-            raise ValueError(f"axis {ax.name}: communication_loss needs a drive on a bus (PROFIdrive: Actor.Type "
-                             "= 1, Simulation.Mode = 0; or a CiA 402 drive); an analog drive or a pulse output "
-                             "has no bus")
+            raise ValueError(f"axis {ax.name}: communication_loss needs a PROFIdrive axis (Actor.Type = 1, "
+                             "Simulation.Mode = 0) or a drive on a bus (CiA 402); an analog drive or a pulse "
+                             "output has no bus")
         lost = [("drive", "station")]
         if encoder is EncoderInterface.DRIVE_TELEGRAM:
             lost.append(("encoder", "station"))      # the encoder travels in the drive's telegram

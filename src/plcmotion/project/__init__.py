@@ -138,7 +138,10 @@ def load_project(path: str | os.PathLike, *, allow_outside_paths: bool = False) 
 
 def check_project(path: str | os.PathLike, *, allow_outside_paths: bool = False) -> list[str]:
     """All problems of the project file at ``path``; an empty list when it loads."""
-    return _Loader(path, allow_outside_paths).load()[1]
+    ctl, problems = _Loader(path, allow_outside_paths).load()
+    if ctl is not None:
+        ctl.close()                              # nothing runs on a checked project: release drive buses
+    return problems
 
 
 __all__ = ["AXIS_TYPES", "AXIS_TYPES_1500", "SECTIONS", "ProjectError", "check_project", "load_project", "toml_value"]

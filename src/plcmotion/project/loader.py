@@ -118,7 +118,10 @@ class _Loader:
         load_faults(self, ctl, doc.get("faults"), declared)
         trace = self.trace(ctl, doc.get("trace"), declared)
         ctl.project = {"path": self.label, "trace": trace}  # type: ignore[attr-defined]
-        return (None if self.problems else ctl), self.problems
+        if self.problems:
+            ctl.close()                          # a drive bus opened for a valid axis is released again
+            return None, self.problems
+        return ctl, self.problems
 
 
     def read(self) -> dict[str, Any] | None:

@@ -49,6 +49,8 @@ _NMT_START, _NMT_PRE_OPERATIONAL = 0x01, 0x80
 _TPDO1, _TPDO2 = struct.Struct("<HiB"), struct.Struct("<ihH")
 #: cycles without the TPDOs of a node before it counts as lost (a node without heartbeat)
 PDO_TIMEOUT_CYCLES = 3
+#: virtual CAN channel -> the group that has it (``Cia402Drives._claim_virtual``)
+_VIRTUAL_OWNERS: dict[str, "Cia402Drives"] = {}
 
 
 class Cia402Error(ConnectionError):
@@ -231,6 +233,7 @@ class Cia402Drives(DriveGroup):
 
     def __init__(self, interface: str, channel: str, *, bitrate: int | None = None, paced: bool = False):
         self.interface, self.channel, self.bitrate, self.paced = interface, channel, bitrate, paced
+        self._claim_virtual()
         self.network = self._connect()
         self.sim_network: canopen.Network | None = None
         self.members: list[_Channel] = []
@@ -245,6 +248,18 @@ class Cia402Drives(DriveGroup):
         self._wall0: float | None = None
         self._t0 = 0.0
         self.late_cycles = 0              # cycles in which a node's TPDOs did not arrive in time
+
+    def _claim_virtual(self) -> None:
+        """python-can's virtual bus is one per process: a virtual channel belongs to one controller at a time,
+        and opening it again closes the earlier controller's connection (and its simulated drives), as if
+        that controller had been switched off - a controller dropped without ``close`` cannot disturb the
+        next one."""
+        if self.interface != "virtual":
+            return
+        earlier = _VIRTUAL_OWNERS.get(self.channel)
+        if earlier is not None and earlier is not self:
+            earlier.close()
+        _VIRTUAL_OWNERS[self.channel] = self
 
     def _connect(self) -> canopen.Network:
         network = canopen.Network()
@@ -419,3 +434,5 @@ class Cia402Drives(DriveGroup):
         for ch in self.members:
             ch.reports = None
         self.sim_network = None
+        if _VIRTUAL_OWNERS.get(self.channel) is self:
+            del _VIRTUAL_OWNERS[self.channel]

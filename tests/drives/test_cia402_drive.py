@@ -230,3 +230,25 @@ def test_drives_cia402_s7_1200_power_and_move_absolute_trace(rigs):
     assert abs(pos[0]) < 1e-6 and abs(pos[-1] - 35.0) <= 0.05
     assert max(pos) <= 35.0 + 0.05
     assert abs(r.sim.position * MM_PER_INC - 35.0) <= 0.05
+
+
+def test_drives_cia402_homing_mode_from_the_master(rigs):
+    """Drive-based homing (CiA 402-2 homing mode 6, method 35: the current position is the home position)
+    run by the master while the axis is disabled: the drive is switched on in mode 6, started with
+    controlword bit 4, and switched off again when the statusword shows homing attained (bits 10 and 12);
+    the position then reads the home offset 0x607C (here 5 mm) and the drive is back in its operating mode
+    (csp: mode display 8) when the axis is enabled again."""
+    r = rigs("csp", enable=False)
+    r.steps(3)
+    words = _words(r)
+    r.drive.home_in_drive(35, offset=5.0)
+    r.until(lambda: r.drive.homing != "running", 0.1, "homing ended")
+    assert r.drive.homing == "attained"
+    assert 0x1F in [cw for cw, _ in words]                     # enable operation + start homing
+    assert any(sw & 0x1400 == 0x1400 for _, sw in words)      # homing attained, target reached
+    assert r.axis.ActualPosition == pytest.approx(5.0, abs=MM_PER_INC)
+    r.power.Enable = True
+    r.until(lambda: r.power.Status, 0.1, "enabled")
+    assert r.drive.mode_display == 8
+    with pytest.raises(RuntimeError, match="needs the axis disabled"):
+        r.drive.home_in_drive(35)

@@ -68,6 +68,10 @@ def test_drives_cia402_basenode402_profile_position(bus):
     sim = drive(5)
     node = BaseNode402(5, EDS_PATH)
     master.add_node(node)
+    # BaseNode402's waits are wall-clock: generous bounds for a loaded test machine (its logic is unchanged)
+    node.sdo.RESPONSE_TIMEOUT = 2.0
+    node.TIMEOUT_SWITCH_STATE_FINAL = node.TIMEOUT_SWITCH_STATE_SINGLE = 5.0
+    node.TIMEOUT_SWITCH_OP_MODE = node.TIMEOUT_CHECK_TPDO = 2.0
     node.nmt.state = "PRE-OPERATIONAL"
     node.setup_402_state_machine()
     node.nmt.state = "OPERATIONAL"
@@ -115,6 +119,7 @@ def test_drives_cia402_homing_current_position(bus, method):
     drive(6, initial_position=12_345.0)
     node = canopen.RemoteNode(6, EDS_PATH)
     master.add_node(node)
+    node.sdo.RESPONSE_TIMEOUT = 2.0             # a loaded test machine may schedule the drive's thread late
     node.nmt.send_command(0x01)
     _enable(node)
     node.sdo[0x6060].raw = 6
@@ -138,6 +143,7 @@ def test_drives_cia402_homing_switch(bus):
     sim = drive(7, home_switch=100_000.0)
     node = canopen.RemoteNode(7, EDS_PATH)
     master.add_node(node)
+    node.sdo.RESPONSE_TIMEOUT = 2.0
     node.nmt.send_command(0x01)
     _enable(node)
     node.sdo[0x6060].raw = 6

@@ -21,7 +21,8 @@ So the bus carries, per node and cycle, one RPDO, one SYNC (shared) and two TPDO
 outcome depends on the frames only, never on thread timing: with the simulated drive (which answers on
 its own notifier thread, synchronously on SYNC) the same program gives the same trace bit for bit.  On a
 real bus the group paces the virtual time to the wall clock (``Cia402Link.realtime``), and the waiting is
-bounded by 80 % of the servo cycle (0.1 s on the virtual bus).  A node that missed a cycle is not waited
+bounded by 80 % of the servo cycle (``VIRTUAL_WAIT`` on the virtual bus, where a loaded machine may
+schedule the simulated drive's thread late).  A node that missed a cycle is not waited
 for until its TPDOs come again but looked for during 2 ms, so a lost node costs one bounded wait and a node that comes back is found.
 
 Units: position [inc] = (axis position - homing offset) / increment, increment = load travel per motor
@@ -49,6 +50,11 @@ _NMT_START, _NMT_PRE_OPERATIONAL = 0x01, 0x80
 _TPDO1, _TPDO2 = struct.Struct("<HiB"), struct.Struct("<ihH")
 #: cycles without the TPDOs of a node before it counts as lost (a node without heartbeat)
 PDO_TIMEOUT_CYCLES = 3
+#: the bound of the wait for TPDOs on the virtual bus [s] (wall clock; generous: it only costs when a node
+#: is lost, and a late thread must not look like a lost node)
+VIRTUAL_WAIT = 0.5
+#: SDO response timeout while a node is set up [s]
+SDO_TIMEOUT = 1.0
 #: virtual CAN channel -> the group that has it (``Cia402Drives._claim_virtual``)
 _VIRTUAL_OWNERS: dict[str, "Cia402Drives"] = {}
 
@@ -84,10 +90,14 @@ class _Channel(DriveChannel):
         self.quick_stop_request = False
         self.forced_fault = False                # a drive fault injected on the controller side
         self.controlword = 0
+        self._sent = (0, 0)             # the last two controlwords sent (a drive answers one SYNC later)
         self._reset_edge = False
         self._nmt_start = False
         self._pp_target: int | None = None
         self._pp_pulse = False
+        #: drive-based homing (``home_in_drive``): "", "running", "attained", "error"
+        self.homing = ""
+        self._homing_started = False
         # supervision
         self.last_heartbeat = 0.0
         self.heartbeat_state: int | None = None
@@ -179,8 +189,10 @@ class _Channel(DriveChannel):
             self.fault_reported = True
             self._report("drive")
         elif (self.enable and before is State.OPERATION_ENABLED and self.state is not State.OPERATION_ENABLED
-              and not faulted and not self.fault_reported):
-            # the drive left operation by itself (quick stop, its own shutdown) while the axis holds the enable
+              and not faulted and not self.fault_reported
+              and (self.quick_stop_request
+                   or all(P.command_of(cw) is P.Command.ENABLE_OPERATION for cw in self._sent))):
+            # the drive left operation while the axis holds the enable: by itself, or by a quick stop
             self.fault_reported = True
             self._report("drive", "shutdown")
         hb = self.link.heartbeat_ms * 1e-3
@@ -193,6 +205,8 @@ class _Channel(DriveChannel):
             self._report("communication_loss")
 
     def _rpdo(self, bank: Any) -> bytes:
+        if self.homing == "running":
+            return self._homing_rpdo()
         enable = self.enable and not self.forced_fault and self.communication_ok
         cw = P.next_command(self.state, enable, self.quick_stop_request)
         if self._reset_edge:
@@ -221,7 +235,57 @@ class _Channel(DriveChannel):
             v = float(bank.cmd_v[i]) / self.q if operating else 0.0
             value = struct.pack("<i", int(max(-2**31, min(2**31 - 1, round(v)))))
         self.controlword = cw
+        self._sent = (cw, self._sent[0])
         return struct.pack("<H", cw) + value + struct.pack("<b", int(mode))
+
+    # --- homing mode (drive-based homing) ------------------------------------------------------------------
+    def home_in_drive(self, method: int, *, offset: float = 0.0, switch_speed: float | None = None,
+                      zero_speed: float | None = None, acceleration: float | None = None) -> None:
+        """Run the drive's own homing (CiA 402 homing mode 6) while the axis is disabled.
+
+        ``method`` is the drive's homing method 0x6098 (e.g. 35/37: here is home, 19: home switch), ``offset``
+        the home offset 0x607C [axis length unit]; the speeds 0x6099 [length unit/s] and the acceleration
+        0x609A [length unit/s^2] are written when given.  The master switches the drive on in homing mode,
+        starts it (controlword bit 4) and switches it off again when the statusword shows "homing attained"
+        (bits 12 + 10: :attr:`homing` = "attained") or a homing error (bit 13: "error").  The drive's
+        position then counts from its home position; MC_Home with direct homing marks the axis homed."""
+        if self.enable:
+            raise RuntimeError(f"node {self.node_id}: drive-based homing needs the axis disabled (MC_Power "
+                               "Enable = FALSE); the kernel moves an enabled axis itself")
+        if isinstance(method, bool) or not isinstance(method, int) or not -128 <= method <= 127:
+            raise ValueError(f"homing method must be an integer in [-128, 127] (0x6098), got {method!r}")
+        sdo = self.remote.sdo
+        sdo[0x6098].raw = method
+        sdo[0x607C].raw = int(round(offset / self.q))
+        if switch_speed is not None:
+            sdo[0x6099][1].raw = int(round(abs(switch_speed) / self.q))
+        if zero_speed is not None:
+            sdo[0x6099][2].raw = int(round(abs(zero_speed) / self.q))
+        if acceleration is not None:
+            sdo[0x609A].raw = int(round(abs(acceleration) / self.q))
+        self.off = 0.0
+        self.homing = "running"
+        self._homing_started = False
+
+    def _homing_rpdo(self) -> bytes:
+        sw, state = self.statusword, self.state
+        cw = P.next_command(state, True)
+        if state is State.OPERATION_ENABLED and self.mode_display == Mode.HOMING:
+            if self._homing_started and sw & P.SW_OMS13:
+                self.homing, cw = "error", P.SHUTDOWN
+            elif self._homing_started and sw & (P.SW_OMS12 | P.SW_TARGET_REACHED) == P.SW_OMS12 | P.SW_TARGET_REACHED:
+                self.homing, cw = "attained", P.SHUTDOWN
+            else:
+                cw |= P.CW_NEW_SETPOINT
+                self._homing_started = self._homing_started or bool(self.controlword & P.CW_NEW_SETPOINT)
+        elif state in (State.FAULT, State.FAULT_REACTION_ACTIVE):
+            self.homing = "error"
+        mode = Mode.HOMING if self.homing == "running" else self.mode
+        target = self.position if self.mode in (Mode.CYCLIC_SYNC_POSITION, Mode.PROFILE_POSITION) else 0
+        size = "<h" if self.mode is Mode.CYCLIC_SYNC_TORQUE else "<i"
+        self.controlword = cw
+        self._sent = (cw, self._sent[0])
+        return struct.pack("<H", cw) + struct.pack(size, target) + struct.pack("<b", int(mode))
 
     def _increments(self, position: float) -> int:
         n = round((position - self.off) / self.q)
@@ -309,6 +373,7 @@ class Cia402Drives(DriveGroup):
         link = ch.link
         node = canopen.RemoteNode(link.node_id, link.eds)
         self.network.add_node(node)
+        node.sdo.RESPONSE_TIMEOUT = SDO_TIMEOUT
         ch.remote = node
         nid = link.node_id
         what = "NMT pre-operational"
@@ -392,7 +457,7 @@ class Cia402Drives(DriveGroup):
             self._rx.clear()
             self._pending = main | extra
         self.network.sync.transmit()
-        timeout = 0.8 * self.servo_cycle if self.paced else 0.1
+        timeout = 0.8 * self.servo_cycle if self.paced else VIRTUAL_WAIT
         with self._cond:
             if not self._cond.wait_for(lambda: not self._pending & main, timeout):
                 self.late_cycles += 1

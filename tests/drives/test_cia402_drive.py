@@ -252,3 +252,45 @@ def test_drives_cia402_homing_mode_from_the_master(rigs):
     assert r.drive.mode_display == 8
     with pytest.raises(RuntimeError, match="needs the axis disabled"):
         r.drive.home_in_drive(35)
+
+
+def test_drives_cia402_s7_1500_drive_fault():
+    """Family-neutral: on an S7-1500 axis the same EMCY is that family's drive fault - technology alarm 202
+    with ErrorWord bit 4 and StatusDrive.Error (S7-1500T V5 technology alarm 202 "drive fault"; the
+    reaction remove enable); a heartbeat loss sets ErrorWord bit 7 (communication fault) and
+    StatusDrive.CommunicationOK = FALSE; MC_Reset with the causes gone re-enables."""
+    from plcmotion import Controller
+    from plcmotion.drives.cia402 import Cia402Link
+    from plcmotion.s7_1500 import MC_Power, MC_Reset
+    from plcmotion.s7_1500.technology.tags import ALARM_NUMBERS, error_word
+
+    from _cia402_rig import channel
+
+    ctl = Controller(family="S7-1500")
+    ctl.connect_drive("Axis_1", Cia402Link(channel=channel(), node_id=9, simulate=True, heartbeat_ms=20))
+    ax = ctl.add_positioning_axis("Axis_1", {"Actor.Type": 1})
+    try:
+        power, reset = MC_Power(), MC_Reset()
+
+        def cycles(n: int) -> None:
+            for _ in range(n):
+                power(Axis=ax, Enable=True, StartMode=1)
+                reset(Axis=ax, Execute=False)
+                ctl.step()
+        cycles(20)
+        assert power.Status
+        ax.drive.simulated.inject_fault(EMCY_OVERCURRENT)
+        cycles(5)
+        assert [ALARM_NUMBERS[a.kind] for a in ax.alarms] == [202]
+        assert error_word(ax) & (1 << 4) and ax.StatusDrive.Error and not power.Status
+        ax.drive.simulated.heartbeat(False)
+        cycles(15)
+        assert error_word(ax) & (1 << 7) and not ax.StatusDrive.CommunicationOK
+        ax.drive.simulated.heartbeat(True)
+        cycles(10)
+        reset(Axis=ax, Execute=True)
+        ctl.step()
+        cycles(30)
+        assert power.Status and not ax.alarms and ax.StatusDrive.CommunicationOK
+    finally:
+        ctl.close()

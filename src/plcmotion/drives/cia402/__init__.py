@@ -11,9 +11,11 @@ or from a project file with a ``[drives.Axis_1]`` table (``plcmotion.project``).
 * ``profile`` - the CiA 402 words: controlword commands, statusword states, modes, the power state
   machine with its numbered transitions;
 * ``link`` - :class:`Cia402Link`, the checked settings (bus, node, mode, ...), importable without canopen;
-* ``master`` - :class:`Cia402Drives`, the drive group of one bus: SDO set-up, NMT, PDO mapping, the
-  SYNC-driven exchange, faults and heartbeat supervision (the design of one cycle is in its docstring);
-* ``simulated`` / ``drive_core`` - :class:`SimulatedCia402`, a drive on the bus built on a canopen
+* ``master`` - ``Cia402Drives``, the drive group of one bus: SDO set-up, NMT, PDO mapping, the
+  SYNC-driven exchange (the design of one cycle is in its docstring);
+* ``channel`` - ``Cia402Channel``, one axis's drive (``axis.drive``): controlword, set values, faults and
+  heartbeat supervision, drive-based homing (``home_in_drive``), ``quick_stop``;
+* ``simulated`` / ``drive_core`` - ``SimulatedCia402``, a drive on the bus built on a canopen
   LocalNode with the shipped EDS (``EDS_PATH``), for tests and demos without hardware.
 
 Determinism: the master sends its RPDOs at the end of a servo cycle and SYNC at the start of the next,

@@ -132,6 +132,16 @@ node_id = 2
     assert "needs an axis with a drive and an encoder" in text and "stepper on a pulse output" in text
 
 
+def test_drives_cia402_project_node_not_answering(tmp_path):
+    """A node id with no drive behind it is reported when the project is checked, naming the node, the bus
+    and the first object the master could not reach (CiA 301 SDO: no response)."""
+    ch = channel()
+    path = _project(tmp_path, f'[drives.Axis_1]\ntype = "cia402"\nchannel = "{ch}"\nnode_id = 42\n')
+    text = "\n".join(check_project(path))
+    assert f"CiA 402 drive node 42 on virtual/{ch}: 0x608F position encoder resolution: No SDO response" in text
+    assert "is the drive on the bus" in text
+
+
 def test_drives_cia402_cli_run_example(tmp_path):
     """plcmotion run with the example project and program: the S7-1200 slide on the simulated CiA 402 drive
     goes to 80 mm and back; the trace shows the position reaching 80 mm."""

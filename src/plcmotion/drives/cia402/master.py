@@ -194,8 +194,10 @@ class Cia402Drives(DriveGroup):
             what = "0x6064 position actual value"
             ch.position = sdo[0x6064].raw
         except (SdoCommunicationError, SdoAbortedError, KeyError) as exc:
-            raise Cia402Error(f"CiA 402 drive node {nid} on {self.interface}/{self.channel}: setting {what} "
-                              f"failed ({exc})") from None
+            hint = " (is the drive on the bus, with this node id and bit rate?)" \
+                if isinstance(exc, SdoCommunicationError) else ""
+            raise Cia402Error(f"CiA 402 drive node {nid} on {self.interface}/{self.channel}: {what}: {exc}{hint}"
+                              ) from None
         ch.off = spec.plant.initial_position - ch.position * ch.q if link.simulate else 0.0
 
     # --- bus callbacks (the network's notifier thread) -------------------------------------------------

@@ -31,8 +31,10 @@ revolution / increments per motor revolution (0x608F); velocities in inc/s.
 """
 from __future__ import annotations
 
+import atexit
 import threading
 import time
+import weakref
 from typing import Any
 
 import canopen
@@ -53,6 +55,14 @@ VIRTUAL_WAIT = 0.5
 SDO_TIMEOUT = 1.0
 #: virtual CAN channel -> the group that has it (``Cia402Drives._claim_virtual``)
 _VIRTUAL_OWNERS: dict[str, "Cia402Drives"] = {}
+#: groups with an open bus: closed at interpreter exit, so that no notifier thread outlives the program
+_OPEN: "weakref.WeakSet[Cia402Drives]" = weakref.WeakSet()
+
+
+@atexit.register
+def _close_all() -> None:
+    for group in list(_OPEN):
+        group.close()
 
 
 class Cia402Error(ConnectionError):
@@ -66,6 +76,7 @@ class Cia402Drives(DriveGroup):
         self.interface, self.channel, self.bitrate, self.paced = interface, channel, bitrate, paced
         self._claim_virtual()
         self.network = self._connect()
+        _OPEN.add(self)
         self.sim_network: canopen.Network | None = None
         self.members: list[Cia402Channel] = []
         self.by_id: dict[int, Cia402Channel] = {}
@@ -268,5 +279,6 @@ class Cia402Drives(DriveGroup):
         for ch in self.members:
             ch.reports = None
         self.sim_network = None
+        _OPEN.discard(self)
         if _VIRTUAL_OWNERS.get(self.channel) is self:
             del _VIRTUAL_OWNERS[self.channel]

@@ -171,6 +171,7 @@ def cmd_check(args: argparse.Namespace) -> int:
     family = "" if ctl.family == families.default().name else f"{ctl.family}, "
     print(f"{args.project}: OK - {family}servo cycle {ctl.servo_cycle * 1000:g} ms, application cycle "
           f"{ctl.app_cycle * 1000:g} ms, {len(ctl.axes)} axes: {axes or '-'}{more}")
+    ctl.close()
     return 0
 
 
@@ -180,7 +181,7 @@ def _describe(ax) -> str:
         return kind + "virtual"
     interface = ax.config.drive.interface
     drive = "PTO" if ax.pto else "simulated" if ax.sim else "PROFIdrive" if interface is SetpointInterface.PROFIDRIVE \
-        else "analog"
+        else "CiA 402" if interface is SetpointInterface.CANOPEN else "analog"
     return kind + drive
 
 
@@ -260,6 +261,7 @@ def cmd_run(args: argparse.Namespace) -> int:
             sys.stderr.write("\n")
         if trace is not None:
             trace.stop()
+        ctl.close()                     # drives on a bus: release the connection
     wall = time.perf_counter() - wall0
     plot_failed = None
     if trace is not None and args.plot and not interrupted:

@@ -30,9 +30,18 @@ Nothing here runs per cycle per axis in Python: a group keeps its members' state
 from __future__ import annotations
 
 from abc import ABC, abstractmethod
-from typing import Any
+from typing import Any, Protocol
 
 from .spec import DriveSpec
+
+
+class DriveReports(Protocol):
+    """Where a drive that finds faults by itself (a drive on a bus: CiA 402 EMCY, statusword, heartbeat)
+    reports them: the axis's device fault list (``kernel.fault_injection.FaultInjection``).  ``kind`` is
+    ``"drive"`` (a fault of the drive) or ``"communication_loss"`` (the bus connection is lost); the
+    alarm then takes the family's reaction like any device fault."""
+
+    def inject(self, kind: str, detail: str = "", *, persistent: bool = False) -> None: ...
 
 
 class DriveChannel(ABC):
@@ -55,6 +64,10 @@ class DriveChannel(ABC):
     @abstractmethod
     def mechanical_position(self) -> float:
         """Where the load really is, in machine coordinates (what switches and zero marks see)."""
+
+    def attach(self, reports: DriveReports) -> None:
+        """The kernel hands the drive the axis's fault list once the axis exists; drives that only fail by
+        fault injection ignore it."""
 
     @property
     def communication_ok(self) -> bool:
@@ -128,3 +141,23 @@ class DriveGroup(ABC):
     @abstractmethod
     def write(self, bank: Any, t: float) -> None:
         """Take this cycle's commands of the members from the bank (``cmd_v`` or ``sp_p``/``sp_v``)."""
+
+    def close(self) -> None:
+        """Release what the group holds outside the process (a bus connection); simulated groups hold none."""
+
+
+class DriveLink(ABC):
+    """A drive connected through something the kernel does not know (a CANopen bus ...), attached to an
+    axis's :class:`DriveSpec` as ``spec.link``.  Axes whose links share a ``group_key`` form one group."""
+
+    #: the key of the drive group (e.g. one group per bus)
+    group_key: str
+
+    @abstractmethod
+    def new_group(self, bank: Any) -> DriveGroup:
+        """An empty group for the drives of this link's ``group_key``."""
+
+    @abstractmethod
+    def bind(self, spec: DriveSpec) -> DriveSpec:
+        """The spec of the axis with this link: ``spec`` (built by the family from its tags) with the link
+        attached and the interface it implies; ValueError naming the reason when the axis cannot have it."""

@@ -14,6 +14,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from enum import Enum
+from typing import Any
 
 from .hydraulic_spec import CylinderSpec, HydraulicSpec
 from .spec_errors import DriveSpecError, finite
@@ -43,6 +44,8 @@ class SetpointInterface(str, Enum):
     ANALOG = "analog"
     #: pulse train (direction and pulses)
     PULSES = "pulses"
+    #: CANopen with the CiA 402 drive profile (PDOs on a CAN bus; ``DriveSpec.link`` says which)
+    CANOPEN = "canopen"
     #: no physical setpoint (ideal drive)
     NONE = "none"
 
@@ -188,6 +191,10 @@ class DriveSpec:
     #: the valve output of a hydraulic drive (None: ``HydraulicSpec()``)
     hydraulic: HydraulicSpec | None = None
 
+    #: a drive on a bus the kernel does not model itself (``drives.base.DriveLink``, e.g.
+    #: ``drives.cia402.Cia402Link``); None: the simulated drive of ``actuator``
+    link: Any = None
+
     def __post_init__(self) -> None:
         if self.max_torque is not None and finite("DriveSpec.max_torque", self.max_torque) <= 0.0:
             raise DriveSpecError("DriveSpec.max_torque", self.max_torque, "must be > 0 N m (or None)")
@@ -202,6 +209,11 @@ class DriveSpec:
             if not lo < hi or not lo <= self.plant.initial_position <= hi:
                 raise DriveSpecError("PlantSpec.initial_position", self.plant.initial_position,
                                      f"must lie inside the cylinder's stroke and end stops [{lo:g}, {hi:g}]")
+
+    @property
+    def group_key(self) -> str:
+        """The drive group this drive belongs to: its link's group, else its actuator kind."""
+        return self.link.group_key if self.link is not None else self.actuator.value
 
     @property
     def max_velocity(self) -> float:

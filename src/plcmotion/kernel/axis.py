@@ -66,7 +66,7 @@ class PositioningAxis(TagViews):
         self.servo = not self.pto and not self.sim
         self.index = ctl.bank.add()
         t = ctl.time
-        self.drive = ctl._drive_group(spec.actuator.value).add(self.index, spec, ctl.servo_cycle, t)
+        self.drive = ctl._drive_group(spec).add(self.index, spec, ctl.servo_cycle, t)
         self.motion = MotionPlanner(self)
         self.homing = self.homing_class(self, at_once_in_simulation=self._sim_homing_at_once)
 
@@ -102,6 +102,7 @@ class PositioningAxis(TagViews):
         self.holding_zero_velocity = False            # standstill reached by MC_MoveVelocity(Velocity=0)
         self.abs_offset = 0.0                         # StatusSensor.AbsEncoderOffset (retentive)
         self.fault_injection = FaultInjection(self)   # injected faults of the simulated devices
+        self.drive.attach(self.fault_injection)        # and the faults a drive on a bus reports itself
 
         b = ctl.bank
         i = self.index

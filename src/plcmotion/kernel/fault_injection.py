@@ -32,6 +32,8 @@ LOSS_KINDS = ("encoder_loss", "communication_loss")
 KINDS = tuple(DEVICE_ALARMS) + LOSS_KINDS
 _DEVICE_OF = {alarm: device for device, alarm in DEVICE_ALARMS.items()}
 _LIMIT = 1e12
+#: setpoint interfaces on a bus, whose communication can be lost
+_BUS_INTERFACES = (SetpointInterface.PROFIDRIVE, SetpointInterface.CANOPEN)
 
 
 def checked_real(name: str, value: Any) -> float:
@@ -138,9 +140,10 @@ class FaultInjection:
                 raise ValueError(f"axis {ax.name}: encoder_loss needs an axis with an encoder "
                                  "(PROFIdrive or analog drive, Simulation.Mode = 0)")
             return [("encoder", "station" if on_bus else "hardware")]
-        if not ax.servo or ax.config.drive.interface is not SetpointInterface.PROFIDRIVE:
+        if not ax.servo or ax.config.drive.interface not in _BUS_INTERFACES:
             raise ValueError(f"axis {ax.name}: communication_loss needs a PROFIdrive axis (Actor.Type = 1, "
-                             "Simulation.Mode = 0); an analog drive or a pulse output has no bus")
+                             "Simulation.Mode = 0) or a drive on a bus (CiA 402); an analog drive or a pulse "
+                             "output has no bus")
         lost = [("drive", "station")]
         if encoder is EncoderInterface.DRIVE_TELEGRAM:
             lost.append(("encoder", "station"))      # the encoder travels in the drive's telegram

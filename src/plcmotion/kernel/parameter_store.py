@@ -11,6 +11,7 @@ acknowledging it (MC_Reset) succeeds once the value is valid again.
 """
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import Any, Mapping, Protocol
 
 from . import faults as F
@@ -53,7 +54,14 @@ class ParameterStore:
         """Tag values ``values`` are in effect from now on: the typed axis configuration (``host.config``,
         built by the family's schema) follows them, here and nowhere else."""
         self.effective = values
-        self.host.config = self.schema.build(values)
+        config = self.schema.build(values)
+        bind = getattr(self.host.ctl, "_bind_drive", None)
+        if bind is not None and config.drive.link is None:
+            # a drive connected through a bus (Controller.connect_drive) replaces the simulated one
+            drive = bind(self.host.name, config.drive)
+            if drive is not config.drive:
+                config = replace(config, drive=drive)
+        self.host.config = config
 
     def restart(self) -> None:
         """Back to the start values (a restart of the technology object)."""

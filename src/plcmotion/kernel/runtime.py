@@ -17,9 +17,10 @@ import traceback
 import warnings
 from typing import Any, Callable, Mapping
 
-from ..drives.base import DriveGroup
+from ..drives.base import DriveGroup, DriveLink
 from ..drives.plant import Plant
 from ..drives.simulated import new_drive_group
+from ..drives.spec import ActuatorKind, DriveSpec
 from . import retain
 from . import family as families
 from . import schema as P
@@ -194,6 +195,7 @@ class Controller:
         self._groups: dict[str, DriveGroup] = {}
         self._group_list: list[DriveGroup] = []
         self._closed_loop = False                   # a drive group whose axes the position controller drives
+        self._drive_links: dict[str, Any] = {}      # axis name -> drives.base.DriveLink (connect_drive)
         self._programs: list[tuple[str, Callable[[], Any]]] = []
         self._pre_servo: list[Callable[[float], None]] = []
         self._post_servo: list[Callable[[float], None]] = []
@@ -336,16 +338,38 @@ class Controller:
         """Run ``fn(t)`` at the start of the next servo cycle (jobs handed to MC-Servo)."""
         self._deferred.append(fn)
 
-    def _drive_group(self, kind: str) -> DriveGroup:
-        """The group of the drives of ``kind`` (the value of an ``ActuatorKind``: "servo", "stepper", "ideal",
-        "hydraulic")."""
-        group = self._groups.get(kind)
+    def _drive_group(self, spec: DriveSpec) -> DriveGroup:
+        """The group of the drives of ``spec``: one per actuator kind ("servo", "stepper", "ideal", "hydraulic") for the
+        simulated drives, one per ``spec.link.group_key`` for drives on a bus (``connect_drive``)."""
+        key = spec.group_key
+        group = self._groups.get(key)
         if group is None:
-            group = new_drive_group(kind, self.bank)
-            self._groups[kind] = group
+            group = spec.link.new_group(self.bank) if spec.link is not None else new_drive_group(key, self.bank)
+            self._groups[key] = group
             self._group_list.append(group)
             self._closed_loop = self._closed_loop or group.closed_loop
         return group
+
+    def connect_drive(self, axis: str, link: DriveLink) -> None:
+        """Drive the axis named ``axis`` through ``link`` (a ``drives.base.DriveLink``, e.g. a CiA 402 drive
+        on a CAN bus) instead of the simulated drive its configuration describes.  Call it before the axis
+        is added; the family's configuration still sets units, dynamics, monitoring and mechanics."""
+        if not isinstance(link, DriveLink):
+            raise TypeError(f"connect_drive: link must be a drives.base.DriveLink, got {link!r}")
+        if axis in self.axes:
+            raise ValueError(f"connect_drive: axis {axis!r} exists already; connect its drive before adding it")
+        self._drive_links[axis] = link
+
+    def _bind_drive(self, name: str, spec: DriveSpec) -> DriveSpec:
+        """The drive spec of axis ``name``: its link attached when ``connect_drive`` named it."""
+        link = self._drive_links.get(name)
+        return spec if link is None else link.bind(spec)
+
+    def close(self) -> None:
+        """Release the bus connections of the drive groups (threads, sockets); the controller is not used
+        afterwards.  Simulated drives hold none, so closing is only needed with ``connect_drive``."""
+        for group in self._group_list:
+            group.close()
 
     def _retain_axis(self, axis: PositioningAxis) -> None:
         """Store the retentive data of an axis (written atomically to the state file)."""

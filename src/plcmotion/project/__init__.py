@@ -1,6 +1,6 @@
 """Project files: a controller and its axes described in TOML.
 
-A project file has up to three sections::
+A project file has these sections::
 
     [controller]                  # optional
     servo_cycle = 0.001           # s, default 0.001
@@ -13,6 +13,13 @@ A project file has up to three sections::
     MaxVelocity = 500.0
     [axes.Axis_1."Sensor[1]".ActiveHoming]
     Mode = 2
+
+    [drives.Axis_1]               # optional: the axis's drive is on a bus (plcmotion.project.drives)
+    type = "cia402"               # a CiA 402 drive on CANopen: interface, channel, node_id, mode, simulate
+    interface = "socketcan"
+    channel = "can0"
+    node_id = 1
+    mode = "csp"
 
     [trace]                       # optional: what ``plcmotion run`` records by default
     signals = ["Axis_1.Position", "Axis_1.Velocity"]
@@ -131,7 +138,10 @@ def load_project(path: str | os.PathLike, *, allow_outside_paths: bool = False) 
 
 def check_project(path: str | os.PathLike, *, allow_outside_paths: bool = False) -> list[str]:
     """All problems of the project file at ``path``; an empty list when it loads."""
-    return _Loader(path, allow_outside_paths).load()[1]
+    ctl, problems = _Loader(path, allow_outside_paths).load()
+    if ctl is not None:
+        ctl.close()                              # nothing runs on a checked project: release drive buses
+    return problems
 
 
 __all__ = ["AXIS_TYPES", "AXIS_TYPES_1500", "SECTIONS", "ProjectError", "check_project", "load_project", "toml_value"]

@@ -25,7 +25,7 @@ from ..kernel import schema as P
 from ..kernel.runtime import APP_CYCLE_MAX, SERVO_CYCLE_MAX, SERVO_CYCLE_MIN, Controller
 from . import objects as O
 
-SECTIONS = ("controller", "axes", "trace", "inputs", "command_tables", "cams", "switches", "faults")
+SECTIONS = ("controller", "axes", "drives", "trace", "inputs", "command_tables", "cams", "switches", "faults")
 CONTROLLER_DEFAULTS: dict[str, float] = {"servo_cycle": 0.001, "app_cycle": 0.004}
 CYCLE_RANGES = {"servo_cycle": (SERVO_CYCLE_MIN, SERVO_CYCLE_MAX), "app_cycle": (SERVO_CYCLE_MIN, APP_CYCLE_MAX)}
 CONTROLLER_KEYS = ("servo_cycle", "app_cycle", "input_filter", "state_file", "technology_version", "family",
@@ -107,6 +107,8 @@ class _Loader:
                       + advice)
             return None, self.problems
         self.inputs(ctl, doc.get("inputs"))
+        from .drives import load_drives         # drives on a bus are connected before their axes exist
+        load_drives(self, ctl, doc.get("drives"), doc.get("axes"))
         declared = O.load_axes(self, ctl, doc.get("axes"))
         O.load_cams(self, ctl, doc.get("cams"), declared)
         O.load_command_tables(self, ctl, doc.get("command_tables"), declared)
@@ -116,7 +118,10 @@ class _Loader:
         load_faults(self, ctl, doc.get("faults"), declared)
         trace = self.trace(ctl, doc.get("trace"), declared)
         ctl.project = {"path": self.label, "trace": trace}  # type: ignore[attr-defined]
-        return (None if self.problems else ctl), self.problems
+        if self.problems:
+            ctl.close()                          # a drive bus opened for a valid axis is released again
+            return None, self.problems
+        return ctl, self.problems
 
 
     def read(self) -> dict[str, Any] | None:

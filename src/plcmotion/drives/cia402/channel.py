@@ -54,7 +54,7 @@ class Cia402Channel(DriveChannel):
         self.mode_display = 0
         self.position = 0
         self.velocity = 0
-        self.torque = 0
+        self.torque_actual = 0            # 0x6077 torque actual value [per mille of the rated torque]
         self.error_code = 0
         self.emcy: list[tuple[int, int]] = []     # (error code, error register) received, newest last
         # what the master wants
@@ -148,7 +148,7 @@ class Cia402Channel(DriveChannel):
         if tpdo1 is not None and tpdo2 is not None:
             self.missed = 0
             self.statusword, self.position, self.mode_display = _TPDO1.unpack_from(tpdo1)
-            self.velocity, self.torque, self.error_code = _TPDO2.unpack_from(tpdo2)
+            self.velocity, self.torque_actual, self.error_code = _TPDO2.unpack_from(tpdo2)
             self.state = P.state_of(self.statusword)
         else:
             self.missed += 1

@@ -154,13 +154,13 @@ class MotionCore:
         if previous is not None and previous.number in C.CYCLIC:
             self.cyclic.end()
         cause = starts.denial(self, cmd)
+        if cause is None and number in C.STOPPING and 0.0 in (cmd.value("I406"), cmd.value("I407")):
+            cmd.at_standstill = True            # §1.6.7: a denial at standstill is reported as Done
+            cmd.state = R.STOPPING if number == C.STOP else R.DISCRETE
+            if number == C.STOP:
+                self.stop_lock = True
+            return
         if cause is not None:
-            if number in C.STOPPING and cause is Cause.ZERO_DYNAMICS:
-                cmd.at_standstill = True        # §1.6.7: a denial at standstill is reported as Done
-                cmd.state = R.STOPPING if number == C.STOP else R.DISCRETE
-                if number == C.STOP:
-                    self.stop_lock = True
-                return
             cmd.denied = cause
             if cause is not Cause.STOP_ACTIVE and self._moving() and self.ready():
                 self.quick_stop(t)

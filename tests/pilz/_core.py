@@ -48,15 +48,19 @@ def make_axis(params: dict[str, Any] | None = None, *, referenced: bool = True, 
     return ctl, ax
 
 
-def start(ax: Any, command: int, **registers: Any) -> float:
-    """Write ``registers``, select ``command`` and give Execute a rising edge (low for a cycle first if it
+def start(ax: Any, command: int, *base: dict[str, Any], **registers: Any) -> float:
+    """Write ``base`` (dicts) and ``registers`` (the later win), select ``command`` and give Execute a rising edge (low for a cycle first if it
     is high); returns the time of the motion-core cycle that sees the edge."""
     ctl = ax.ctl
     regs = ax.registers
     if regs.I402:
         regs.I402 = False
         ctl.step()
-    for name, value in registers.items():
+    merged: dict[str, Any] = {}
+    for d in base:
+        merged.update(d)
+    merged.update(registers)
+    for name, value in merged.items():
         regs.write(name, value)
     regs.I401 = command
     regs.I402 = True

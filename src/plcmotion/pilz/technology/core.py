@@ -214,7 +214,11 @@ class MotionCore:
         ax = self.axis
         s = self.status
         b, i = ax.ctl.bank, ax.index
-        p, v, _a = ax._state_now()
+        prof = ax.profile
+        if t >= prof.t_end - _EPS and not b.follow_act[i]:
+            p, v, _a = prof.final.at(t)           # the profile's end state, without rounding of the segment before
+        else:
+            p, v, _a = ax._state_now()
         act_v = float(b.act_v[i])
         s.I86 = bool(ax.homed)
         s.I88 = act_v

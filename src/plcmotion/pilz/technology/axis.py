@@ -13,13 +13,28 @@ from typing import Any
 from ...kernel import faults as F
 from ...kernel.axis import PositioningAxis
 from ...kernel.faults import Fault, Reaction
+from ...kernel.job_start import JobStart
 from ...kernel.jobs import Job, JobState
+from ...kernel.motion import limits, modulo_target
 from . import registers as R
 from .core import MotionCore
 from .parameters import PILZ_AXIS
 from .referencing import Referencing
 
 _LIMIT_SWITCH_FAULTS = (F.HW_LIMIT_MIN, F.HW_LIMIT_MAX)
+
+
+class _JobStart(JobStart):
+    """The kernel's job start; the endless-axis target of MC_MoveAbsolute is placed with the command's own
+    dynamics (its deceleration decides how many turns the axis needs to brake, §1.2.4)."""
+
+    def absolute_target(self, job: Job, p: float, v: float, a: float) -> float:
+        ax = self.axis
+        if not ax.config.modulo.enabled:
+            return job.position
+        lim = limits(ax, ax.commanded_velocity(job.velocity) or None, job=job)
+        return modulo_target(ax, job.position, job.direction, job.extra.get("sign", 1.0), p, v, a, lim,
+                             ax.motion.planner)
 
 
 class DriveAxis(PositioningAxis):
@@ -31,6 +46,7 @@ class DriveAxis(PositioningAxis):
 
     def __init__(self, ctl: Any, name: str, cfg: Any, **kw: Any):
         super().__init__(ctl, name, cfg, **kw)
+        self.job_start = _JobStart(self)
         self.core = MotionCore(self)
         self.referencing: Referencing = self.homing      # type: ignore[assignment]
         if self not in ctl._input_axes:

@@ -52,7 +52,8 @@ def absolute_target(core: "MotionCore", cmd: C.Command) -> tuple[float, int, flo
         shortest = min(ahead, length - ahead)
         if not moving and shortest <= ax.eff["I22"]:
             code = 3                         # already within the position window: the shortest way
-    lim = limits(ax, ax.commanded_velocity(abs(cmd.value("I404"))) or None)
+    dyn = Job(JobKind.ABSOLUTE, **_dynamics(cmd, "I405", "I406"))
+    lim = limits(ax, ax.commanded_velocity(abs(cmd.value("I404"))) or None, job=dyn)
     target = modulo_target(ax, position, code, sign, p, v, a, lim, ax.motion.planner)
     return target, code, sign
 

@@ -197,8 +197,13 @@ class MotionCore:
             return
         self._override = override
         job = cmd.job
-        if cmd.number in C.OVERRIDDEN and job is not None and job.busy and job is self.axis.job:
-            self.axis._replan()
+        ax = self.axis
+        if cmd.number in C.OVERRIDDEN and job is not None and job.busy and job is ax.job:
+            if job.kind == JobKind.VELOCITY:
+                job.in_velocity = False
+                ax._plan_job(job, ax.now, new_command=False)     # a cruising velocity job plans anew
+            else:
+                ax._replan()
         if cmd.number in C.POSITIONING or cmd.number == C.MOVE_VELOCITY:
             v = abs(cmd.value("I404"))
             self.status.I193 = v <= self.axis.eff["I10"] < v * override / 100.0

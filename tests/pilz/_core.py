@@ -28,7 +28,8 @@ class Row:
 
 
 def make_axis(params: dict[str, Any] | None = None, *, referenced: bool = True, app_cycle: float = A150):
-    ctl = Controller(family="Pilz", servo_cycle=A150, app_cycle=app_cycle)
+    # the drive reads its switch inputs unfiltered (the CPU input filter of the S7 families does not apply)
+    ctl = Controller(family="Pilz", servo_cycle=A150, app_cycle=app_cycle, input_filter=0.0)
     ax = ctl.add_positioning_axis("X", {"I30": 5, **(params or {})})
     ax.enable()
     ctl.run(0.005)

@@ -80,15 +80,17 @@ class MotionCommand(Instruction):
             return
         self._register(axis)
         self._set(_state="arming")
+        self._out(Busy=True)
 
     def _arm(self) -> None:
         """Write the command and give I402 a rising edge (a call later if it is still high)."""
         axis: DriveAxis = self.Axis
         regs = axis.registers
         claimed = getattr(axis.core, "_claimed", None)
-        if claimed is not None and claimed[0] == axis.ctl.app_cycles and claimed[1] is not self:
-            return                                  # another block uses the register this cycle: next call
-        if regs.I402:
+        if claimed is not None and claimed[1] is not self and (
+                claimed[0] == axis.ctl.app_cycles or claimed[1]._holding()):
+            return                  # another block uses the register this cycle, or MC_Stop holds it: wait
+        if regs.I402 or axis.core.execute_seen:
             regs.I402 = False                       # the core must see Execute low for a cycle first
             object.__setattr__(axis.core, "_claimed", (axis.ctl.app_cycles, self))
             return
@@ -118,7 +120,8 @@ class MotionCommand(Instruction):
         if core.command is not cmd:
             # a later command took the channel over
             job = cmd.job
-            ended_done = cmd.done or (job is not None and job.state == JobState.DONE)
+            # a continuous command (InVelocity) has no Done of its own: replaced, it is aborted
+            ended_done = (job is not None and job.state == JobState.DONE) or (cmd.done and self.DONE == "Done")
             self._set(_final=("Done" if ended_done else "CommandAborted", 0), _state="ended")
             return
         if self._owns_register():
@@ -140,11 +143,17 @@ class MotionCommand(Instruction):
         job = cmd.job
         self._out(Active=(job is None or job.active) and cmd.denied is None)
 
+    def _holding(self) -> bool:
+        """An MC_Stop block holds the command register while its Execute is TRUE (§1.6.4)."""
+        return self.COMMAND == C.STOP and bool(self._prev) and self._owns_register()
+
     def _owns_register(self) -> bool:
         """This block wrote the last command and no other block has claimed the register since."""
+        if self._cmd is None:
+            return False
         core = self.Axis.core
         claimed = getattr(core, "_claimed", None)
-        return self._cmd is not None and core.command is self._cmd and claimed is not None and claimed[1] is self
+        return core.command is self._cmd and claimed is not None and claimed[1] is self
 
     def _show(self, execute: bool) -> None:
         final = self._final

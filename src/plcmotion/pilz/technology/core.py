@@ -77,6 +77,11 @@ class MotionCore:
             job is not None and job.busy and job.kind != JobKind.HALT) or self.cyclic.running
 
     @property
+    def execute_seen(self) -> bool:
+        """I402 as the motion core sampled it in its last cycle (a new edge needs it low there first)."""
+        return self._execute
+
+    @property
     def override(self) -> float:
         """I230 as the profile commands use it [%] (negative values count as 0)."""
         return max(0.0, self.registers.I230)

@@ -7,7 +7,9 @@ rising edge - a call later if I402 was still high from another command, so that 
 It then follows *its* command (the one the core created at that edge) and derives the PLCopen outputs:
 
 * Busy from its start until it ends; Active while it is the core's current command and moves the axis;
-* Done (InVelocity for the velocity commands) from the status word I92 of its command;
+* Done (InVelocity / InTorque for the velocity and torque commands) from the status word I92 of its command;
+  the commands that go on after I92 (MC_MoveVelocity, MC_MoveSpeed, MC_TorqueControl and the cyclic commands,
+  whose I92 only acknowledges the start) stay Busy and Active with that output TRUE until replaced;
 * Error with ErrorID = I90 when the core denied or cancelled it (I91);
 * CommandAborted when a later command took the channel over before it was Done (a command it waited for
   with BufferMode 1 - "start at the end" - still ends Done when its motion ended).
@@ -42,6 +44,8 @@ class MotionCommand(Instruction):
     LATCHED: ClassVar[dict[str, str]] = {}
     CYCLIC: ClassVar[dict[str, str]] = {}
     DONE: ClassVar[str] = "Done"
+    #: the command goes on after its I92 (velocity, cyclic and torque commands): the block stays Busy
+    CONTINUOUS: ClassVar[bool] = False
     INPUTS = {"Axis": None, "Execute": False, "MotionID": 0}
     OUTPUTS = dict(_OUT)
 
@@ -121,7 +125,7 @@ class MotionCommand(Instruction):
             # a later command took the channel over
             job = cmd.job
             # a continuous command (InVelocity) has no Done of its own: replaced, it is aborted
-            ended_done = (job is not None and job.state == JobState.DONE) or (cmd.done and self.DONE == "Done")
+            ended_done = (job is not None and job.state == JobState.DONE) or (cmd.done and not self.CONTINUOUS)
             self._set(_final=("Done" if ended_done else "CommandAborted", 0), _state="ended")
             return
         if self._owns_register():
@@ -135,8 +139,8 @@ class MotionCommand(Instruction):
         except RegisterError:
             pass                                    # the last valid set value stays
         if cmd.done:
-            if self.DONE != "Done":
-                self._out(**{self.DONE: True})      # InVelocity goes on while the command runs
+            if self.CONTINUOUS:
+                self._out(**{self.DONE: True})      # InVelocity / Done go on while the command runs
             else:
                 self._set(_final=("Done", 0), _state="ended")
                 return
@@ -174,12 +178,13 @@ class MotionCommand(Instruction):
 
 
 def _fb(name: str, command: int, inputs: dict[str, Any], latched: dict[str, str], cyclic: dict[str, str] = {},
-        done: str = "Done", doc: str = "") -> type:
+        done: str = "Done", doc: str = "", continuous: bool = False) -> type:
     outputs = dict(_OUT)
     if done != "Done":
         outputs[done] = False
     cls = type(name, (MotionCommand,), {
         "COMMAND": command, "LATCHED": latched, "CYCLIC": cyclic, "DONE": done, "__doc__": doc,
+        "CONTINUOUS": continuous or done != "Done",
         "INPUTS": {**MotionCommand.INPUTS, **inputs}, "OUTPUTS": outputs})
     return cls
 
@@ -208,7 +213,8 @@ MC_Stop = _fb("MC_Stop", C.STOP, {"Deceleration": 0.0, "Jerk": 0.0, "BrakeAtEnd"
               doc="Command 5 (§1.6): stop; other commands are denied until standstill and Execute = FALSE.")
 MC_Home = _fb("MC_Home", C.HOME, {}, {}, doc="Command 6 (§1.7): reference with the method of I30 / A586.")
 MC_CyclicSpeed = _fb("MC_CyclicSpeed", C.CYCLIC_SPEED, {"Velocity": 0.0}, {}, {"Velocity": "I426"},
-                     doc="Command 7 (§1.8): follow Velocity, written to I426 on every call.")
+                     doc="Command 7 (§1.8): follow Velocity, written to I426 on every call; Done = I92 (started).",
+                     continuous=True)
 MC_MoveSpeed = _fb("MC_MoveSpeed", C.MOVE_SPEED,
                    {"Velocity": 0.0, "Acceleration": 0.0, "Deceleration": 0.0, "Jerk": 0.0, "BufferMode": 0},
                    {"Jerk": "I407", "BufferMode": "I409"},
@@ -219,7 +225,8 @@ MC_TorqueControl = _fb("MC_TorqueControl", C.TORQUE_CONTROL,
                        {"Torque": "I428", "TorqueRampUp": "I430", "TorqueRampDown": "I431"},
                        done="InTorque", doc="Command 9 (§1.10): torque/force control; InTorque = I92.")
 MC_CyclicPosition = _fb("MC_CyclicPosition", C.CYCLIC_POSITION, {"Position": 0.0}, {}, {"Position": "I421"},
-                        doc="Command 10 (§1.11): follow Position, written to I421 on every call.")
+                        doc="Command 10 (§1.11): follow Position, written to I421 on every call; Done = I92 (started).",
+                        continuous=True)
 MC_Halt = _fb("MC_Halt", C.HALT, {"Deceleration": 0.0, "Jerk": 0.0, "BrakeAtEnd": False},
               {"Deceleration": "I406", "Jerk": "I407", "BrakeAtEnd": "I410"},
               doc="Command 11 (§1.12): stop; a later command may take over before standstill.")

@@ -16,7 +16,7 @@ log = []
 def program():
     home(Execute=True)
     move(Execute=home.Done or move.Busy)
-    if move.Busy or move.Done:
+    if move.Active or move.Done:                # the status words of *its* command
         log.append((ctl.time, axis.status.I180, axis.status.I85, axis.status.I92))
 
 

@@ -165,3 +165,43 @@ def test_pilz_denial_never(command, registers):
     start(ax, command, **registers)
     ctl.run(0.005)
     assert not ax.status.I91 and ax.status.I92
+
+
+def test_pilz_denial_cancel_enable_off():
+    """Pilz V6.5 §1.2.7 (I91 "denied or cancelled"), §1.4.6: the enable going off cancels the running command
+    (I91, I90 = 22); I89 = 0 while disabled."""
+    ctl, ax = make_axis()
+    start(ax, 4, **{**PROFILE, "I404": 50.0})
+    ctl.run(0.1)
+    ax.enable(False)
+    ctl.run(0.3)
+    assert ax.status.I91 and ax.status.I90 == Cause.ENABLE_OFF and ax.status.I89 == 0
+
+
+def test_pilz_denial_cancel_limit_switch():
+    """Pilz V6.5 §1.5.3 / §1.8.3: reaching a hardware limit switch stops the axis with a quick stop and a limit
+    switch fault (I91, I90 = 20, I89 = 7); the enable stays on; after the fault reset the axis moves away."""
+    ctl, ax = make_axis({"I101": "I0.0", "I102": "I0.1", "Plant.HWLimitMaxPosition": 20.0,
+                         "Plant.HWLimitMinPosition": -100.0, "LimitSwitchLevel": True})
+    start(ax, 4, **{**PROFILE, "I404": 50.0})
+    ctl.run(1.0)
+    assert ax.status.I91 and ax.status.I90 == Cause.LIMIT_SWITCH_FAULT and ax.status.I89 == 7
+    assert ax.state == "enabled" and ax.status.E07 == 0.0
+    ax.reset()
+    release(ax)
+    start(ax, 4, **{**PROFILE, "I404": 50.0})
+    ctl.step()
+    assert ax.status.I90 == Cause.HW_LIMIT                 # still on the switch: not towards it
+    start(ax, 4, **{**PROFILE, "I404": -50.0})
+    ctl.run(0.1)
+    assert not ax.status.I91 and ax.status.E07 == -50.0
+
+
+def test_pilz_denial_cancel_software_limit():
+    """Pilz V6.5 §1.2.2 / decisions.md: a velocity command that runs into a software limit switch stops at it
+    and is cancelled (I90 = 21); the set position never passes the switch."""
+    ctl, ax = make_axis({"I50": 100.0, "I51": -100.0})
+    start(ax, 4, **{**PROFILE, "I404": 200.0})
+    ctl.run(1.5)
+    assert ax.status.I91 and ax.status.I90 == Cause.SW_LIMIT_REACHED
+    assert max(r.I96 for r in ax.rows) <= 100.0 + 1e-9

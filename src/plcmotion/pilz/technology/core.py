@@ -255,7 +255,8 @@ class MotionCore:
             cmd.cancelled = cause_of(job.fault)
             self._show_error(cmd.cancelled)
             return
-        if job is not None and job.state == JobState.ABORTED and not ax.ready_for_commands():
+        if job is not None and job.state == JobState.ABORTED and cmd.number != C.TORQUE_CONTROL:
+            # no later command took over, yet its job ended: the enable went off or a fault stopped the axis
             cmd.cancelled = Cause.ENABLE_OFF if ax.state != "enabled" else cause_of(ax.alarms[0] if ax.alarms
                                                                                     else None)
             self._show_error(cmd.cancelled)

@@ -90,13 +90,13 @@ class MotionCommand(Instruction):
         """Write the command and give I402 a rising edge (a call later if it is still high)."""
         axis: DriveAxis = self.Axis
         regs = axis.registers
-        claimed = getattr(axis.core, "_claimed", None)
+        claimed = axis.core.claimed
         if claimed is not None and claimed[1] is not self and (
                 claimed[0] == axis.ctl.app_cycles or claimed[1]._holding()):
             return                  # another block uses the register this cycle, or MC_Stop holds it: wait
         if regs.I402 or axis.core.execute_seen:
             regs.I402 = False                       # the core must see Execute low for a cycle first
-            object.__setattr__(axis.core, "_claimed", (axis.ctl.app_cycles, self))
+            axis.core.claimed = (axis.ctl.app_cycles, self)
             return
         try:
             for name, reg in {**self.LATCHED, **self.CYCLIC}.items():
@@ -107,7 +107,7 @@ class MotionCommand(Instruction):
             self._set(_final=("Error", INPUT_REFUSED), _state="ended")
             return
         regs.I402 = True
-        object.__setattr__(axis.core, "_claimed", (axis.ctl.app_cycles, self))
+        axis.core.claimed = (axis.ctl.app_cycles, self)
         self._set(_state="sent", _starts=axis.core.starts)
         self._out(Busy=True)
 
@@ -120,7 +120,6 @@ class MotionCommand(Instruction):
         axis: DriveAxis = self.Axis
         core = axis.core
         cmd = self._cmd
-        s = axis.status
         if core.command is not cmd:
             # a later command took the channel over
             job = cmd.job
@@ -131,7 +130,8 @@ class MotionCommand(Instruction):
         if self._owns_register():
             axis.registers.I402 = execute
         if cmd.denied is not None or cmd.cancelled is not None:
-            self._set(_final=("Error", s.I90 or int(cmd.denied or cmd.cancelled)), _state="ended")
+            self._set(_final=("Error", int(cmd.denied if cmd.denied is not None else cmd.cancelled)),
+                      _state="ended")
             return
         try:
             for name, reg in self.CYCLIC.items():
@@ -156,7 +156,7 @@ class MotionCommand(Instruction):
         if self._cmd is None:
             return False
         core = self.Axis.core
-        claimed = getattr(core, "_claimed", None)
+        claimed = core.claimed
         return core.command is self._cmd and claimed is not None and claimed[1] is self
 
     def _show(self, execute: bool) -> None:

@@ -24,6 +24,7 @@ class Cause(IntEnum):
     REFERENCING_INACTIVE = 9    # MC_Home: referencing type inactive (I30 = 0 / A586 = 0)
     STOP_ACTIVE = 10            # a command while MC_Stop holds the axis (§1.6.5)
     NOT_READY = 11              # the drive is not enabled or has a fault pending
+    BUFFER_FULL = 12            # I409 = 1 while a follow-up command waits already (one buffered block, I83)
     # --- cancellations of a running command ------------------------------------------------------------------
     LIMIT_SWITCH_FAULT = 20     # a hardware limit switch was reached: quick stop
     SW_LIMIT_REACHED = 21       # the motion reached a software limit switch

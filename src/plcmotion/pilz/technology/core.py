@@ -30,7 +30,8 @@ _FAULT_CAUSE = {F.HW_LIMIT_MIN: Cause.LIMIT_SWITCH_FAULT, F.HW_LIMIT_MAX: Cause.
                 F.HW_LIMIT_FREE: Cause.HW_LIMIT, F.SW_LIMIT_MIN: Cause.SW_LIMIT_REACHED,
                 F.SW_LIMIT_MAX: Cause.SW_LIMIT_REACHED, F.NOT_HOMED: Cause.NOT_REFERENCED,
                 F.NOT_ENABLED: Cause.NOT_READY, F.PENDING_ALARM: Cause.NOT_READY,
-                F.DIRECTION: Cause.DIRECTION_BLOCKED, F.REFERENCE_NOT_FOUND: Cause.REFERENCE_NOT_FOUND}
+                F.DIRECTION: Cause.DIRECTION_BLOCKED, F.REFERENCE_NOT_FOUND: Cause.REFERENCE_NOT_FOUND,
+                F.QUEUE_FULL: Cause.BUFFER_FULL}
 
 
 def cause_of(fault: Any) -> Cause:
@@ -49,6 +50,8 @@ class MotionCore:
         self.starts = 0                      # accepted rising edges of I402 (for the FB wrappers)
         self.set_position: float | None = None    # last valid set position (MC_MoveAdditive base, §1.4.6)
         self.stop_lock = False               # MC_Stop holds the axis until standstill and Execute = 0
+        #: (application cycle, block) of the function block that wrote the register last (plcmotion.pilz)
+        self.claimed: tuple[int, Any] | None = None
         self._execute = False
         self._override = 100.0
         self._enabled = False
@@ -280,9 +283,7 @@ class MotionCore:
         else:
             self._cyclic_status(cmd, t)
         if job is not None and job.pending:
-            s.I83 = R.I83_ACTIVE
-        elif any(q is not job for q in ax.queue.pending):
-            s.I83 = R.I83_ACTIVE_WITH_FOLLOWER
+            s.I83 = R.I83_ACTIVE_WITH_FOLLOWER     # a block runs, this one waits behind it
         else:
             s.I83 = R.I83_DONE if s.I92 else R.I83_ACTIVE
 

@@ -50,8 +50,8 @@ def make_axis(params: dict[str, Any] | None = None, *, referenced: bool = True, 
 
 
 def start(ax: Any, command: int, *base: dict[str, Any], **registers: Any) -> float:
-    """Write ``base`` (dicts) and ``registers`` (the later win), select ``command`` and give Execute a rising edge (low for a cycle first if it
-    is high); returns the time of the motion-core cycle that sees the edge."""
+    """Write ``base`` (dicts) and ``registers`` (the later win), select ``command`` and give Execute a rising
+    edge (low for a cycle first if it is high); returns the time of the motion-core cycle that sees the edge."""
     ctl = ax.ctl
     regs = ax.registers
     if regs.I402:

@@ -5,7 +5,7 @@ import pytest
 
 from plcmotion.pilz import Cause
 
-from ._core import A150, PROFILE, make_axis, start
+from ._core import PROFILE, make_axis, start
 
 
 def _feed(ctl, ax, **values):

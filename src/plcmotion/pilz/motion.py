@@ -225,7 +225,7 @@ MC_TorqueControl = _fb("MC_TorqueControl", C.TORQUE_CONTROL,
                        {"Torque": "I428", "TorqueRampUp": "I430", "TorqueRampDown": "I431"},
                        done="InTorque", doc="Command 9 (§1.10): torque/force control; InTorque = I92.")
 MC_CyclicPosition = _fb("MC_CyclicPosition", C.CYCLIC_POSITION, {"Position": 0.0}, {}, {"Position": "I421"},
-                        doc="Command 10 (§1.11): follow Position, written to I421 on every call; Done = I92 (started).",
+                        doc="Command 10 (§1.11): follow Position, written to I421 on every call; Done = I92.",
                         continuous=True)
 MC_Halt = _fb("MC_Halt", C.HALT, {"Deceleration": 0.0, "Jerk": 0.0, "BrakeAtEnd": False},
               {"Deceleration": "I406", "Jerk": "I407", "BrakeAtEnd": "I410"},

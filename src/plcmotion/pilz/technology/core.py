@@ -314,8 +314,8 @@ class MotionCore:
         self.set_position = target
         end_v = job.extra.get("end_velocity", 0.0)
         finished = ax.profile.t_end <= t + _EPS and (job is not ax.job or not ax._interpolating or end_v)
-        s.I85 = finished and abs(p - target) <= 1e-6 * max(1.0, abs(target)) if not end_v else (
-            self._passed(job, p))
+        # with an end velocity the profile ends where it passes the target (decisions.md, E15)
+        s.I85 = finished and (bool(end_v) or abs(p - target) <= 1e-6 * max(1.0, abs(target)))
         inside = self._in_window(cmd)
         s.I180 = inside
         if inside:
@@ -335,11 +335,6 @@ class MotionCore:
             cmd.done = True
         s.I92 = cmd.done
         s.I89 = R.STANDSTILL if (s.I85 and abs(v) <= _EPS) else cmd.state
-
-    @staticmethod
-    def _passed(job: Any, p: float) -> bool:
-        sign = math.copysign(1.0, job.target - job.extra.get("start", p)) if "start" in job.extra else 1.0
-        return (p - job.target) * sign >= -1e-9
 
     def _velocity(self, cmd: C.Command, v: float, act_v: float) -> None:
         s = self.status
@@ -366,7 +361,8 @@ class MotionCore:
         window = ax.eff["C40"]
         s.I183 = abs(act_v) <= window
         job = cmd.job
-        planned_out = cmd.at_standstill or (job is not None and (not job.busy or ax.profile.t_end <= ax.ctl.time + _EPS))
+        planned_out = cmd.at_standstill or (
+            job is not None and (not job.busy or ax.profile.t_end <= ax.ctl.time + _EPS))
         s.I85 = planned_out and abs(v) <= _EPS
         if s.I85 and s.I199:
             cmd.done = True

@@ -37,3 +37,32 @@ def test_pilz_limits_never_beyond(sequence):
             ax.reset()
     assert worst_v <= 400.0 * (1 + 1e-9)
     assert -300.0 - 1e-6 <= lo and hi <= 300.0 + 1e-6
+
+
+cyclic_values = st.lists(st.floats(min_value=-5000.0, max_value=5000.0, allow_nan=False), min_size=5, max_size=40)
+
+
+@settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.sampled_from([7, 9, 10]), cyclic_values, st.sampled_from([0, 1]))
+def test_pilz_limits_cyclic_never_above_i10(command, values, endless):
+    """Pilz V6.5 §1.8.3, §1.10.5, §1.11.3: whatever the controller sends, the set velocity of MC_CyclicSpeed,
+    MC_TorqueControl and MC_CyclicPosition never exceeds I10."""
+    ctl, ax = make_axis({"I10": 400.0, "I00": endless, "I01": 360.0, "Drive.Inertia": 0.001, "E65": 50.0,
+                         "E66": 50.0})
+    name = {7: "I426", 9: "I428", 10: "I421"}[command]
+    feed = {"k": 0}
+
+    def controller():
+        v = values[feed["k"] % len(values)]
+        feed["k"] += 1
+        if command == 10 and endless:
+            v = v % 360.0
+        ax.registers.write(name, v)
+
+    ctl.program(controller)
+    start(ax, command, **{name: 0.0})
+    worst = 0.0
+    for _ in range(200):
+        ctl.step()
+        worst = max(worst, abs(ax.status.E07))
+    assert worst <= 400.0 * (1 + 1e-9)

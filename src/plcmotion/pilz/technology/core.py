@@ -20,6 +20,7 @@ from ...kernel.jobs import JobKind, JobState
 from . import command as C
 from . import registers as R
 from . import starts
+from .brake import Brake
 from .causes import Cause
 from .cyclic import CyclicSetValues
 
@@ -46,6 +47,7 @@ class MotionCore:
         self.registers = R.CommandRegister(lambda: axis.ctl.time)
         self.status = R.StatusWords()
         self.cyclic = CyclicSetValues(self)
+        self.brake = Brake(self)
         self.command: C.Command | None = None
         self.starts = 0                      # accepted rising edges of I402 (for the FB wrappers)
         self.set_position: float | None = None    # last valid set position (MC_MoveAdditive base, §1.4.6)
@@ -117,6 +119,7 @@ class MotionCore:
         self._watch_enable(t)
         if edge:
             self._start(t)
+        self.brake.cycle(t)
         cmd = self.command
         if cmd is not None:
             self._follow_override(cmd)
@@ -145,6 +148,7 @@ class MotionCore:
             cmd.cancelled = Cause.ENABLE_OFF
         self.cyclic.end()
         self.stop_lock = False
+        self.brake.disabled()
 
     def _start(self, t: float) -> None:
         regs = self.registers
@@ -162,6 +166,8 @@ class MotionCore:
         if previous is not None and previous.number in C.CYCLIC:
             self.cyclic.end()
         cause = starts.denial(self, cmd)
+        if cause is None and number in C.STOPPING:
+            self.brake.on_start(cmd)
         if cause is None and number in C.STOPPING and 0.0 in (cmd.value("I406"), cmd.value("I407")):
             cmd.at_standstill = True            # §1.6.7: a denial at standstill is reported as Done
             cmd.state = R.STOPPING if number == C.STOP else R.DISCRETE
@@ -173,6 +179,7 @@ class MotionCore:
             if cause is not Cause.STOP_ACTIVE and self._moving() and self.ready():
                 self.quick_stop(t)
             return
+        self.brake.on_start(cmd)
         starts.limit_flags(self, cmd)
         if number not in (C.STOP, C.HALT) and not (number in C.POSITIONING):
             self.set_position = None            # only positionings create a valid set position (§1.4.6)
@@ -282,6 +289,8 @@ class MotionCore:
             self._home(cmd)
         else:
             self._cyclic_status(cmd, t)
+        if s.I92:
+            self.brake.on_done(cmd, t)
         if job is not None and job.pending:
             s.I83 = R.I83_ACTIVE_WITH_FOLLOWER     # a block runs, this one waits behind it
         else:

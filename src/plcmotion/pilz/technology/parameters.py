@@ -37,6 +37,7 @@ _PARAMS: list[Param] = [
     Param("I20", REAL, 20.0, RW, NOW, 0.0, 2000.0, lo_open=True, doc="position controller gain Kv [1/s]"),
     Param("I42", REAL, 0.0, RW, NOW, 0.0, 600.0, doc="brake wait time before the brake engages [s]"),
     Param("F00", INT, 0, R, (), choices=(0, 1), doc="brake control: 0 inactive, 1 active"),
+    Param("BrakeOutput", ADDR, "", R, (), choices=("Q",), doc="output that releases the holding brake ('' none)"),
     Param("I113", INT, 0, RW, NOW, choices=(0, 1),
           doc="MC_MoveVelocity set value takeover (I424): 0 at the start only, 1 cyclic"),
     Param("I119", INT, 0, RW, NOW, choices=(0, 1),

@@ -205,3 +205,20 @@ def test_pilz_denial_cancel_software_limit():
     ctl.run(1.5)
     assert ax.status.I91 and ax.status.I90 == Cause.SW_LIMIT_REACHED
     assert max(r.I96 for r in ax.rows) <= 100.0 + 1e-9
+
+
+@pytest.mark.parametrize("params,command,registers", [
+    ({"I11": 0.0, "I30": 3}, 6, {}), ({"I16": 0.0, "A586": 34}, 6, {}),
+    ({"I11": 0.0}, 8, {"I426": 100.0, "I407": 1000.0})])
+def test_pilz_denial_zero_maximum_without_motion(params, command, registers):
+    """decisions.md (Pilz V6.5 §1.7.2, §1.9.2 extended): MC_Home with a search and MC_MoveSpeed cannot move with
+    I11 = 0 or I16 = 0: denied with I90 = 6 instead of a profile without acceleration; setting the reference
+    still works."""
+    ctl, ax = make_axis(params, referenced=False)
+    start(ax, command, **registers)
+    ctl.step()
+    assert ax.status.I91 and ax.status.I90 == Cause.ZERO_MAXIMUM and not ax.alarms
+    ctl2, ax2 = make_axis({**params, "A586": None, "I30": 5}, referenced=False)
+    start(ax2, 6)
+    ctl2.run(0.003)
+    assert ax2.status.I92

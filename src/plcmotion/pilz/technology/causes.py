@@ -46,7 +46,7 @@ DENIALS: dict[int, tuple[Cause, ...]] = {
         Cause.NOT_REFERENCED),
     4: (Cause.DIRECTION_BLOCKED, Cause.HW_LIMIT, Cause.ZERO_DYNAMICS, Cause.ZERO_MAXIMUM),
     5: (Cause.ZERO_DYNAMICS, Cause.ZERO_MAXIMUM),
-    6: (Cause.NOT_STANDSTILL, Cause.REFERENCING_INACTIVE),
+    6: (Cause.NOT_STANDSTILL, Cause.REFERENCING_INACTIVE, Cause.ZERO_MAXIMUM),
     7: (),
     8: (Cause.ZERO_DYNAMICS, Cause.ZERO_MAXIMUM),
     9: (),

@@ -120,12 +120,16 @@ def denial(core: "MotionCore", cmd: C.Command) -> Cause | None:
     if n == C.MOVE_SPEED:
         if cmd.value("I407") == 0.0:
             return Cause.ZERO_DYNAMICS
-        return Cause.ZERO_MAXIMUM if e["I16"] == 0.0 else None
+        # I16 = 0 is the manual's cause; I11 = 0 leaves the velocity profile no acceleration (decisions.md)
+        return Cause.ZERO_MAXIMUM if zero_max else None
     if n == C.HOME:
         if not core.at_standstill():
             return Cause.NOT_STANDSTILL
-        if ax.referencing.method() is None:
+        method = ax.referencing.method()
+        if method is None:
             return Cause.REFERENCING_INACTIVE
+        if zero_max and method.feature is not Feature.SET_REFERENCE:
+            return Cause.ZERO_MAXIMUM            # a search cannot move without I11 / I16 (decisions.md)
         return None
     return None
 

@@ -66,3 +66,31 @@ def test_pilz_limits_cyclic_never_above_i10(command, values, endless):
         ctl.step()
         worst = max(worst, abs(ax.status.E07))
     assert worst <= 400.0 * (1 + 1e-9)
+
+
+_VALUES = st.sampled_from([0.0, -1.0, 1.0, 50.0, -50.0, 359.0, 400.0, -1000.0, 1e6, 1e-9])
+_REGS = ("I403", "I404", "I405", "I406", "I407", "I421", "I426", "I428", "I429", "I430", "I431", "I216", "I217")
+_STEP = st.tuples(st.integers(min_value=0, max_value=11), st.tuples(*[_VALUES] * len(_REGS)),
+                  st.integers(min_value=0, max_value=1), st.integers(min_value=0, max_value=3),
+                  st.sampled_from([0.0, 50.0, 150.0]), st.sampled_from([1, 10, 100, 300]), st.booleans())
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.sampled_from([0, 1]), st.sampled_from([0.0, 100.0, 5000.0]), st.sampled_from([0.0, 1e3, 1e5]),
+       st.lists(_STEP, min_size=1, max_size=6))
+def test_pilz_limits_any_register_sequence(endless, i11, i16, steps):
+    """Pilz V6.5 §1 (the register interface): whatever a program writes - zero, tiny, huge and negative set
+    values, any command, any command mode, direction, override, Execute pattern - the motion core answers with
+    its status words: no internal error (16#8FFF) and the controller stays in RUN."""
+    ctl, ax = make_axis({"I00": endless, "I01": 360.0, "I11": i11, "I16": i16, "I50": 300.0, "I51": -300.0,
+                         "I30": 3, "Plant.ZeroMarkDistance": 10.0}, referenced=False)
+    for command, values, mode, direction, override, cycles, low in steps:
+        ax.registers.I230 = override
+        start(ax, command, **dict(zip(_REGS, values)), I409=mode, I411=direction)
+        for _ in range(cycles):
+            ctl.step()
+        if low:
+            release(ax)
+        if ax.alarms:
+            ax.reset()
+        assert ctl.mode == "RUN" and ax.last_internal_error is None

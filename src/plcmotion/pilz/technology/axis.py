@@ -15,11 +15,11 @@ from ...kernel.axis import PositioningAxis
 from ...kernel.faults import Fault, Reaction
 from ...kernel.job_start import JobStart
 from ...kernel.jobs import Job, JobState
-from ...kernel.motion import limits, modulo_target
 from . import registers as R
 from .core import MotionCore
 from .parameters import PILZ_AXIS
 from .referencing import Referencing
+from .starts import endless_target
 
 _LIMIT_SWITCH_FAULTS = (F.HW_LIMIT_MIN, F.HW_LIMIT_MAX)
 
@@ -32,9 +32,7 @@ class _JobStart(JobStart):
         ax = self.axis
         if not ax.config.modulo.enabled:
             return job.position
-        lim = limits(ax, ax.commanded_velocity(job.velocity) or None, job=job)
-        return modulo_target(ax, job.position, job.direction, job.extra.get("sign", 1.0), p, v, a, lim,
-                             ax.motion.planner)
+        return endless_target(ax, job, p, v, a)
 
 
 class DriveAxis(PositioningAxis):

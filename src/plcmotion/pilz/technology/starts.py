@@ -7,12 +7,14 @@ torque control run on the motion core's own set values (``cyclic.py``).
 """
 from __future__ import annotations
 
+import dataclasses
 import math
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from ...kernel.axis_queue import BufferMode
 from ...kernel.jobs import Job, JobKind
 from ...kernel.motion import limits, modulo_target, wrap
+from ...kernel.profiles import PlanningError
 from . import command as C
 from .causes import Cause
 from .homing_methods import Feature
@@ -31,6 +33,21 @@ def _direction_blocked(core: "MotionCore", sign: float) -> bool:
 def _hw_limit_ahead(core: "MotionCore", sign: float) -> bool:
     approached = core.axis.limit_switches.approached
     return (sign > 0 and approached["max"]) or (sign < 0 and approached["min"])
+
+
+def endless_target(ax: Any, job: Job, p: float, v: float, a: float) -> float:
+    """The unwrapped target of an MC_MoveAbsolute job on an endless axis, placed with the job's own dynamics
+    (how many turns the axis needs to brake, §1.2.4).  Dynamics the planner cannot brake with (a zero or
+    vanishing deceleration or jerk: such a command is denied, or would never stop) place it by a ramp with
+    the axis maximum instead, so that working out the denial cause never fails."""
+    lim = limits(ax, ax.commanded_velocity(job.velocity) or None, job=job)
+    try:
+        return modulo_target(ax, job.position, job.direction, job.extra.get("sign", 1.0), p, v, a, lim,
+                             ax.motion.planner)
+    except PlanningError:
+        safe = dataclasses.replace(lim, jerk=math.inf, deceleration=max(lim.deceleration, ax.eff["I11"], 1e-3))
+        return modulo_target(ax, job.position, job.direction, job.extra.get("sign", 1.0), p, v, a, safe,
+                             ax.motion.planner)
 
 
 def absolute_target(core: "MotionCore", cmd: C.Command) -> tuple[float, int, float]:
@@ -52,10 +69,9 @@ def absolute_target(core: "MotionCore", cmd: C.Command) -> tuple[float, int, flo
         shortest = min(ahead, length - ahead)
         if not moving and shortest <= ax.eff["I22"]:
             code = 3                         # already within the position window: the shortest way
-    dyn = Job(JobKind.ABSOLUTE, **_dynamics(cmd, "I405", "I406"))
-    lim = limits(ax, ax.commanded_velocity(abs(cmd.value("I404"))) or None, job=dyn)
-    target = modulo_target(ax, position, code, sign, p, v, a, lim, ax.motion.planner)
-    return target, code, sign
+    job = Job(JobKind.ABSOLUTE, position=position, velocity=abs(cmd.value("I404")), direction=code,
+              extra={"sign": sign}, **_dynamics(cmd, "I405", "I406"))
+    return endless_target(ax, job, p, v, a), code, sign
 
 
 def relative_base(core: "MotionCore", cmd: C.Command) -> float:

@@ -189,3 +189,18 @@ def test_pilz_status_motion_id():
     ctl, ax = make_axis()
     start(ax, 4, PROFILE, I404=10.0, I400=42)
     assert ax.status.I82 == 42
+
+
+def test_pilz_status_controller_restart():
+    """decisions.md (Pilz V6.5 §1): after a controller restart the core runs no command; a new command starts
+    from the register's start values and runs normally."""
+    ctl, ax = make_axis()
+    start(ax, 1, PROFILE, I403=100.0)
+    ctl.run(0.2)
+    ctl.power_cycle()
+    ax.enable()
+    ctl.run(0.05)
+    assert ax.status.I89 == 2 and not ax.status.I92 and not ax.status.I91 and ax.registers.I401 == 0
+    start(ax, 2, PROFILE, I403=10.0)
+    ctl.run(1.0)
+    assert ax.status.I92 and ax.status.I96 == pytest.approx(ax.status.I80 + 10.0, abs=1e-9)

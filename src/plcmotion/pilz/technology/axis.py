@@ -85,6 +85,12 @@ class DriveAxis(PositioningAxis):
         return self.acknowledge()
 
     # --- kernel hooks ---------------------------------------------------------------------------------------
+    def reinitialize(self, reason: str) -> None:
+        super().reinitialize(reason)
+        core = getattr(self, "core", None)
+        if core is not None:
+            core.reset()
+
     def _check_inputs(self, t: float) -> None:
         if not self.sim:
             super()._check_inputs(t)

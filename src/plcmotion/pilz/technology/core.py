@@ -59,6 +59,20 @@ class MotionCore:
         self._enabled = False
         self._error_shown = False
 
+    def reset(self) -> None:
+        """The controller restarts (CPU STOP -> RUN, power cycle): the command register is written anew by the
+        restarted program (start values), no command runs, the status words start from standstill."""
+        self.registers = R.CommandRegister(lambda: self.axis.ctl.time)
+        homed = self.status.I86
+        self.status = R.StatusWords(I86=homed)
+        self.cyclic.end()
+        self.command = None
+        self.set_position = None
+        self.stop_lock = False
+        self.claimed = None
+        self._execute = False
+        self._override = 100.0
+
     # --- helpers ----------------------------------------------------------------------------------------
     def actual_position(self) -> float:
         ax = self.axis

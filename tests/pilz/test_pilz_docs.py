@@ -41,3 +41,12 @@ def test_pilz_docs_links_resolve():
     for page in [DOCS / "index.md", DOCS / "denials.md", DOCS / "decisions.md", *(DOCS / "commands").glob("*.md")]:
         for target in re.findall(r"\]\(([^)#:]+\.md)", page.read_text()):
             assert (page.parent / target).exists(), f"{page.name}: {target}"
+
+
+def test_pilz_docs_index_snippets_run():
+    """The code on docs/pilz/index.md runs in order and does what the page says (a relative move by 100 on the
+    register, then MC_Home and MC_MoveAbsolute to 150)."""
+    ns: dict = {}
+    for block in re.findall(r"```python\n(.*?)```", (DOCS / "index.md").read_text(), re.DOTALL):
+        exec(compile(block, "docs/pilz/index.md", "exec"), ns)     # noqa: S102 - our own page
+    assert ns["move"].Done and ns["axis"].status.I96 == pytest.approx(150.0)

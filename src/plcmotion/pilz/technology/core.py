@@ -103,7 +103,7 @@ class MotionCore:
     @property
     def override(self) -> float:
         """I230 as the profile commands use it [%] (negative values count as 0)."""
-        return max(0.0, self.registers.I230)
+        return max(0.0, self.registers.live["I230"])
 
     def move_speed_velocity(self, cmd: C.Command) -> float:
         """MC_MoveSpeed set velocity: I426 with I04 (forbidden direction: 0) and the limit switches."""
@@ -127,7 +127,7 @@ class MotionCore:
     def cycle(self, t: float) -> None:
         """One motion-core cycle A150 at time ``t``."""
         regs = self.registers
-        execute = regs.I402
+        execute = regs.live["I402"]
         edge = execute and not self._execute
         self._execute = execute
         self._watch_enable(t)
@@ -261,7 +261,7 @@ class MotionCore:
         window = ax.eff["C40"]
         s.I199 = abs(v) <= _EPS and abs(act_v) <= window
         cmd = self.command
-        if self.stop_lock and s.I199 and not self.registers.I402 and not self._moving():
+        if self.stop_lock and s.I199 and not self.registers.live["I402"] and not self._moving():
             self.stop_lock = False
         if cmd is None:
             s.I89 = self._rest_state()
@@ -296,7 +296,7 @@ class MotionCore:
         if n in C.POSITIONING:
             self._positioning(cmd, t, p, v, act_v)
         elif n in C.VELOCITY:
-            self._velocity(cmd, v, act_v)
+            self._velocity(cmd, t, v, act_v)
         elif n in C.STOPPING:
             self._stopping(cmd, v, act_v)
         elif n == C.HOME:
@@ -359,7 +359,7 @@ class MotionCore:
         s.I92 = cmd.done
         s.I89 = R.STANDSTILL if (s.I85 and abs(v) <= _EPS) else cmd.state
 
-    def _velocity(self, cmd: C.Command, v: float, act_v: float) -> None:
+    def _velocity(self, cmd: C.Command, t: float, v: float, act_v: float) -> None:
         s = self.status
         ax = self.axis
         job = cmd.job
@@ -370,10 +370,10 @@ class MotionCore:
             self.cyclic.follow_move_speed(cmd, job)
         elif cmd.number == C.MOVE_VELOCITY and cmd.value("I424") == 1:
             self.cyclic.follow_move_velocity(cmd, job)
-        target = min(abs(ax.commanded_velocity(job.velocity)), ax.eff["I10"])
-        target = math.copysign(target, job.velocity)
-        s.I85 = ax.profile.t_end <= ax.ctl.time + _EPS and abs(v - target) <= 1e-9 * max(1.0, abs(target))
-        s.I183 = s.I85 and abs(act_v - target) <= ax.eff["C40"]
+        e = ax.eff
+        target = math.copysign(min(abs(job.velocity) * self.override / 100.0, e["I10"]), job.velocity)
+        s.I85 = ax.profile.t_end <= t + _EPS and abs(v - target) <= 1e-9 * max(1.0, abs(target))
+        s.I183 = s.I85 and abs(act_v - target) <= e["C40"]
         if s.I85 and s.I183:
             cmd.done = True
         s.I92 = cmd.done

@@ -91,10 +91,13 @@ class CommandRegister:
     Every write is checked (:class:`RegisterError`) and time-stamped: the cyclic commands watch for set
     values that stop coming (extrapolation time I423)."""
 
-    __slots__ = ("_values", "_written", "_clock")
+    __slots__ = ("_values", "_written", "_clock", "live")
 
     def __init__(self, clock: Any):
-        object.__setattr__(self, "_values", {r.name: r.default for r in INPUTS})
+        values = {r.name: r.default for r in INPUTS}
+        object.__setattr__(self, "_values", values)
+        #: the values as a dict, for reading in the motion core's cycle (write through ``write`` only)
+        object.__setattr__(self, "live", values)
         object.__setattr__(self, "_written", {r.name: -math.inf for r in INPUTS})
         object.__setattr__(self, "_clock", clock)
 
@@ -122,10 +125,10 @@ class CommandRegister:
         return dict(self._values)
 
     def __getattr__(self, name: str) -> Any:
-        values = object.__getattribute__(self, "_values")
-        if name in values:
-            return values[name]
-        raise AttributeError(name)
+        try:
+            return self._values[name]
+        except KeyError:
+            raise AttributeError(name) from None
 
     def __setattr__(self, name: str, value: Any) -> None:
         self.write(name, value)

@@ -97,6 +97,7 @@ def test_pilz_homing_method_tables():
     for number in POSITION_CONTROLLED:
         assert control_type(METHODS[CIA402_LETTER[number]]) == "position"
     assert {CIA402_LETTER[n] for n in POSITION_CONTROLLED} == set("ABCDEFGHIJKLMN")
+    assert {CIA402_LETTER[n] for n in VELOCITY_CONTROLLED} == set("PQRS")
     assert control_type(METHODS["O"]) == "unchanged" and control_type(METHODS["P"]) == "velocity"
 
 
@@ -113,11 +114,23 @@ def test_pilz_homing_drive_based_selection(i30, i31, i35, middle, letter):
     assert from_drive_based(0, i31, i35, middle) is None
 
 
-def test_pilz_homing_torque_stop_not_configurable():
-    """Pilz V6.5 Tab. 19: the torque/force stop methods need a torque measurement the simulated drive lacks:
-    I30 = 4 and A586 = -1 ... -4 are refused as configuration errors naming the parameter."""
-    from plcmotion import ConfigurationError, Controller
-    for params in ({"I30": 4}, {"A586": -2}):
-        with pytest.raises(ConfigurationError, match=list(params)[0]):
-            Controller(family="Pilz").add_positioning_axis("X", params)
+@pytest.mark.parametrize("params,point", [
+    ({"A586": -1}, 80.0), ({"A586": -2}, 73.0), ({"A586": -3}, -80.0), ({"A586": -4}, -77.0),
+    ({"I30": 4, "I31": 0, "I35": 0}, 80.0), ({"I30": 4, "I31": 1, "I35": 1}, -77.0)])
+def test_pilz_homing_torque_stop(params, point):
+    """Pilz V6.5 Tab. 22 P - S, Tab. 21 I28 / I29: the axis presses against the mechanical end stop; the
+    reference is set when the torque/force has stayed at the limit I28 for I29 - at the stop, or with zero
+    pulse at the first zero pulse away from it."""
+    ctl, ax = make_axis({**BASE, **params, "Drive.EndStopPositive": 80.0, "Drive.EndStopNegative": -80.0,
+                         "I29": 0.2}, referenced=False)
+    t0 = start(ax, 6)
+    arrived = None
+    while not (ax.status.I92 or ax.status.I91) and ctl.time < t0 + 10.0:
+        ctl.step()
+        if arrived is None and abs(ax.drive.mechanical_position()) >= 80.0 - 1e-9:
+            arrived = ctl.time
+    assert ax.status.I92 and ax.status.I86 and not ax.alarms
+    assert ctl.time - arrived >= 0.2
+    offset = float(ctl.bank.act_p[ax.index]) - ax.drive.mechanical_position()
+    assert offset == pytest.approx(I34 - point, abs=0.02)
     assert all(METHODS[c].feature is Feature.TORQUE_STOP for c in "PQRS")

@@ -47,9 +47,10 @@ POSITION_CONTROLLED = (1, 2, 3, 5, 7, 11, 17, 18, 19, 21, 23, 27, 33, 34)
 VELOCITY_CONTROLLED = (-1, -2, -3, -4)
 SET_REFERENCE = (35, 37)
 
-#: A586 -> letter (CiA 402 reading, decisions.md); the torque stops -1..-4 are not modelled (no torque sensing)
+#: A586 -> letter (CiA 402 reading; the order of the manufacturer-specific -1 ... -4: decisions.md)
 CIA402_LETTER: dict[int, str] = {1: "A", 5: "B", 17: "C", 21: "D", 2: "E", 3: "F", 18: "G", 19: "H",
-                                 7: "I", 23: "J", 11: "K", 27: "L", 33: "M", 34: "N", 35: "O", 37: "O"}
+                                 7: "I", 23: "J", 11: "K", 27: "L", 33: "M", 34: "N", 35: "O", 37: "O",
+                                 -1: "P", -2: "Q", -3: "R", -4: "S"}
 #: the A586 numbers this drive model accepts
 CIA402_METHODS: tuple[int, ...] = tuple(sorted(CIA402_LETTER))
 

@@ -14,8 +14,9 @@ path; this subclass runs the Pilz sequence for every method with a search moveme
 
 Dynamics: I39 (acceleration and deceleration), I44 (jerk), limited to I11 / I16 without setting I190/I191
 (§1.7.3); zero values are no denial (§1.7.2) and mean the maxima.  Setting the reference (method O) is the
-kernel's direct homing.  The torque/force stop methods (P-S) need a torque measurement the simulated drive
-does not have; their parameter values are refused by the schema (decisions.md).
+kernel's direct homing.  The torque/force stop methods (P-S) press against the mechanical end stop of the
+simulated machine (``Drive.EndStopNegative`` / ``Drive.EndStopPositive``) and set the reference once the
+torque/force has stayed at the limit I28 for I29 (decisions.md).
 """
 from __future__ import annotations
 
@@ -23,7 +24,7 @@ from ...kernel import faults as F
 from ...kernel.faults import Reaction
 from ...kernel.homing import Homing
 from ...kernel.jobs import Job, JobState
-from ...kernel.profiles import Limits
+from ...kernel.profiles import Limits, Planner
 from .homing_methods import Feature, Method, from_cia402, from_drive_based
 
 
@@ -72,6 +73,8 @@ class Referencing(Homing):
         x.update(method=m, d=float(m.direction), search=float(m.direction), reversed=False)
         if m.feature is Feature.ZERO_PULSE:
             self._index(job, x["d"], t)
+        elif m.feature is Feature.TORQUE_STOP:
+            self._run(job, "search", x["search"] * self._speed("I32"), t)
         elif self._feature_active(job):
             self._run(job, "brake", 0.0, t)
         else:
@@ -114,9 +117,33 @@ class Referencing(Homing):
         a._interpolating = False
         a._finish_job(job, JobState.DONE, t)
 
+    def _torque_stop(self, job: Job, t: float) -> None:
+        """Methods P - S: press against the mechanical end stop; the torque/force rises to the limit I28 there,
+        and once it has stayed there for I29 the reference is set (or, with zero pulse, at the first zero pulse
+        away from the stop).  The simulated machine's end stop (``Drive.EndStop*``) holds the load where it is."""
+        a = self.axis
+        x = job.extra
+        phase = x.get("phase")
+        if phase == "search":
+            d = x["search"]
+            stop = a.eff["Drive.EndStopPositive" if d > 0 else "Drive.EndStopNegative"]
+            mech = a.drive.mechanical_position()
+            if stop is not None and (mech - stop) * d >= 0.0:
+                at = float(a.ctl.bank.act_p[a.index]) + (stop - mech)
+                x["phase"], x["since"] = "press", t
+                a._start_profile(Planner.hold(t, at))
+        elif phase == "press" and t - x["since"] >= a.eff["I29"] - 1e-9:
+            if x["method"].zero_pulse:
+                self._index(job, -x["search"], t)
+            else:
+                self._reference(job, self._latch_position(), t)
+
     def _active_inputs(self, job: Job, t: float) -> None:
         x = job.extra
         phase = x.get("phase")
+        if x["method"].feature is Feature.TORQUE_STOP and phase in ("search", "press"):
+            self._torque_stop(job, t)
+            return
         active = self._feature_active(job)
         was = x.get("active", active)
         x["active"] = active

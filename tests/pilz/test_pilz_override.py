@@ -45,6 +45,7 @@ def test_pilz_override_above_100_clipped():
     ctl, ax = make_axis({"I10": 300.0})
     ax.registers.I230 = 200.0
     start(ax, 4, PROFILE, I404=250.0)
+    assert ax.status.I193                               # from the start: the override set before it
     assert _peak(ctl, ax, 1.0) == pytest.approx(300.0)
     assert ax.status.I193 and not ax.status.I190
 

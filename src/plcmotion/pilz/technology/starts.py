@@ -163,6 +163,7 @@ def limit_flags(core: "MotionCore", cmd: C.Command) -> None:
     if n in C.POSITIONING or n == C.MOVE_VELOCITY:
         v = abs(cmd.value("I404"))
         s.I190 = v > e["I10"]
+        s.I193 = v <= e["I10"] < v * core.override / 100.0
         s.I191 = (cmd.value("I405") > e["I11"] or cmd.value("I406") > e["I11"] or cmd.value("I407") > e["I16"])
     elif n in C.STOPPING:
         s.I191 = cmd.value("I406") > e["I11"] or cmd.value("I407") > e["I16"]

@@ -204,3 +204,20 @@ def test_pilz_status_controller_restart():
     start(ax, 2, PROFILE, I403=10.0)
     ctl.run(1.0)
     assert ax.status.I92 and ax.status.I96 == pytest.approx(ax.status.I80 + 10.0, abs=1e-9)
+
+
+def test_pilz_status_as_tags():
+    """The status words and the command register read as tags (``axis.tag``, attributes), as the kernel's tag
+    views give them to traces and programs; a register write through the tag path is refused (use
+    ``axis.write``)."""
+    from plcmotion.kernel.tag_views import TagAccessError
+    from plcmotion.pilz import RegisterError
+
+    ctl, ax = make_axis()
+    start(ax, 4, PROFILE, I404=20.0)
+    ctl.run(0.2)
+    assert ax.tag("I92") is True and ax.I89 == 4 and ax.tag("I404") == 20.0 and ax.tag("I10") == 500.0
+    with pytest.raises((TagAccessError, KeyError, RegisterError)):
+        ax.set_tag("I404", 1.0)
+    with pytest.raises(RegisterError):
+        ax.write("I92", True)

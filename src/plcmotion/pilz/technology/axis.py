@@ -22,6 +22,21 @@ from .referencing import Referencing
 from .starts import endless_target
 
 _LIMIT_SWITCH_FAULTS = (F.HW_LIMIT_MIN, F.HW_LIMIT_MAX)
+_TYPES = {bool: "Bool", int: "DInt", float: "LReal"}
+
+
+def _status_getter(name: str) -> Any:
+    return lambda ax: getattr(ax.core.status, name)
+
+
+def _register_getter(name: str) -> Any:
+    return lambda ax: ax.core.registers.live[name]
+
+
+#: the status words and the command register as read-only tags (``axis.tag("I92")``, ``axis.I89``, traces)
+_DYNAMIC = {**{n: _status_getter(n) for n in R.STATUS_NAMES}, **{n: _register_getter(n) for n in R.BY_NAME}}
+_DYNAMIC_TYPES = {**{n: _TYPES[type(getattr(R.StatusWords(), n))] for n in R.STATUS_NAMES},
+                  **{n: _TYPES[r.kind] for n, r in R.BY_NAME.items()}}
 
 
 class _JobStart(JobStart):
@@ -40,6 +55,8 @@ class DriveAxis(PositioningAxis):
 
     schema = PILZ_AXIS
     homing_class = Referencing
+    _dynamic = _DYNAMIC
+    _dynamic_types = _DYNAMIC_TYPES
     _sim_homing_at_once = False
 
     def __init__(self, ctl: Any, name: str, cfg: Any, **kw: Any):

@@ -221,3 +221,19 @@ def test_pilz_status_as_tags():
         ax.set_tag("I404", 1.0)
     with pytest.raises(RegisterError):
         ax.write("I92", True)
+
+
+@pytest.mark.parametrize("command", [2, 3])
+def test_pilz_status_relative_additive(command):
+    """Pilz V6.5 Tab. 8 / Tab. 12: I85 when the set position equals I403 + I80 (MC_MoveRelative, I80 = actual
+    position at the start) or I403 + the set position at the start (MC_MoveAdditive); I92 after I180 held I87;
+    the handshake cycle first."""
+    ctl, ax = make_axis({"Plant.InitialPosition": 9.5, "I22": 0.5, "I87": 0.03}, referenced=False)
+    t0 = start(ax, command, PROFILE, I403=40.0)
+    ctl.run(1.0)
+    rows = rows_from(ax, t0)
+    assert not rows[0].I85 and not rows[0].I92 and rows[0].I89 == 3
+    prof, done = _first(rows, "I85"), _first(rows, "I92")
+    assert prof.I96 == pytest.approx(ax.status.I80 + 40.0) == pytest.approx(49.5, abs=0.01)
+    assert done.t >= prof.t and all(r.I180 for r in rows if done.t - 0.03 - 1e-9 <= r.t <= done.t)
+    assert rows[-1].I89 == 2

@@ -1,0 +1,15 @@
+"""MC_MoveSpeed (command 8): velocity control without position control, ramps I216 / I217, cyclic takeover."""
+from plcmotion import Controller
+from plcmotion.pilz import MC_MoveSpeed
+
+ctl = Controller(family="Pilz", servo_cycle=0.001, app_cycle=0.001)
+axis = ctl.add_positioning_axis("X")
+axis.enable()
+ctl.run_until(lambda: axis.status.I89 == 2)     # the drive is enabled: standstill
+speed = MC_MoveSpeed(Axis=axis, Velocity=100.0, Acceleration=1000.0, Deceleration=1000.0, Jerk=100000.0)
+ctl.program(lambda: speed(Execute=True))
+ctl.run_until(lambda: speed.InVelocity, timeout=2.0)
+speed.Velocity = 150.0                    # taken over while the command runs (I119 = 0)
+ctl.run(0.2)
+print(f"set velocity {axis.status.E07}, position control {axis.position_controlled}")
+assert axis.status.E07 == 150.0 and not axis.position_controlled

@@ -22,7 +22,7 @@ def test_kernel_controller_knows_whether_a_drive_group_is_closed_loop(kind, clos
     """S7-Technology V4.1 §3.3.1: a hydraulic group is position controlled like a servo group."""
     ctl = Controller()
     assert not ctl._closed_loop
-    ctl._drive_group(kind.value)
+    ctl._drive_group(SimpleNamespace(group_key=kind.value, link=None))    # a drive spec of that kind
     assert ctl._closed_loop is closed
 
 

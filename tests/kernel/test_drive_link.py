@@ -50,6 +50,7 @@ class _Channel(DriveChannel):
 
 
 class _Group(DriveGroup):
+    closed_loop = True          # a drive that takes the position controller's speed command (cmd_v)
     """A drive that moves with the speed command it got (the kernel's position loop closes around it)."""
 
     closed = 0

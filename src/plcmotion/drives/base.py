@@ -20,8 +20,10 @@ disables; the drive runs its own switch-on sequence), ``ready`` (the drive execu
 while enabling and for the status), ``set_fault`` (a fault of the drive itself: not ready, the power
 section stops following the setpoint and ramps down), ``set_actual`` (homing re-references the actual
 value), ``reconfigure`` (the axis configuration changed at run time: a new spec), the zero mark latch
-(``arm_zero_mark``/``zero_mark_latched``/``disarm_zero_mark``) and ``communication_ok``.  It reads back
-``mechanical_position`` (where the load really is: what switches and zero marks see).
+(``arm_zero_mark``/``zero_mark_latched``/``disarm_zero_mark``), ``communication_ok`` and the torque
+(force) limit (``set_torque_limit``).  It reads back ``mechanical_position`` (where the load really is: what
+switches and zero marks see), ``torque`` and ``torque_limit_active`` (a drive pushing against a fixed end
+stop, ``PlantSpec.end_stop_min``/``end_stop_max``).
 
 Nothing here runs per cycle per axis in Python: a group keeps its members' state in numpy arrays.
 """
@@ -84,9 +86,34 @@ class DriveChannel(ABC):
         """The actual value latched at a zero mark since arming (once), or None."""
         return None
 
+    # torque (force) limiting: fixed end stops, clamping
+    @property
+    def can_limit_torque(self) -> bool:
+        """The drive limits its torque (a hydraulic drive: its force) on request."""
+        return False
+
+    def set_torque_limit(self, limit: float | None) -> None:
+        """Limit the drive's torque [N m] (a hydraulic drive's force [N]) to ``limit`` > 0 from now on, or
+        lift the limit (None).  The limit stays while the drive is disabled."""
+        raise ValueError("this drive cannot limit its torque")
+
+    @property
+    def torque(self) -> float:
+        """The torque [N m] (a hydraulic drive: the force [N]) the drive gives now, positive in the axis's
+        positive direction."""
+        return 0.0
+
+    @property
+    def torque_limit_active(self) -> bool:
+        """The drive gives as much torque (force) as its limit allows: it wants more."""
+        return False
+
 
 class DriveGroup(ABC):
     """All drives of one kind, updated together on the bank's arrays once per servo cycle."""
+
+    #: the controller closes a position loop over these drives (they take ``bank.cmd_v``)
+    closed_loop: bool = False
 
     @abstractmethod
     def add(self, index: int, spec: DriveSpec, servo_cycle: float, t: float) -> DriveChannel:

@@ -32,6 +32,9 @@ def new_drive_group(kind: ActuatorKind | str, bank: Any) -> DriveGroup:
     kind = ActuatorKind(kind)
     if kind is ActuatorKind.SPEED_SERVO:
         return ServoDrives()
+    if kind is ActuatorKind.HYDRAULIC:
+        from .hydraulic import HydraulicDrives      # builds on ServoDrives below
+        return HydraulicDrives()
     return SetpointDrives(stepper=kind is ActuatorKind.PULSE, bank=bank)
 
 
@@ -135,13 +138,53 @@ class _ServoChannel(DriveChannel):
         g.last[m] += value - old
         bank.act_p[g.idx[m]] = value
 
+    # --- torque limit and fixed end stops ---------------------------------------------------------------
+    @property
+    def can_limit_torque(self) -> bool:
+        return True
+
+    def set_torque_limit(self, limit: float | None) -> None:
+        g, m = self.group, self.member
+        g.tset[m] = _limit_value(limit, "torque limit [N m]")
+        g.tlim[m] = min(g.tmax[m], g.tset[m])
+        g.limited = True
+
+    @property
+    def torque(self) -> float:
+        g, m = self.group, self.member
+        if g.limited:
+            return float(g.trq[m])
+        # not modelled cycle by cycle yet: the speed loop's demand of this moment
+        return float(g.jt[m] * (g.cmd[m] - g.v[m]) * (1.0 - g.e[m]) / g.dt)
+
+    @property
+    def torque_limit_active(self) -> bool:
+        g = self.group
+        return bool(g.limited and g.tact[self.member])
+
+
+def _limit_value(limit: float | None, what: str) -> float:
+    """A torque/force limit as a float (inf for None); a ValueError for anything but a number > 0."""
+    if limit is None:
+        return math.inf
+    if isinstance(limit, bool) or not isinstance(limit, (int, float)) or not limit > 0 or math.isnan(limit):
+        raise ValueError(f"{what} must be a number > 0 or None, got {limit!r}")
+    return float(limit)
+
 
 class ServoDrives(DriveGroup):
-    """Closed-loop drives (PROFIdrive telegram or analog speed setpoint) with incremental encoders."""
+    """Closed-loop drives (PROFIdrive telegram or analog speed setpoint) with incremental encoders.
 
+    Torque: the drive's speed loop asks for the torque ``inertia * angular acceleration``; a torque limit
+    (``DriveSpec.max_torque``, ``set_torque_limit``) caps the acceleration, and a fixed end stop
+    (``PlantSpec.end_stop_min``/``end_stop_max``) holds the load while the drive keeps pushing, so the
+    following error grows and the torque rises to its limit.  This costs nothing per cycle in groups where
+    no member has a limit or an end stop (``limited``)."""
+
+    closed_loop = True
     _FIELDS = ("x", "v", "cmd", "e", "tfac", "vlim", "off_dec", "ready_at", "ready_delay", "q", "off", "last",
                "zm_dir", "zm_dist", "zm_off", "zm_hit", "zm_count", "lead", "qscale", "qmax", "word", "rev_dist",
-               "dist")
+               "dist", "jt", "tmax", "tset", "tlim", "trq", "lo", "hi")
 
     def __init__(self) -> None:
         self.idx = np.zeros(0, dtype=np.intp)
@@ -150,6 +193,9 @@ class ServoDrives(DriveGroup):
         self.pulses = np.zeros(0, dtype=bool)     # the drive's power section is on and follows its setpoint
         self.blk = np.zeros(0, dtype=bool)        # injected: the load stands against an obstacle
         self.disturbed = False                    # any external force or blocked load (fault injection)
+        self.tact = np.zeros(0, dtype=bool)       # the torque limit holds the drive back
+        self.limited = False                      # any member with a torque limit or an end stop
+        self.dt = 0.001
         self.links: list[ProfidriveLink | None] = []
         self.stepping: set[int] = set()           # PROFIdrive members whose state machine is moving
         self.cycles = 0
@@ -177,7 +223,7 @@ class ServoDrives(DriveGroup):
                       ready_delay=spec.ready_delay, q=q, off=0.0, last=math.floor(x0 / q) * q,
                       zm_dir=0.0, zm_dist=zm_dist, zm_off=plant.zero_mark_offset, zm_hit=math.nan,
                       zm_count=0.0, lead=lead, qscale=scale / spec.reference_speed, qmax=float(limit), word=0.0,
-                      rev_dist=rev_dist, dist=0.0)
+                      rev_dist=rev_dist, dist=0.0, **self._torque_values(spec))
         for name in self._FIELDS:
             setattr(self, name, np.append(getattr(self, name), values[name]))
         self.idx = np.append(self.idx, index)
@@ -185,6 +231,10 @@ class ServoDrives(DriveGroup):
         self.flt = np.append(self.flt, False)
         self.pulses = np.append(self.pulses, False)
         self.blk = np.append(self.blk, False)
+        self.tact = np.append(self.tact, False)
+        self.dt = servo_cycle
+        self.limited = bool(self.limited or np.isfinite(self.tlim[-1]) or np.isfinite(self.lo[-1])
+                            or np.isfinite(self.hi[-1]))
         member = len(self.idx) - 1
         self.links.append(ProfidriveLink(spec, servo_cycle) if profidrive else None)
         if profidrive:
@@ -218,6 +268,8 @@ class ServoDrives(DriveGroup):
         self.v = np.where(on, v_on, v_off)
         x_prev = self.x
         dx = np.where(on, x_on, x_off)
+        if self.limited:
+            dx = self._limit(v0, dx, dt)
         if self.disturbed:
             self.v = np.where(self.blk, 0.0, self.v)
             dx = np.where(self.blk, 0.0, dx)
@@ -228,6 +280,35 @@ class ServoDrives(DriveGroup):
         bank.act_v[self.idx] = (act - self.last) / dt
         bank.act_p[self.idx] = act
         self.last = act
+
+    @staticmethod
+    def _torque_values(spec: DriveSpec) -> dict[str, float]:
+        plant = spec.plant
+        lo, hi = plant.travel()
+        tmax = math.inf if spec.max_torque is None else float(spec.max_torque)
+        # torque per load acceleration: inertia times the motor's angular acceleration per length unit/s²
+        return dict(jt=plant.inertia * 2.0 * math.pi / spec.length_per_revolution, tmax=tmax, tset=math.inf,
+                    tlim=tmax, trq=0.0, lo=lo, hi=hi)
+
+    def _limit(self, v0: np.ndarray, dx: np.ndarray, dt: float) -> np.ndarray:
+        """Cap the acceleration of this cycle at the torque limit and stop the load at its end stops;
+        keeps the torque of the cycle (``trq``, ``tact``) and returns the travel."""
+        a = (self.v - v0) / dt
+        amax = self.tlim / self.jt
+        sat = np.abs(a) > amax
+        if sat.any():
+            a = np.clip(a, -amax, amax)
+            self.v = np.where(sat, v0 + a * dt, self.v)
+            dx = np.where(sat, (v0 + 0.5 * a * dt) * dt, dx)
+        self.trq = self.jt * a
+        self.tact = sat
+        x1 = self.x + dx
+        stop = (x1 > self.hi) | (x1 < self.lo)
+        if stop.any():
+            # the load stands at the stop; the drive keeps pushing with the torque of its speed loop
+            dx = np.where(stop, np.clip(x1, self.lo, self.hi) - self.x, dx)
+            self.v = np.where(stop, 0.0, self.v)
+        return dx
 
     def write(self, bank: Any, t: float) -> None:
         if len(self.idx):

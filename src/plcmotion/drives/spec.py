@@ -15,6 +15,9 @@ import math
 from dataclasses import dataclass, field
 from enum import Enum
 
+from .hydraulic_spec import CylinderSpec, HydraulicSpec
+from .spec_errors import DriveSpecError, finite
+
 
 class ActuatorKind(str, Enum):
     """How the actuator is commanded.  (A ``str`` enum: the value names the drive group.)"""
@@ -26,6 +29,9 @@ class ActuatorKind(str, Enum):
     PULSE = "stepper"
     #: no drive: the actual value is the setpoint (simulated or virtual axis)
     IDEAL = "ideal"
+    #: a proportional valve on a +-10 V output moving a cylinder (``DriveSpec.hydraulic``,
+    #: ``PlantSpec.cylinder``); the controller closes the position loop as for a speed servo
+    HYDRAULIC = "hydraulic"
 
 
 class SetpointInterface(str, Enum):
@@ -123,6 +129,39 @@ class PlantSpec:
     zero_mark_offset: float = 0.0        #: machine position of one zero mark [length unit]
     switches: tuple[SwitchSpec, ...] = ()    #: limit and homing switches the load actuates
     ready_input: str = ""                #: input wired to the drive's "ready" signal ("" for none)
+    #: fixed end stops: machine positions [length unit] the load cannot pass (None: none on that side);
+    #: a drive pushing against one stands there with its torque (force) at the limit
+    end_stop_min: float | None = None
+    end_stop_max: float | None = None
+    #: moment of inertia of motor and load at the motor shaft [kg m²]: the torque of a speed servo is
+    #: inertia times angular acceleration
+    inertia: float = 1.0e-3
+    #: the cylinder of a hydraulic drive (None: ``CylinderSpec()``)
+    cylinder: CylinderSpec | None = None
+
+    def __post_init__(self) -> None:
+        lo, hi = self.travel()
+        if not lo < hi:
+            raise DriveSpecError("PlantSpec.end_stop_min/end_stop_max", (self.end_stop_min, self.end_stop_max),
+                                 "the load needs room between its end stops (and inside the cylinder's stroke)")
+        if not lo <= self.initial_position <= hi:
+            raise DriveSpecError("PlantSpec.initial_position", self.initial_position,
+                                 f"must lie between the end stops [{lo:g}, {hi:g}]")
+        if finite("PlantSpec.inertia", self.inertia) <= 0.0:
+            raise DriveSpecError("PlantSpec.inertia", self.inertia, "must be > 0 kg m²")
+        if self.cylinder is not None and not isinstance(self.cylinder, CylinderSpec):
+            raise DriveSpecError("PlantSpec.cylinder", self.cylinder, "must be a CylinderSpec or None")
+
+    def travel(self, hydraulic: bool = False) -> tuple[float, float]:
+        """[low, high]: where the load can be - between the end stops (and, for a hydraulic drive, inside
+        the cylinder's stroke)."""
+        lo = -math.inf if self.end_stop_min is None else finite("PlantSpec.end_stop_min", self.end_stop_min)
+        hi = math.inf if self.end_stop_max is None else finite("PlantSpec.end_stop_max", self.end_stop_max)
+        cyl = self.cylinder
+        if cyl is not None or hydraulic:
+            cyl = cyl or CylinderSpec()
+            lo, hi = max(lo, cyl.stroke_min), min(hi, cyl.stroke_max)
+        return lo, hi
 
 
 @dataclass(frozen=True)
@@ -143,6 +182,26 @@ class DriveSpec:
     fault_code: int = 7900               #: fault number the drive reports for a fault of its own
     encoder: EncoderSpec = field(default_factory=EncoderSpec)
     plant: PlantSpec = field(default_factory=PlantSpec)
+    #: the highest torque the drive gives [N m] (None: no limit modelled); a torque limit set at run time
+    #: (``DriveChannel.set_torque_limit``) can only lower it
+    max_torque: float | None = None
+    #: the valve output of a hydraulic drive (None: ``HydraulicSpec()``)
+    hydraulic: HydraulicSpec | None = None
+
+    def __post_init__(self) -> None:
+        if self.max_torque is not None and finite("DriveSpec.max_torque", self.max_torque) <= 0.0:
+            raise DriveSpecError("DriveSpec.max_torque", self.max_torque, "must be > 0 N m (or None)")
+        if self.hydraulic is not None and not isinstance(self.hydraulic, HydraulicSpec):
+            raise DriveSpecError("DriveSpec.hydraulic", self.hydraulic, "must be a HydraulicSpec or None")
+        if self.actuator is ActuatorKind.HYDRAULIC:
+            if self.interface not in (SetpointInterface.ANALOG, SetpointInterface.PROFIDRIVE):
+                raise DriveSpecError("DriveSpec.interface", self.interface,
+                                     "a hydraulic drive takes a +-10 V output: SetpointInterface.ANALOG (an "
+                                     "analog output module) or SetpointInterface.PROFIDRIVE (IM 174/ADI4)")
+            lo, hi = self.plant.travel(hydraulic=True)
+            if not lo < hi or not lo <= self.plant.initial_position <= hi:
+                raise DriveSpecError("PlantSpec.initial_position", self.plant.initial_position,
+                                     f"must lie inside the cylinder's stroke and end stops [{lo:g}, {hi:g}]")
 
     @property
     def max_velocity(self) -> float:

@@ -193,6 +193,7 @@ class Controller:
         self._by_index: list[PositioningAxis] = []
         self._groups: dict[str, DriveGroup] = {}
         self._group_list: list[DriveGroup] = []
+        self._closed_loop = False                   # a drive group whose axes the position controller drives
         self._programs: list[tuple[str, Callable[[], Any]]] = []
         self._pre_servo: list[Callable[[float], None]] = []
         self._post_servo: list[Callable[[float], None]] = []
@@ -336,12 +337,14 @@ class Controller:
         self._deferred.append(fn)
 
     def _drive_group(self, kind: str) -> DriveGroup:
-        """The group of the drives of ``kind`` (the value of an ``ActuatorKind``: "servo", "stepper", "ideal")."""
+        """The group of the drives of ``kind`` (the value of an ``ActuatorKind``: "servo", "stepper", "ideal",
+        "hydraulic")."""
         group = self._groups.get(kind)
         if group is None:
             group = new_drive_group(kind, self.bank)
             self._groups[kind] = group
             self._group_list.append(group)
+            self._closed_loop = self._closed_loop or group.closed_loop
         return group
 
     def _retain_axis(self, axis: PositioningAxis) -> None:

@@ -143,7 +143,7 @@ def couple(ctl: Controller, t: float) -> None:
 def control(ctl: Controller, t: float) -> None:
     """Position control of the closed-loop axes (speed precontrol plus Kv times the following error);
     axes without position control have their setpoint follow the actual position."""
-    if "servo" in ctl._groups:
+    if ctl._closed_loop:
         b = ctl.bank
         b.sp_p = np.where(b.follow_act, b.act_p, b.sp_p)
         err = b.sp_p - b.act_p
@@ -153,7 +153,7 @@ def control(ctl: Controller, t: float) -> None:
 
 def monitor(ctl: Controller, t: float) -> None:
     """Following error, positioning and standstill monitoring of the closed-loop axes."""
-    if "servo" in ctl._groups:
+    if ctl._closed_loop:
         if ctl._n_fe:
             monitoring.following_error(ctl, t)
         if ctl._n_pm:

@@ -34,7 +34,13 @@ class AxisQueueOwner:
         return job if job is not None and job.busy else None
 
     def admit(self, job: Job) -> Fault | None:
-        return self.axis.check_start(job)
+        fault = self.axis.check_start(job)
+        if fault is None:
+            # the family may refuse waiting behind some running activities (kernel/policy.py ``appending``)
+            refusal = self.axis.policy.append_refusal(job, self.axis._activities())
+            if refusal is not None:
+                fault = refusal.fault()
+        return fault
 
     def take_over(self, job: Job, after: Job | None = None) -> None:
         ax = self.axis

@@ -129,9 +129,11 @@ class JobStart:
             return
         policy = ax.policy
         new = policy.classify(job)
-        if policy.slot(new) == SUPERIMPOSED_SLOT:
-            self.start_superimposed_job(job)
+        slotted = policy.slot(new) == SUPERIMPOSED_SLOT
+        if slotted and getattr(ax, "start_superimposed", None) is None:
+            job.finish(JobState.ERROR, F.reject(F.NOT_AVAILABLE, job.kind.value))
             return
+        # a refusal applies to every job, also one that starts in a slot beside the running ones
         for activity in ax._activities():
             if activity.job is job:
                 continue
@@ -139,6 +141,9 @@ class JobStart:
             if isinstance(answer, Reject):
                 job.finish(JobState.ERROR, answer.fault())
                 return
+        if slotted:
+            self.start_superimposed_job(job)
+            return
         if not policy.plan_after_override and not self.resolve_target(job):
             return
         ax._override(new, t, job)

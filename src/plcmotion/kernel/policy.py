@@ -10,7 +10,12 @@ buffered and blended jobs wait in the axis queue, whose depth and buffer-mode ma
 A policy is data: a classifier (job -> the class name the manual's tables use) and a table of cells,
 rows = class of the new job, columns = class of the running activity.  A missing cell means the running
 activity goes on.  A cell is :data:`ABORT`, :data:`KEEP`, a :class:`Reject` with the fault the new job
-ends with, or a :class:`Ranked` cell that compares the two jobs (a stronger stop replaces a weaker one).
+ends with, a :class:`Ranked` cell that compares the two jobs (a stronger stop replaces a weaker one), or a
+:class:`Judged` cell whose answer a function of the two jobs gives (e.g. by the direction of the new motion).
+
+A second, optional table (``appending``) refuses a job that is to *wait* behind the running one (a buffered
+or blended job) because of what runs: some manuals allow appending only in certain states.  Jobs that take
+the axis over at once never look at it.
 """
 from __future__ import annotations
 
@@ -98,7 +103,19 @@ class Ranked:
         return ABORT
 
 
-Cell = Union[Response, Reject, Ranked]
+@dataclass(frozen=True)
+class Judged:
+    """A cell answered by ``judge(new, running)`` (either may be None: a query without a job, an activity
+    without a job of its own): ABORT, KEEP or a Reject.  For rules a fixed mark cannot give, e.g. "the
+    running job is aborted when the new one moves away from it, else the new one is refused"."""
+
+    judge: Callable[[Job | None, Job | None], Union[Response, Reject]]
+
+    def decide(self, new: Job | None, running: Job | None) -> Response | Reject:
+        return self.judge(new, running)
+
+
+Cell = Union[Response, Reject, Ranked, Judged]
 
 
 @dataclass(frozen=True)
@@ -141,7 +158,9 @@ class OverridePolicy:
     bring their own choice).  ``plan_after_override``: the new job resolves its target and plans from the
     state after the override (a superimposed part it ends is taken over first) instead of before it (a job
     rejected for its target then leaves the running one alone).  ``queue_depth``: how many jobs may wait
-    behind the running one; ``buffer_modes``: the family's input value -> PLCopen buffer mode."""
+    behind the running one; ``buffer_modes``: the family's input value -> PLCopen buffer mode.
+    ``appending``: rows = class of a job that is to wait in the queue, columns = class of a running activity,
+    cells = the Reject that refuses it (missing: it may wait)."""
 
     name: str
     cells: Mapping[str, Mapping[str, Cell]]
@@ -151,6 +170,7 @@ class OverridePolicy:
     plan_after_override: bool = False
     queue_depth: int = 1
     buffer_modes: Mapping[int, BufferMode] = field(default_factory=lambda: {0: BufferMode.ABORTING})
+    appending: Mapping[str, Mapping[str, Reject]] = field(default_factory=dict)
 
     def cell(self, new: str, running: str) -> Cell:
         return self.cells.get(new, {}).get(running, KEEP)
@@ -160,13 +180,29 @@ class OverridePolicy:
         c = self.cell(new, activity.cls)
         if isinstance(c, Ranked):
             return c.decide(new_job, activity.job) if new_job is not None else ABORT
+        if isinstance(c, Judged):
+            return c.decide(new_job, activity.job)
         return c
 
     def aborts(self, new: str, running: str) -> bool:
         """The table view of one cell: does a new job of class ``new`` abort a running one of ``running``?
-        (A Ranked cell aborts the running job of the same or a lower rank.)"""
+        (A Ranked cell aborts the running job of the same or a lower rank; a Judged cell may abort it.)"""
         c = self.cell(new, running)
-        return c is ABORT or isinstance(c, Ranked)
+        return c is ABORT or isinstance(c, (Ranked, Judged))
+
+    def append_refusal(self, job: Job, activities: Iterable[Activity]) -> Reject | None:
+        """Whether ``job``, to wait behind the running one, is refused because of a running activity
+        (``appending``); None: it may wait."""
+        if not self.appending:
+            return None
+        row = self.appending.get(self.classify(job))
+        if not row:
+            return None
+        for activity in activities:
+            refusal = row.get(activity.cls)
+            if refusal is not None:
+                return refusal
+        return None
 
     def slot(self, new: str) -> str | None:
         return self.slots.get(new)
@@ -187,5 +223,5 @@ PLCOPEN = OverridePolicy("PLCopen", cells={new: {**{r: ABORT for r in _MOVERS},
                                            for new in _MOVERS},
                          buffer_modes={int(m): m for m in BufferMode})
 
-__all__ = ["ABORT", "KEEP", "Activity", "Cell", "OverridePolicy", "PLCOPEN", "Ranked", "Reject", "Response",
+__all__ = ["ABORT", "KEEP", "Activity", "Cell", "Judged", "OverridePolicy", "PLCOPEN", "Ranked", "Reject", "Response",
            "job_class", "merge", "table"]

@@ -5,7 +5,7 @@ Dynamic inputs follow §6.9.3 (``base.dynamic``) with the axis's default dynamic
 values above the axis's limits are cut to them and the technology DB shows warning 16#0021.  ``Mode``:
 0 override, 1 append (the axis stops at the transition), 2 overlay (the transition at the lower of the two
 velocities, at standstill when the direction reverses) - the axis job queue's Aborting, Buffered and
-BlendingLow (``technology.policy_basic``).  Appending or overlaying onto a running MC_Halt, a running
+BlendingLow (``technology.override.POLICY.buffer_mode``).  Appending or overlaying onto a running MC_Halt, a running
 MC_MoveVelocity (MC_MoveVelocity onto MC_MoveVelocity) or a synchronous operation: 16#8055.
 """
 from __future__ import annotations

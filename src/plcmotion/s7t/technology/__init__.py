@@ -18,11 +18,13 @@ from ...kernel.schema import Issue
 from .axes import AXIS_CLASSES, AxisT, PositioningAxisT, SpeedAxis, SynchronizationAxis
 from .builder import POSITIONING, SPEED, SYNCHRONIZATION
 from .device import TechnologyDevice
-from .policy_basic import POLICY
+from .override import POLICY
 from .schema import AXIS
 from .to_errors import describe_fault
 
 NAME = "S7-Technology"
+#: ``technology_version``: 10 * major + minor of the technology (V4.1 only, docs/s7t/decisions.md)
+VERSION = 41
 
 #: the kernel jobs of the instructions of this family so far (§6.2: single-axis instructions)
 JOB_KINDS = frozenset({JobKind.HALT, JobKind.STOP, JobKind.ABSOLUTE, JobKind.RELATIVE, JobKind.VELOCITY,
@@ -68,10 +70,10 @@ def _synchronization_axis(ctl: Any, name: str, flat: Mapping[str, Any], where: s
 
 
 S7_TECHNOLOGY = K.register(K.Family(
-    NAME, versions=(4,), default_version=4,
+    NAME, versions=(VERSION,), default_version=VERSION,
     factories={K.POSITIONING_AXIS: _positioning_axis, K.SYNCHRONOUS_AXIS: _synchronization_axis},
     job_kinds=JOB_KINDS, policy=POLICY, schemas={K.POSITIONING_AXIS: AXIS, K.SYNCHRONOUS_AXIS: AXIS},
     describe_fault=describe_fault, setup=TechnologyDevice))
 
-__all__ = ["S7_TECHNOLOGY", "NAME", "AxisT", "SpeedAxis", "PositioningAxisT", "SynchronizationAxis",
+__all__ = ["S7_TECHNOLOGY", "NAME", "VERSION", "POLICY", "AxisT", "SpeedAxis", "PositioningAxisT", "SynchronizationAxis",
            "TechnologyDevice", "device"]

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from ..kernel import faults as F
 from ..kernel.faults import Fault
+from .technology.override import error_id as override_error_id
 
 NO_ERROR = 0x0000
 INTERNAL_ERROR = 0x8001              # internal error
@@ -24,6 +25,7 @@ CANNOT_ACKNOWLEDGE = 0x8047          # MC_Reset: the error cannot be acknowledge
 CANNOT_RESTART = 0x8048              # MC_Reset: restart not possible (axis not disabled)
 OUTPUT_RATE_TOO_HIGH = 0x804C        # command output rate too high
 INVALID_AXIS_TYPE = 0x804D           # invalid axis type
+MISSING_CONNECTION = 0x804A         # required object connection missing (MC_SetCharacteristic)
 ONE_INSTANCE_ONLY = 0x804E           # MC_Power: only one active instance per axis
 OTHER_AXIS_ENABLED = 0x804F          # MC_Power: disabling an axis this instance did not enable
 TECHNOLOGY_NOT_READY = 0x8050        # technology not ready (CPU not in RUN / restart OB)
@@ -32,6 +34,7 @@ CLAMPING_ACTIVE = 0x8056             # cancellation due to active travel to fixe
 NOT_A_TECHNOLOGY_DB = 0x8083         # the DB at Axis is no technology DB
 INVALID_TECHNOLOGY_DB = 0x8084       # invalid technology DB
 INVALID_REAL = 0x808B                # parameter value of invalid REAL format
+W_END_POS_IGNORED = 0x0029           # warning: MC_MoveToEndPos in reverse direction ignored
 
 TEXTS = {
     NO_ERROR: "no error",
@@ -46,6 +49,7 @@ TEXTS = {
     CANNOT_RESTART: "unable to restart",
     OUTPUT_RATE_TOO_HIGH: "command output rate too high",
     INVALID_AXIS_TYPE: "invalid axis type",
+    MISSING_CONNECTION: "required object connection is missing",
     ONE_INSTANCE_ONLY: "only one instance allowed per axis",
     OTHER_AXIS_ENABLED: "the axis was not enabled by this instance",
     TECHNOLOGY_NOT_READY: "technology not ready",
@@ -54,6 +58,7 @@ TEXTS = {
     NOT_A_TECHNOLOGY_DB: "DB is not a technology DB",
     INVALID_TECHNOLOGY_DB: "invalid technology DB",
     INVALID_REAL: "parameter value of invalid REAL format",
+    W_END_POS_IGNORED: "MC_MoveToEndPos ignored in reverse direction",
 }
 
 #: rejections the instruction reports itself (the command is not started)
@@ -74,6 +79,9 @@ def fb_error(fault: Fault) -> int | None:
     numeric range (8043 in the technology DB)."""
     if fault.ack:
         return None
+    policy_code = override_error_id(fault)       # refusals of the override policy (§6.8): 8045, 8056, 0029
+    if policy_code is not None:
+        return policy_code
     if fault.kind == F.REJECTED:
         return _REJECTED_DETAIL.get(fault.detail)
     if fault.kind == F.INTERNAL:

@@ -46,6 +46,8 @@ class AxisT(LayeredAxis):
     schema = AXIS
     technology = POSITIONING
     hydraulic = False                      # a hydraulic axis (§3.1.4) sets it (its own drive model)
+    #: MC_SetTorqueLimit (EnableLimit TRUE) or MC_MoveToEndPos reduces the torque (Statusword bit 23)
+    torque_limiting_command = False
     #: MC_Stop lock, follower and the superimposed layer as in the kernel; a virtual axis homes at once
     _sim_homing_at_once = True
 

@@ -222,6 +222,10 @@ def statusword(ax: "AxisT", v: float, a: float, still: bool) -> int:
         w |= 1 << 19                                            # EncoderValid
     if not ax.positioning or not ax.position_controlled:
         w |= 1 << 20                                            # SpeedMode
+    if ax.torque_limiting_command:
+        w |= 1 << 23                                            # TorqueLimitingCommand
+        if ax.drive.torque_limit_active:
+            w |= 1 << 21                                        # TorqueLimiting: the drive is at the limit
     hw = ax.hw_approached
     if hw.get("min"):
         w |= 1 << 26

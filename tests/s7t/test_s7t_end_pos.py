@@ -51,7 +51,7 @@ def test_s7t_end_pos_clamps_at_the_stop():
     assert r.end.InClamping and r.end.Busy and not r.end.Error
     assert r.axis.drive.torque == pytest.approx(1.0, rel=1e-6)
     sw = r.axis.db.Statusword
-    assert sw.TorqueLimiting and sw.TorqueLimitingCommand
+    assert sw.TorqueLimiting and sw.TorqueLimitingCommand and not sw.SpeedCommand
     held = r.sp()
     r.ctl.run(0.5)
     assert r.sp() == held and r.end.InClamping          # the setpoint stays held
@@ -80,7 +80,12 @@ def test_s7t_end_pos_moving_away_releases():
     rel(Axis=r.axis, Execute=True)
     assert not rel.Error and rel.Busy
     assert r.end.CommandAborted and not r.end.InClamping
-    r.ctl.run(1.5)
+    peak = [0.0]
+    r.ctl.on_post_servo(lambda t: peak.__setitem__(0, max(peak[0], abs(r.axis.drive.torque))))
+    r.ctl.run(0.05)
+    assert r.axis.db.Statusword.TorqueLimitingCommand        # the setpoint has not yet passed the window
+    r.ctl.run(1.45)
+    assert peak[0] <= 1.0 + 1e-9                            # released with the clamping torque, no jerk
     assert r.act() == pytest.approx(STOP + 1.0 - 10.0, abs=0.05)
     assert not r.axis.db.Statusword.TorqueLimitingCommand
     assert r.axis.db.ErrorID == 0
@@ -114,6 +119,22 @@ def test_s7t_end_pos_same_direction_takes_over_reverse_8045():
     r.ctl.run(0.02)
     back(Axis=r.axis, Execute=True)
     assert back.Error and back.ErrorID == 0x8045 and again.InClamping
+
+
+def test_s7t_end_pos_reverse_before_the_stop_warning_0029():
+    """S7-Technology V4.1 §6.2.11 ErrorIDs: a reversing MC_MoveToEndPos started over the active one before
+    the end stop is ignored with warning 16#0029 (Error stays FALSE); the active one goes on."""
+    r = Rig()
+    r.inputs["Execute"] = True
+    r.ctl.run(0.5)
+    back = MC_MoveToEndPos()
+    back(Axis=r.axis, Execute=True, Velocity=20.0, Direction=3)
+    r.ctl.run(0.02)
+    back(Axis=r.axis, Execute=True)
+    assert back.ErrorID == 0x0029 and not back.Error and not back.Busy
+    assert r.end.Busy and not r.end.CommandAborted
+    r.ctl.run(STOP / 20.0)
+    assert r.end.InClamping
 
 
 NAN = math.nan

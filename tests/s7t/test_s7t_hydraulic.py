@@ -3,6 +3,8 @@ MC_SetCharacteristic (§6.2.13)."""
 from __future__ import annotations
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from plcmotion.kernel.errors import ConfigurationError
 from plcmotion.s7t import MC_MoveRelative, MC_MoveVelocity, MC_Power, MC_SetCharacteristic, add_cam_disk
@@ -11,6 +13,7 @@ from _s7t_rig import controller
 
 HYD = {"TypeOfAxis.Homing.referencingNecessary": 0, "Wizard.DriveTechnology": 1, "Plant.InitialPosition": 100.0,
        "TypeOfAxis.MaxVelocity.maximum": 300.0, "Drive.ValveProfile1": 20}
+FE = "TypeOfAxis.NumberOfDataSets.DataSet_1.DynamicFollowing"
 #: a valve with a dead band of +-5 %: 300 mm/s at 100 %
 PROFILE = [(-100.0, -300.0), (-5.0, 0.0), (5.0, 0.0), (100.0, 300.0)]
 
@@ -146,3 +149,31 @@ def test_s7t_hydraulic_configuration_errors(params, tag):
     with pytest.raises(ConfigurationError) as exc:
         ctl.add_positioning_axis("H", {**HYD, **params})
     assert tag in str(exc.value)
+
+
+def test_s7t_hydraulic_pq_valve_limits_the_force():
+    """S7-Technology V4.1 §4.6 (P/Q valve, pressure limiting): pressing against a fixed end stop the cylinder
+    force stays at Drive.ForceLimit (5 kN) although the supply could give p_S A_A = 20 kN."""
+    r = Rig({"Wizard.DriveTechnology": 2, "Drive.ForceLimit": 5000.0, "Plant.EndStopMaxPosition": 150.0,
+             f"{FE}.enable": 0})
+    vel = MC_MoveVelocity()
+    vel(Axis=r.axis, Execute=True, Velocity=100.0, PositionControl=False)
+    r.ctl.run(4.0)
+    assert r.axis.drive.mechanical_position() == pytest.approx(150.0)
+    assert r.axis.drive.force == pytest.approx(5000.0, rel=1e-6)
+    assert r.axis.drive.torque_limit_active
+
+
+@settings(max_examples=12, deadline=None)
+@given(q=st.floats(-100.0, 100.0), ramp=st.floats(20.0, 400.0))
+def test_s7t_hydraulic_off2_output_property(q, ramp):
+    """S7-Technology V4.1 §6.2.1 StopMode 3: after disabling, the output never changes faster than parameter
+    5009 allows and ends at QOutputValue (to the 1/27648 resolution of the analog output)."""
+    r = Rig({"userdefaultqfaxis.maxderivative.qoutput": ramp}, StopMode=3, QOutputValue=q)
+    outs = []
+    r.ctl.on_post_servo(lambda t: outs.append(r.out()))
+    r.inputs["Enable"] = False
+    r.ctl.run(200.0 / ramp + 0.05)
+    steps = [abs(b - a) for a, b in zip(outs, outs[1:])]
+    assert max(steps) <= ramp * r.ctl.servo_cycle + 2.0 / 276.48
+    assert r.out() == pytest.approx(q, abs=0.5 / 276.48 + 1e-9)

@@ -14,8 +14,8 @@ The override policy (``technology.override``) decides what new commands do: away
 MC_MoveToEndPos, towards it 16#8056, a reversing MC_MoveToEndPos 16#8045 (clamped) or warning 16#0029
 (before the stop).  For it the job carries ``extra["fb"]``, ``extra["heading"]`` (+1/-1),
 ``extra["clamped"]`` and ``target`` = the actual position where it clamped.  After a release the torque
-limit stays until the setpoint has left the clamping window (§6.2.11 example c), then MC_SetTorqueLimit's
-limit (or none) is back and the following error is monitored again.
+limit stays until the setpoint has left the clamping window on the side away from the stop (§6.2.11
+example c), then MC_SetTorqueLimit's limit (or none) is back and the following error is monitored again.
 
 Real electric axes only (virtual or hydraulic: 16#804D); the drive needs a telegram with torque reduction
 (101-106) and Torque must not exceed the torque reference ``maxTorque`` (else 16#8043).
@@ -69,8 +69,10 @@ class _Watch:
                 # the end stop gave way, or the axis was pushed off, without a new motion command
                 ax.raise_alarm(alarm(CLAMPING_FAULT, "left", Reaction.REMOVE_ENABLE), job)
             return True
-        # released: the torque limit stays until the setpoint leaves the clamping window
-        return ax.state == "enabled" and abs(float(b.sp_p[i]) - self.clamp) <= self.tolerance()
+        # released: the torque limit stays until the setpoint has left the clamping window on the side away
+        # from the stop (until then the drive still presses against it)
+        back = job.extra["heading"] * (float(b.sp_p[i]) - self.clamp)
+        return ax.state == "enabled" and back >= -self.tolerance()
 
     def _detected(self, fe: float) -> bool:
         mode = self.axis.eff[RECOGNITION_MODE]

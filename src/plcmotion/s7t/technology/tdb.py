@@ -197,8 +197,8 @@ def statusword(ax: "AxisT", v: float, a: float, still: bool) -> int:
         w |= 1 << 7                                             # Standstill
     if kind in _POSITIONING:
         w |= 1 << 8
-    elif kind == JobKind.VELOCITY:
-        w |= 1 << 9
+    elif kind == JobKind.VELOCITY and not job.extra.get("clamped"):
+        w |= 1 << 9                       # SpeedCommand (MC_MoveToEndPos: until the end stop is detected)
     elif kind in _HOMING:
         w |= 1 << 11
     if synchr:

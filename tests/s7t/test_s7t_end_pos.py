@@ -84,11 +84,19 @@ def test_s7t_end_pos_moving_away_releases():
     r.ctl.on_post_servo(lambda t: peak.__setitem__(0, max(peak[0], abs(r.axis.drive.torque))))
     r.ctl.run(0.05)
     assert r.axis.db.Statusword.TorqueLimitingCommand        # the setpoint has not yet passed the window
+    toward = MC_MoveAbsolute()
+    toward(Axis=r.axis, Execute=True, Position=STOP, Velocity=10.0)
+    assert toward.Error and toward.ErrorID == 0x8056        # still refused (§6.2.11 "Interaction")
     r.ctl.run(1.45)
     assert peak[0] <= 1.0 + 1e-9                            # released with the clamping torque, no jerk
     assert r.act() == pytest.approx(STOP + 1.0 - 10.0, abs=0.05)
     assert not r.axis.db.Statusword.TorqueLimitingCommand
     assert r.axis.db.ErrorID == 0
+    again = MC_MoveAbsolute()
+    again(Axis=r.axis, Execute=True, Position=STOP - 5.0, Velocity=10.0)
+    r.ctl.run(0.02)
+    again(Axis=r.axis, Execute=True)
+    assert again.Busy and not again.Error                    # out of the window: toward the stop again
 
 
 def test_s7t_end_pos_clamping_monitoring_801b():

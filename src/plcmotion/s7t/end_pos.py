@@ -27,6 +27,7 @@ from typing import Any
 
 from ..kernel.faults import Reaction, alarm
 from ..kernel.jobs import Job, JobKind
+from ..kernel.policy import Activity
 from ..kernel.profiles import Planner
 from . import errors as E
 from .base import InstructionError, integer, real
@@ -37,6 +38,10 @@ from .technology.hydraulic_params import (CLAMP_BY_FOLLOWING_ERROR_DEVIATION, CL
                                           FE_DEVIATION, MAX_TORQUE, POSITION_TOLERANCE, RECOGNITION_MODE,
                                           TORQUE_TELEGRAMS)
 from .technology.to_errors import CLAMPING_FAULT
+
+
+def _nothing(t: float) -> None:
+    """Ending the released clamping activity: its command has ended already."""
 
 
 class _Watch:
@@ -69,10 +74,12 @@ class _Watch:
                 # the end stop gave way, or the axis was pushed off, without a new motion command
                 ax.raise_alarm(alarm(CLAMPING_FAULT, "left", Reaction.REMOVE_ENABLE), job)
             return True
-        # released: the torque limit stays until the setpoint has left the clamping window on the side away
-        # from the stop (until then the drive still presses against it)
+        # released: the torque limit stays, and commands toward the stop are refused, until the setpoint has
+        # left the clamping window on the side away from the stop (until then the drive still presses on it)
         back = job.extra["heading"] * (float(b.sp_p[i]) - self.clamp)
-        return ax.state == "enabled" and back >= -self.tolerance()
+        inside = ax.state == "enabled" and back >= -self.tolerance()
+        ax.releasing_clamp = Activity(O.CLAMPED, job, _nothing) if inside else None
+        return inside
 
     def _detected(self, fe: float) -> bool:
         mode = self.axis.eff[RECOGNITION_MODE]
@@ -99,6 +106,7 @@ class _Watch:
         """Give the torque back to MC_SetTorqueLimit's limit (or none) and monitor the following error."""
         from .drive_functions import torque_limit
         ax = self.axis
+        ax.releasing_clamp = None
         limit = torque_limit(ax)
         ax.drive.set_torque_limit(limit)
         ax.torque_limiting_command = limit is not None

@@ -48,6 +48,9 @@ class AxisT(LayeredAxis):
     hydraulic = False                      # a hydraulic axis (§3.1.4) sets it (its own drive model)
     #: MC_SetTorqueLimit (EnableLimit TRUE) or MC_MoveToEndPos reduces the torque (Statusword bit 23)
     torque_limiting_command = False
+    #: the override policy's activity of an MC_MoveToEndPos that was released but whose clamping window
+    #: the setpoint has not left yet (``s7t.end_pos``): commands toward the stop stay refused (16#8056)
+    releasing_clamp = None
     #: MC_Stop lock, follower and the superimposed layer as in the kernel; a virtual axis homes at once
     _sim_homing_at_once = True
 
@@ -91,6 +94,11 @@ class AxisT(LayeredAxis):
         (not on a modulo axis, which has no end)."""
         c = self.config
         return c.software_limits.enabled and not c.modulo.enabled and (self.homed or not self.homing_required)
+
+    def _activities(self):
+        yield from super()._activities()
+        if self.releasing_clamp is not None:
+            yield self.releasing_clamp          # MC_MoveToEndPos released, the setpoint still in its window
 
     def queue_waiting(self) -> bool:
         return bool(self.queue.pending)

@@ -94,6 +94,22 @@ def test_s7t_hydraulic_other_stop_modes_close_the_valve():
     assert r.out() == pytest.approx(0.0, abs=0.01)
 
 
+def test_s7t_hydraulic_error_after_off2_closes_the_valve():
+    """S7-Technology V4.1 §6.2.1 QOutputValue: the substitute value is used when MC_Power disables with
+    StopMode 3; enabled again, an error that removes the enable (a drive fault) ramps the output to 0 %."""
+    r = Rig(StopMode=3, QOutputValue=20.0)
+    r.inputs["Enable"] = False
+    r.ctl.run(0.4)
+    assert r.out() == pytest.approx(20.0, abs=0.01)
+    r.inputs["Enable"] = True
+    r.ctl.run(0.3)
+    assert r.power.Status
+    r.axis.inject_fault("drive")
+    r.ctl.run(0.4)
+    assert r.axis.state == "disabled"
+    assert r.out() == pytest.approx(0.0, abs=0.01)
+
+
 def test_s7t_hydraulic_characteristic_with_dead_band():
     """S7-Technology V4.1 §4.6.4, §6.2.13: MC_SetCharacteristic activates the valve profile of cam disk DB20
     (dead band +-5 %): at 30 mm/s the output is 5 + 95 * 30/300 = 14.5 % instead of the straight line's

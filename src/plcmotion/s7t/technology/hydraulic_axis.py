@@ -4,7 +4,7 @@ axis on a valve output instead of an electric drive.
 They are the axes of ``axes`` with one difference at MC_Power: when Enable falls with StopMode 3 (OFF2Stop,
 §6.2.1) the enable is removed at once, the valve output ramps at ``userdefaultqfaxis.maxderivative.qoutput``
 (parameter 5009) to MC_Power's QOutputValue and the missing enable is noted as 16#8040 in the technology DB;
-after any other stop mode the output ramps to 0 % (a closed valve).  :func:`axis_class` picks the class of
+after any other stop mode, and when an error removes the enable, the output ramps to 0 % (a closed valve).  :func:`axis_class` picks the class of
 an axis from its technology and its drive technology (``Wizard.DriveTechnology``).
 """
 from __future__ import annotations
@@ -21,6 +21,12 @@ class _Hydraulic:
     """What a hydraulic axis adds to its technology's axis class."""
 
     hydraulic = True
+
+    def _enable(self: Any, start_mode: int) -> None:
+        # the substitute output is MC_Power's after StopMode 3 only: an error that removes the enable of
+        # the enabled axis closes the valve (0 %)
+        self.drive.set_off_output(0.0)
+        super()._enable(start_mode)  # type: ignore[misc]
 
     def _disable(self: Any, stop_mode: int) -> None:
         off2 = stop_mode == OFF2_STOP

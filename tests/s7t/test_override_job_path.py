@@ -1,114 +1,91 @@
-"""The S7-Technology override policy on the kernel's one job path (queue, blending, refusals).
+"""The S7-Technology override policy on the kernel's one job path (queue, blending, refusals), through the
+family's own axis (``Controller(family="S7-Technology")``) and instructions.
 
-Until the family's axis lands, a test family registers ``POLICY`` on a kernel axis that borrows the default
-family's schema (as the kernel tests do); the jobs are what the S7-Technology instructions submit.  Expected
-outcomes come from S7-Technology V4.1 §6.2.6 / §6.2.10 (Mode 0/1/2, the MC_MoveVelocity append example) and
-the ErrorIDs 8055 / 8005, mapped by ``override.error_id``.
+Expected outcomes come from S7-Technology V4.1 §6.2.6 / §6.2.7 / §6.2.10 (Mode 0/1/2, the MC_MoveVelocity
+append example) and the ErrorIDs 8055 / 8005 of those FBs; speeds are the kinematics of the inputs (a
+virtual axis: its actual value is its setpoint).
 """
 from __future__ import annotations
 
 import pytest
 
-from plcmotion import Controller
-from plcmotion.kernel import family as families
-from plcmotion.kernel.axis import PositioningAxis
-from plcmotion.kernel.jobs import Job, JobKind, JobState
+from plcmotion.s7t import MC_Halt, MC_MoveAbsolute, MC_MoveRelative, MC_MoveVelocity
 from plcmotion.s7t.technology import override as O
 
-FAMILY = "S7T-Override-Test"
-SERVO = {"Actor.Type": 1, "DynamicLimits.MaxVelocity": 100.0,
-         "DynamicDefaults.Acceleration": 50.0, "DynamicDefaults.Deceleration": 50.0,
-         "FollowingError": {"MaxValue": 1000.0, "MinValue": 1000.0}}
+from _s7t_rig import enabled
 
-
-@pytest.fixture(scope="module", autouse=True)
-def s7t_policy_family():
-    axis_class = type(Controller().add_positioning_axis("probe", {"Actor.Type": 1}))
-    assert issubclass(axis_class, PositioningAxis)
-
-    def axis(ctl, name, flat, where):
-        return ctl.new_axis(axis_class, name, flat, where)
-    fam = families.register(families.Family(FAMILY, versions=(1,), default_version=1,
-                                            factories={families.POSITIONING_AXIS: axis}, policy=O.POLICY))
-    yield
-    families._REGISTRY.pop(fam.name)
-
-
-def enabled():
-    ctl = Controller(family=FAMILY)
-    axis = ctl.add_positioning_axis("A", SERVO)
-    assert axis.power(object(), True, 1, 0) is None
-    ctl.run(0.2)
-    assert axis.state == "enabled" and axis.policy is O.POLICY
-    return ctl, axis
+DYN = dict(Acceleration=50.0, Deceleration=50.0, Jerk=0.0)
 
 
 def speed(ctl, axis) -> float:
     return abs(float(ctl.bank.sp_v[axis.index]))
 
 
+def test_s7t_override_path_policy_is_the_familys():
+    """S7-Technology V4.1 §6.8: the axes of the family decide with the command interaction of §6.8."""
+    _ctl, axis, _ = enabled()
+    assert axis.policy is O.POLICY and axis.ctl.technology_version == 41
+
+
 def test_s7t_override_path_append_velocity_after_relative():
-    """S7-Technology V4.1 §6.2.10 "Append motion" example (L14849-14862): MC_MoveVelocity Mode 1 during a
-    MC_MoveRelative: the positioning is not canceled, it completes (Done), then the velocity motion starts."""
-    ctl, axis = enabled()
-    rel = Job(JobKind.RELATIVE, position=40.0, velocity=20.0)
-    axis.submit(rel, O.POLICY.buffer_mode(0))
+    """S7-Technology V4.1 §6.2.10 "Append motion" example: MC_MoveVelocity Mode 1 during a MC_MoveRelative:
+    the positioning is not canceled, it completes (Done), then the velocity motion starts from standstill."""
+    ctl, axis, _ = enabled()
+    rel, vel = MC_MoveRelative(), MC_MoveVelocity()
+    rel(Axis=axis, Execute=True, Distance=40.0, Velocity=20.0, **DYN)
     ctl.run(0.3)
-    vel = Job(JobKind.VELOCITY, velocity=15.0)
-    axis.submit(vel, O.POLICY.buffer_mode(1))
-    assert rel.busy and vel.busy and not vel.active
-    ctl.run_until(lambda: rel.state == JobState.DONE, 10.0)
-    assert vel.active and speed(ctl, axis) < 1.0          # the axis stops at the transition (Mode 1)
-    ctl.run_until(lambda: vel.in_velocity, 5.0)
-    assert speed(ctl, axis) == pytest.approx(15.0)
+    vel(Axis=axis, Execute=True, Velocity=15.0, Mode=1, **DYN)
+    assert rel(Execute=True).Busy and vel.Busy and not vel.InVelocity and not vel.Error
+    ctl.run_until(lambda: rel(Execute=True).Done, 10.0)
+    assert not vel(Execute=True).CommandAborted and speed(ctl, axis) < 1.0   # stopped at the transition
+    ctl.run_until(lambda: vel(Execute=True).InVelocity, 5.0)
+    assert speed(ctl, axis) == pytest.approx(15.0) and not rel.CommandAborted
 
 
 def test_s7t_override_path_velocity_never_behind_velocity():
-    """S7-Technology V4.1 §6.2.10 Prerequisites (L14636-14638): MC_MoveVelocity cannot be appended to an
-    active MC_MoveVelocity (8055); Mode 0 overrides it."""
-    ctl, axis = enabled()
-    first = Job(JobKind.VELOCITY, velocity=20.0)
-    axis.submit(first, O.POLICY.buffer_mode(0))
+    """S7-Technology V4.1 §6.2.10 Prerequisites: MC_MoveVelocity cannot be appended to an active
+    MC_MoveVelocity (8055 "latching not allowed"); Mode 0 overrides it (CommandAborted at the first)."""
+    ctl, axis, _ = enabled()
+    first, second, third = MC_MoveVelocity(), MC_MoveVelocity(), MC_MoveVelocity()
+    first(Axis=axis, Execute=True, Velocity=20.0, **DYN)
     ctl.run(0.2)
-    second = Job(JobKind.VELOCITY, velocity=5.0)
-    axis.submit(second, O.POLICY.buffer_mode(1))
-    assert second.state == JobState.ERROR and O.error_id(second.fault) == 0x8055 and first.active
-    third = Job(JobKind.VELOCITY, velocity=5.0)
-    axis.submit(third, O.POLICY.buffer_mode(0))
-    assert first.state == JobState.ABORTED and third.active
+    second(Axis=axis, Execute=True, Velocity=5.0, Mode=1, **DYN)
+    assert second.Error and second.ErrorID == 0x8055 and first(Execute=True).Busy
+    third(Axis=axis, Execute=True, Velocity=5.0, Mode=0, **DYN)
+    assert first(Execute=True).CommandAborted and third.Busy
 
 
 def test_s7t_override_path_no_append_during_halt_and_one_waiting_command():
-    """S7-Technology V4.1 ErrorID 8055 (L13765-13773: MC_Halt active) and 8005 (command memory full): one
-    command waits behind the active one."""
-    ctl, axis = enabled()
-    axis.submit(Job(JobKind.RELATIVE, position=200.0, velocity=20.0), O.POLICY.buffer_mode(0))
+    """S7-Technology V4.1 §6.2.6 ErrorIDs 8005 (command memory full: one command waits behind the active
+    one) and 8055 (MC_Halt active); MC_Halt (Mode 0) aborts the running command and the waiting one."""
+    ctl, axis, _ = enabled()
+    run, queued, full, halt, late = (MC_MoveRelative(), MC_MoveRelative(), MC_MoveAbsolute(), MC_Halt(),
+                                     MC_MoveRelative())
+    run(Axis=axis, Execute=True, Distance=200.0, Velocity=20.0, **DYN)
     ctl.run(0.3)
-    queued = Job(JobKind.RELATIVE, position=10.0, velocity=20.0)
-    axis.submit(queued, O.POLICY.buffer_mode(1))
-    full = Job(JobKind.ABSOLUTE, position=10.0, velocity=20.0)
-    axis.homed = True
-    axis.submit(full, O.POLICY.buffer_mode(2))
-    assert queued.busy and full.state == JobState.ERROR and O.error_id(full.fault) == 0x8005
-    halt = Job(JobKind.HALT)
-    axis.submit(halt, O.POLICY.buffer_mode(0))
-    assert queued.state == JobState.ABORTED and halt.active        # Mode 0 cancels the waiting one too
-    late = Job(JobKind.RELATIVE, position=10.0, velocity=20.0)
-    axis.submit(late, O.POLICY.buffer_mode(1))
-    assert late.state == JobState.ERROR and O.error_id(late.fault) == 0x8055 and halt.active
+    queued(Axis=axis, Execute=True, Distance=10.0, Velocity=20.0, Mode=1, **DYN)
+    full(Axis=axis, Execute=True, Position=10.0, Velocity=20.0, Mode=2, **DYN)
+    assert queued.Busy and not queued.Error and full.Error and full.ErrorID == 0x8005
+    halt(Axis=axis, Execute=True, Deceleration=10.0, Jerk=0.0)
+    assert run(Execute=True).CommandAborted and queued(Execute=True).CommandAborted and halt.Busy
+    late(Axis=axis, Execute=True, Distance=10.0, Velocity=20.0, Mode=1, **DYN)
+    assert late.Error and late.ErrorID == 0x8055 and halt(Execute=True).Busy
 
 
 def test_s7t_override_path_overlay_passes_the_target_at_the_lower_velocity():
-    """S7-Technology V4.1 §6.2.7 Mode 2 "Overlay motion" (L13885-13887; catalog part 2 §8.5): the transition
-    is overlaid at the lower of the two velocities when the direction stays."""
-    ctl, axis = enabled()
-    first = Job(JobKind.RELATIVE, position=100.0, velocity=30.0)
-    axis.submit(first, O.POLICY.buffer_mode(0))
-    second = Job(JobKind.RELATIVE, position=100.0, velocity=10.0)
-    axis.submit(second, O.POLICY.buffer_mode(2))
-    at_handover = []
-    ctl.on_post_servo(lambda t: at_handover.append(speed(ctl, axis)) if first.state == JobState.DONE
-                      and not at_handover else None)
-    ctl.run_until(lambda: first.state == JobState.DONE, 20.0)
-    ctl.step()
-    assert second.active and at_handover and at_handover[0] == pytest.approx(10.0, abs=0.5)
+    """S7-Technology V4.1 §6.2.7 Mode 2 "Overlay motion": the transition between two positionings in the
+    same direction is passed at the lower of the two velocities (10 after 30), without a stop; the second
+    ends at 200."""
+    ctl, axis, _ = enabled()
+    first, second = MC_MoveRelative(), MC_MoveRelative()
+    p0 = float(ctl.bank.sp_p[axis.index])
+    first(Axis=axis, Execute=True, Distance=100.0, Velocity=30.0, **DYN)
+    second(Axis=axis, Execute=True, Distance=100.0, Velocity=10.0, Mode=2, **DYN)
+    trace: list[tuple[float, float]] = []
+    ctl.on_post_servo(lambda t: trace.append((float(ctl.bank.sp_p[axis.index]) - p0, speed(ctl, axis))))
+    ctl.run_until(lambda: second(Execute=True).Done, 30.0)
+    assert first(Execute=True).Done and not first.CommandAborted
+    assert trace[-1][0] == pytest.approx(200.0, abs=1e-6)
+    at_target = min(trace, key=lambda pv: abs(pv[0] - 100.0))
+    assert at_target[1] == pytest.approx(10.0, abs=0.2)
+    assert min(v for p, v in trace if 60.0 < p < 190.0) > 9.9         # no stop at the transition

@@ -150,6 +150,8 @@ class ExecuteInstruction(_S7T, fb.ExecuteInstruction):
             fault = job.fault
             code = None if fault.ack else E.fb_error(fault)
             if self._starting and code is not None:
+                if E.is_warning(code):
+                    return ("CommandAborted", code, 0)   # not executed, a warning: Error stays FALSE (§6.8)
                 return ("Error", code, 0)            # could not be started: the instruction's channel
             to = self.__dict__.get("_to")
             if not fault.ack and isinstance(to, AxisT):

@@ -203,12 +203,5 @@ class MC_MoveToEndPos(_Move):  # noqa: N801 - instruction name of the manual
                    and abs(float(watch.axis.ctl.bank.act_p[watch.axis.index]) - watch.clamp) <= watch.tolerance())
         self._out(InClamping=clamped)
 
-    def _show(self, output: str, error_id: int, error_info: int) -> None:
-        if output == "Error" and error_id in O.WARNINGS:
-            self._clear_outputs()                  # warning 0029: the command is ignored, Error stays FALSE
-            self._out(ErrorID=error_id)
-            return
-        super()._show(output, error_id, error_info)
-
 
 __all__ = ["MC_MoveToEndPos", "watch_of"]

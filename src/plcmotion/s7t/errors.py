@@ -5,13 +5,14 @@ These are the errors of the first channel (§5.10): the command could not be sta
 started and then ended by the technology object - an error while it ran, or a check the technology makes
 after accepting it (e.g. "axis not homed", §6.8 "abort error") - shows ``CommandAborted`` at the instruction
 and its ErrorID in the technology DB (``technology.to_errors``).  :func:`fb_error` says which channel a kernel
-fault takes.
+fault takes; the refusals of the command interaction (§6.8) take the ErrorIDs ``technology.override`` gives
+them (8045, 8055, 8056, 8005 and the warning 0029, which the instruction shows with Error FALSE).
 """
 from __future__ import annotations
 
 from ..kernel import faults as F
 from ..kernel.faults import Fault
-from .technology.override import error_id as override_error_id
+from .technology import override
 
 NO_ERROR = 0x0000
 INTERNAL_ERROR = 0x8001              # internal error
@@ -30,11 +31,11 @@ ONE_INSTANCE_ONLY = 0x804E           # MC_Power: only one active instance per ax
 OTHER_AXIS_ENABLED = 0x804F          # MC_Power: disabling an axis this instance did not enable
 TECHNOLOGY_NOT_READY = 0x8050        # technology not ready (CPU not in RUN / restart OB)
 LATCHING_NOT_ALLOWED = 0x8055        # appending / overlaying not allowed in the current state
+END_POS_IGNORED = 0x0029             # warning: MC_MoveToEndPos in reverse direction ignored
 CLAMPING_ACTIVE = 0x8056             # cancellation due to active travel to fixed stop
 NOT_A_TECHNOLOGY_DB = 0x8083         # the DB at Axis is no technology DB
 INVALID_TECHNOLOGY_DB = 0x8084       # invalid technology DB
 INVALID_REAL = 0x808B                # parameter value of invalid REAL format
-W_END_POS_IGNORED = 0x0029           # warning: MC_MoveToEndPos in reverse direction ignored
 
 TEXTS = {
     NO_ERROR: "no error",
@@ -55,10 +56,10 @@ TEXTS = {
     TECHNOLOGY_NOT_READY: "technology not ready",
     LATCHING_NOT_ALLOWED: "latching (appending/overlaying) motion not allowed in the current state",
     CLAMPING_ACTIVE: "cancellation due to active travel to fixed stop",
+    END_POS_IGNORED: "MC_MoveToEndPos in reverse direction ignored",
     NOT_A_TECHNOLOGY_DB: "DB is not a technology DB",
     INVALID_TECHNOLOGY_DB: "invalid technology DB",
     INVALID_REAL: "parameter value of invalid REAL format",
-    W_END_POS_IGNORED: "MC_MoveToEndPos ignored in reverse direction",
 }
 
 #: rejections the instruction reports itself (the command is not started)
@@ -79,9 +80,9 @@ def fb_error(fault: Fault) -> int | None:
     numeric range (8043 in the technology DB)."""
     if fault.ack:
         return None
-    policy_code = override_error_id(fault)       # refusals of the override policy (§6.8): 8045, 8056, 0029
-    if policy_code is not None:
-        return policy_code
+    code = override.error_id(fault)                      # a refusal of the command interaction (§6.8)
+    if code is not None:
+        return code
     if fault.kind == F.REJECTED:
         return _REJECTED_DETAIL.get(fault.detail)
     if fault.kind == F.INTERNAL:
@@ -91,9 +92,14 @@ def fb_error(fault: Fault) -> int | None:
     return _AT_THE_INSTRUCTION.get(fault.kind, NOT_ALLOWED_IN_STATE)
 
 
+def is_warning(error_id: int) -> bool:
+    """An ErrorID the instruction shows with Error FALSE: the command was not executed (§5.10)."""
+    return error_id in override.WARNINGS
+
+
 def describe(error_id: int) -> str:
     """Text of an instruction ErrorID."""
     return TEXTS.get(error_id, f"unknown ErrorID 16#{error_id:04X}")
 
 
-__all__ = [name for name in dir() if name.isupper()] + ["fb_error", "describe"]
+__all__ = [name for name in dir() if name.isupper()] + ["fb_error", "describe", "is_warning"]

@@ -5,8 +5,9 @@ Dynamic inputs follow §6.9.3 (``base.dynamic``) with the axis's default dynamic
 values above the axis's limits are cut to them and the technology DB shows warning 16#0021.  ``Mode``:
 0 override, 1 append (the axis stops at the transition), 2 overlay (the transition at the lower of the two
 velocities, at standstill when the direction reverses) - the axis job queue's Aborting, Buffered and
-BlendingLow (``technology.override.POLICY.buffer_mode``).  Appending or overlaying onto a running MC_Halt, a running
-MC_MoveVelocity (MC_MoveVelocity onto MC_MoveVelocity) or a synchronous operation: 16#8055.
+BlendingLow (``technology.override.POLICY.buffer_mode``).  Appending or overlaying onto a running MC_Halt, active
+homing, a running MC_MoveVelocity (MC_MoveVelocity onto MC_MoveVelocity) or a synchronous operation: 16#8055,
+during MC_Stop 16#8045 (``override.APPENDING``, S7-Technology V4.1 §6.8).
 """
 from __future__ import annotations
 
@@ -16,6 +17,7 @@ from ..kernel import faults as F
 from ..kernel.jobs import POSITIONING_KINDS, Job, JobKind, JobState
 from . import errors as E
 from .base import POSITION_AXES, ALL_AXES, ExecuteInstruction, InstructionError, as_bool, dynamic, integer, real
+from .technology import override
 from .technology.axes import AxisT
 
 #: §9.4.12 EnumDirection ValueDint of ``userdefaultdynamics.direction``
@@ -61,18 +63,19 @@ class _Move(ExecuteInstruction):
         return out
 
     def _mode(self, axis: AxisT) -> int:
-        mode = integer("Mode", getattr(self, "Mode", 0), self.MODES)
-        if mode and axis.stop_job is None:
-            job = axis.job
-            running = job.kind if job is not None and job.busy else None
-            follower = axis.follower
-            if running == JobKind.HALT or (follower is not None and follower.coupling is not None) or (
-                    running == JobKind.VELOCITY and isinstance(self, MC_MoveVelocity)):
-                raise InstructionError(E.LATCHING_NOT_ALLOWED)
-        return mode
+        return integer("Mode", getattr(self, "Mode", 0), self.MODES)
 
     def _submit(self, axis: AxisT, job: Job, mode: int = 0) -> Job:
-        axis.submit(job, axis.policy.buffer_mode(mode))
+        """Hand the job to the axis with the buffer mode of ``Mode`` (the family's override policy).  A
+        command to wait (Mode 1/2) is refused by what runs (8055, 8045: ``override.APPENDING``) also when
+        nothing is there to wait for (a coupling, a held MC_Stop): the queue asks only behind a running job."""
+        policy = axis.policy
+        if mode and axis.check_start(job) is None:
+            refusal = policy.append_refusal(job, axis._activities())
+            if refusal is not None:
+                job.finish(JobState.ERROR, refusal.fault())
+                return job
+        axis.submit(job, policy.buffer_mode(mode))
         return job
 
 
@@ -136,6 +139,7 @@ class MC_MoveAdditive(_Move):  # noqa: N801
         self._flag()
         dyn = self._dynamics(axis)
         job = _job(JobKind.RELATIVE, self, dyn, position=distance)
+        job.extra["fb"] = override.MOVE_ADDITIVE                 # its own row of §6.8 (a RELATIVE job)
         running = axis.job
         positioning = running is not None and running.busy and running.kind in POSITIONING_KINDS
         p, v, _a = axis._state_now()

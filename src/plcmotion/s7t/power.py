@@ -9,6 +9,7 @@ from . import errors as E
 from .base import ALL_AXES, ExecuteInstruction, Instruction, InstructionError, as_bool, integer, real
 from .technology.axes import (DEFAULT_STOP, FAST_STOP, GEAR_STOP, OFF2_STOP, QUICK_STOP, RAMP_STOP, TIME_STOP,
                               AxisT)
+from .technology import override
 from .technology.device import TechnologyDevice
 
 #: MC_Power Mode (§6.2.1): 0 default, 1 speed-controlled, 2 following mode with the power unit enabled,
@@ -133,6 +134,12 @@ class MC_Power(Instruction):  # noqa: N801 - instruction name of the manual
             elif owner is self and axis.state == "disabled":
                 axis.power_owner = None
             return 0
+        if enable == (axis.state == "disabled"):
+            # enabling or disabling is a command of table 3 of §6.8 (refused while the object restarts)
+            refusal = override.refusal(override.POWER_ON if enable else override.POWER_OFF, axis._activities())
+            if refusal is not None:
+                code = E.fb_error(refusal.fault())
+                return E.NOT_ALLOWED_IN_STATE if code is None else code
         mode = self._mode
         start = 1 if mode == POSITION_CONTROLLED or (
             mode == DEFAULT_MODE and axis.positioning and axis.position_controlled) else 0
@@ -172,8 +179,9 @@ class MC_Reset(ExecuteInstruction):  # noqa: N801
             to.reset_mcdevice()
             job.finish(JobState.DONE)
             return job
-        if to.restarting:
-            raise InstructionError(E.NOT_ALLOWED_IN_STATE)       # a restart runs (§6.7.1)
+        refusal = override.refusal(override.RESTART if restart else override.RESET, to._activities())
+        if refusal is not None:                                  # a restart runs (§6.7.1, §6.8.3): 8045
+            raise InstructionError(E.fb_error(refusal.fault()) or E.NOT_ALLOWED_IN_STATE)
         if restart:
             if to.begin_restart() is not None:
                 raise InstructionError(E.CANNOT_RESTART)

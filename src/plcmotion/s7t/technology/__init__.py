@@ -70,11 +70,26 @@ def _synchronization_axis(ctl: Any, name: str, flat: Mapping[str, Any], where: s
     return _new_axis(ctl, name, flat, where, (SYNCHRONIZATION,), leading_values=leading_values)
 
 
+#: the DP cycle is a whole multiple of 0.25 ms and the IPO cycle (the kernel's servo cycle) a whole multiple of
+#: the DP cycle (S7-Technology V4.1 §5.1, "system clocks" of S7T Config)
+DP_CYCLE_GRANULARITY = 0.00025
+
+
+def _setup(ctl: Any) -> TechnologyDevice:
+    """The integrated technology of a new controller; its IPO cycle (``servo_cycle``) must be a whole number
+    of 0.25 ms."""
+    n = ctl.servo_cycle / DP_CYCLE_GRANULARITY
+    if abs(n - round(n)) > 1e-9 * n:
+        raise ValueError(f"servo_cycle = {ctl.servo_cycle!r}: the IPO cycle of {NAME} is a whole multiple of the "
+                         f"DP cycle, itself a whole multiple of 0.25 ms (e.g. 0.001, 0.002)")
+    return TechnologyDevice(ctl)
+
+
 S7_TECHNOLOGY = K.register(K.Family(
     NAME, versions=(VERSION,), default_version=VERSION,
     factories={K.POSITIONING_AXIS: _positioning_axis, K.SYNCHRONOUS_AXIS: _synchronization_axis},
     job_kinds=JOB_KINDS, policy=POLICY, schemas={K.POSITIONING_AXIS: AXIS, K.SYNCHRONOUS_AXIS: AXIS},
-    describe_fault=describe_fault, setup=TechnologyDevice))
+    describe_fault=describe_fault, setup=_setup))
 
-__all__ = ["S7_TECHNOLOGY", "NAME", "VERSION", "POLICY", "AxisT", "SpeedAxis", "PositioningAxisT", "SynchronizationAxis",
-           "TechnologyDevice", "device"]
+__all__ = ["S7_TECHNOLOGY", "NAME", "VERSION", "POLICY", "DP_CYCLE_GRANULARITY", "AxisT", "SpeedAxis",
+           "PositioningAxisT", "SynchronizationAxis", "TechnologyDevice", "device"]

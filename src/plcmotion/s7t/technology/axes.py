@@ -10,7 +10,7 @@ part 2 of the issue).
 """
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any, Mapping
+from typing import TYPE_CHECKING, Any, Iterator, Mapping
 
 from ...kernel import faults as F
 from ...kernel.axis import DISABLED, ENABLING
@@ -18,6 +18,8 @@ from ...kernel.faults import Fault, Reaction
 from ...kernel.follower import Follower
 from ...kernel.jobs import Job, JobKind, JobState
 from ...kernel.layered_axis import LayeredAxis
+from ...kernel.policy import Activity
+from . import override
 from .builder import POSITIONING, SPEED, SYNCHRONIZATION, TELEGRAMS_NO_ENCODER, YES
 from .schema import AXIS
 from .tdb import AxisDB
@@ -163,6 +165,13 @@ class AxisT(LayeredAxis):
             self.restart_until = until = None
         return until is not None
 
+    def _activities(self) -> Iterator[Activity]:
+        """The kernel's (a running or held MC_Stop, the axis job, a waiting passive homing, couplings, the
+        superimposed motion) and a running restart, column "MC_Reset Restart" of S7-Technology V4.1 §6.8.3."""
+        yield from super()._activities()
+        if self.restart_until is not None and self.restarting:
+            yield Activity(override.RESTART, None, _restart_goes_on)
+
     def begin_restart(self) -> Fault | None:
         """Restart the technology object with its start values; it is busy for ``RESTART_TIME``."""
         fault = self.restart()
@@ -261,6 +270,10 @@ class AxisT(LayeredAxis):
     @property
     def disabled(self) -> bool:
         return self.state == DISABLED
+
+
+def _restart_goes_on(t: float) -> None:
+    """A restart is never aborted by a command (S7-Technology V4.1 §6.8.3: its column holds no abort)."""
 
 
 class SpeedAxis(AxisT):

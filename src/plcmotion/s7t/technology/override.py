@@ -313,7 +313,7 @@ _KERNEL_ALIASES = {GEAR_IN: d(GI), SYNC_ACTIVE: d(GI), SYNC_WAITING: w(GI), PHAS
                    K.STOP: STOP, K.SUPERIMPOSED: MOVE_SUPERIMPOSED}
 for _alias, _ours in _KERNEL_ALIASES.items():
     TABLE[_alias] = dict(TABLE[_ours])
-    for _row in TABLE.values():
+    for _row in (*TABLE.values(), *APPENDING.values()):
         if _ours in _row:
             _row[_alias] = _row[_ours]
 

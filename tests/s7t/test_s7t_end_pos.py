@@ -139,7 +139,7 @@ def test_s7t_end_pos_reverse_before_the_stop_warning_0029():
     back(Axis=r.axis, Execute=True, Velocity=20.0, Direction=3)
     r.ctl.run(0.02)
     back(Axis=r.axis, Execute=True)
-    assert back.ErrorID == 0x0029 and not back.Error and not back.Busy
+    assert back.ErrorID == 0x0029 and back.CommandAborted and not back.Error and not back.Busy
     assert r.end.Busy and not r.end.CommandAborted
     r.ctl.run(STOP / 20.0)
     assert r.end.InClamping

@@ -97,11 +97,6 @@ class AxisT(LayeredAxis):
         c = self.config
         return c.software_limits.enabled and not c.modulo.enabled and (self.homed or not self.homing_required)
 
-    def _activities(self):
-        yield from super()._activities()
-        if self.releasing_clamp is not None:
-            yield self.releasing_clamp          # MC_MoveToEndPos released, the setpoint still in its window
-
     def queue_waiting(self) -> bool:
         return bool(self.queue.pending)
 
@@ -171,6 +166,8 @@ class AxisT(LayeredAxis):
         yield from super()._activities()
         if self.restart_until is not None and self.restarting:
             yield Activity(override.RESTART, None, _restart_goes_on)
+        if self.releasing_clamp is not None:
+            yield self.releasing_clamp          # MC_MoveToEndPos released, the setpoint still in its window
 
     def begin_restart(self) -> Fault | None:
         """Restart the technology object with its start values; it is busy for ``RESTART_TIME``."""

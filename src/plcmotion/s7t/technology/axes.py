@@ -48,6 +48,11 @@ class AxisT(LayeredAxis):
     schema = AXIS
     technology = POSITIONING
     hydraulic = False                      # a hydraulic axis (§3.1.4) sets it (its own drive model)
+    #: MC_SetTorqueLimit (EnableLimit TRUE) or MC_MoveToEndPos reduces the torque (Statusword bit 23)
+    torque_limiting_command = False
+    #: the override policy's activity of an MC_MoveToEndPos that was released but whose clamping window
+    #: the setpoint has not left yet (``s7t.end_pos``): commands toward the stop stay refused (16#8056)
+    releasing_clamp = None
     #: MC_Stop lock, follower and the superimposed layer as in the kernel; a virtual axis homes at once
     _sim_homing_at_once = True
 
@@ -161,6 +166,8 @@ class AxisT(LayeredAxis):
         yield from super()._activities()
         if self.restart_until is not None and self.restarting:
             yield Activity(override.RESTART, None, _restart_goes_on)
+        if self.releasing_clamp is not None:
+            yield self.releasing_clamp          # MC_MoveToEndPos released, the setpoint still in its window
 
     def begin_restart(self) -> Fault | None:
         """Restart the technology object with its start values; it is busy for ``RESTART_TIME``."""

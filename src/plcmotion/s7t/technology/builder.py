@@ -17,6 +17,7 @@ from ...kernel.axis_config import (AxisConfig, DriveSignals, DynamicDefaults, Dy
                                    HardwareLimits, Homing, HomingMethod, Modulo, PositionControl,
                                    PositioningMonitoring, PulseOutput, SoftwareLimits, StandstillMonitoring, Units)
 from ...kernel.plant_schema import plant_spec
+from .hydraulic_params import hydraulic, hydraulic_drive_spec
 
 #: §9.4.12 ValueDint of EnumYesNo / EnumActiveInactive / EnumDirectionType
 YES, ACTIVE, POSITIVE = 1, 1, 5
@@ -69,6 +70,8 @@ def drive_spec(p: Mapping[str, Any]) -> DriveSpec:
     telegram = p["Wizard.Telegram"]
     encoder = EncoderSpec(kind=EncoderKind.INCREMENTAL, rotary=True, distance_per_revolution=per_revolution,
                           interface=EncoderInterface.DRIVE_TELEGRAM)
+    if hydraulic(p):
+        return hydraulic_drive_spec(p, encoder, per_revolution)   # a valve and a cylinder (§3.1.4, §4.6)
     return DriveSpec(
         actuator=ActuatorKind.IDEAL if ideal else ActuatorKind.SPEED_SERVO,
         interface=SetpointInterface.NONE if ideal else SetpointInterface.PROFIDRIVE,

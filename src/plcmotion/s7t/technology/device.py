@@ -112,6 +112,11 @@ class TechnologyDevice:
         self._axis_dbs.append(to.db)
         self._rows = np.array([db._axis.index for db in self._axis_dbs], dtype=np.intp)
 
+    def register_object(self, to: Any) -> None:
+        """Make the technology DB ``to.db`` of a technology object that is no axis known under its number."""
+        self._dbs[to.db_number] = to.db
+        self._objects[to.db_number] = to
+
     def db(self, number: Any) -> TechnologyDB | None:
         """The technology DB with ``number`` (None: no technology DB)."""
         return self._dbs.get(number) if isinstance(number, int) and not isinstance(number, bool) else None

@@ -17,6 +17,7 @@ from typing import Any, Mapping
 
 from ...kernel.plant_schema import PLANT_PARAMS
 from ...kernel.schema import E12, INT, REAL, WP, R, AxisSchema, Issue, Param
+from . import hydraulic_params as H
 from .builder import (DYN, FE, GEAR, PV, TELEGRAMS_NO_ENCODER, TELEGRAMS_ONE_ENCODER, TELEGRAMS_TWO_ENCODERS,
                       axis_config, max_drive_velocity)
 
@@ -101,7 +102,8 @@ _PARAMS: list[Param] = [
 # fmt: on
 
 #: tags that are not the expert list's: the wizard's, the simulated drive's, the DB number
-FAMILY_TAGS = frozenset(p.path for p in _PARAMS if p.path.startswith(("Wizard.", "Drive.")) or p.path == "DBNumber")
+FAMILY_TAGS = frozenset(p.path for p in _PARAMS + H.PARAMS
+                        if p.path.startswith(("Wizard.", "Drive.")) or p.path == "DBNumber")
 
 #: the manual's spellings with stray blanks, cleaned (s7-technology-parameters.csv numbers 2020, 2021)
 _ALIASES = {"TypeOfAxis.NumberOfData Sets.DataSet_1.Gear denFactor": f"{GEAR}.denFactor",
@@ -121,6 +123,7 @@ def rule_issues(cfg: Mapping[str, Any]) -> list[Issue]:
     if cfg["swlimit.minusposition"] >= cfg["swlimit.plusposition"]:
         add("swlimit.minusposition", "low_above_high",
             f"below swlimit.plusposition = {cfg['swlimit.plusposition']:g} (§4.5.7.3, ErrorID 8085)")
+    issues += H.rule_issues(cfg)
     if cfg["Wizard.Virtual"] == 0:
         if cfg["Wizard.Technology"] != 0 and cfg["Wizard.Telegram"] in TELEGRAMS_NO_ENCODER:
             add("Wizard.Telegram", "no_encoder", "a telegram with an encoder (3, 4, 5, 6, 102, 103, 105, 106) for a "
@@ -128,7 +131,7 @@ def rule_issues(cfg: Mapping[str, Any]) -> list[Issue]:
         if cfg["Drive.MaxSpeed"] > 2.0 * cfg["Drive.ReferenceSpeed"] * (1 + 1e-12):
             add("Drive.MaxSpeed", "above_reference", f"at most 2 x Drive.ReferenceSpeed = {2 * cfg['Drive.ReferenceSpeed']:g}")
         vmax = max_drive_velocity(cfg)
-        if cfg["TypeOfAxis.MaxVelocity.maximum"] > vmax * (1 + 1e-9):
+        if not H.hydraulic(cfg) and cfg["TypeOfAxis.MaxVelocity.maximum"] > vmax * (1 + 1e-9):
             add("TypeOfAxis.MaxVelocity.maximum", "unreachable",
                 f"at most {vmax:g} (Drive.MaxSpeed {cfg['Drive.MaxSpeed']:g} 1/min over the mechanics)")
     if cfg["Wizard.Technology"] == 0 and cfg["Modulo.state"] == 1:
@@ -139,7 +142,7 @@ def rule_issues(cfg: Mapping[str, Any]) -> list[Issue]:
     return issues
 
 
-AXIS = AxisSchema("S7-Technology axis", _PARAMS + PLANT_PARAMS, rules=rule_issues, canonical=canonical,
+AXIS = AxisSchema("S7-Technology axis", _PARAMS + H.PARAMS + PLANT_PARAMS, rules=rule_issues, canonical=canonical,
                   build=axis_config, real_type="Real")
 
 __all__ = ["AXIS", "FAMILY_TAGS", "DIRECTIONS", "canonical", "rule_issues"]

@@ -195,7 +195,7 @@ class PositioningAxis(TagViews):
     def sw_limits_effective(self) -> bool:
         """SW limit switches act only on a homed, non-modulo axis (§2.3; modulo: see docs/decisions)."""
         c = self.config
-        return c.software_limits.enabled and self.homed and not c.modulo.enabled
+        return c.software_limits.enabled and (self.homed or not c.homing.required) and not c.modulo.enabled
 
     def position_resolution(self) -> float:
         """Smallest position step of the axis: one pulse (PTO), one encoder increment (servo)."""

@@ -8,6 +8,7 @@ from .kernel import (ConfigurationError, Controller, ControllerStopped, CycleOve
 # the families register their technology objects with the kernel (Controller(family=...))
 from .s7_1200 import technology as _s7_1200  # noqa: E402,F401
 from .s7_1500 import technology as _s7_1500  # noqa: E402,F401
+from .s7t import technology as _s7t  # noqa: E402,F401
 
 __version__ = "0.1.0"
 

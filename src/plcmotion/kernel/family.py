@@ -50,7 +50,10 @@ mapping of its buffer-mode input (``kernel.policy``); None: the PLCopen default,
     ``schemas`` map an object kind to the ``kernel.schema.AxisSchema`` that checks its tags, so a project
     file can report every bad tag of an object before creating it (a kind without one cannot be declared
     in a project file).  ``describe_fault(fault)``: how summaries name a kernel fault of the family's
-    objects (its alarm number and text); None: the fault's own text."""
+    objects (its alarm number and text); None: the fault's own text.  ``setup(ctl)``: the family's
+    controller-wide runtime state (e.g. data blocks shared by all its objects), made once per controller and
+    kept as ``ctl.extension``; a restart of the controller calls its ``reinitialize(reason)`` when it has
+    one.  None: the family has no such state."""
 
     name: str
     versions: tuple[int, ...]
@@ -62,6 +65,7 @@ mapping of its buffer-mode input (``kernel.policy``); None: the PLCopen default,
     policy: OverridePolicy | None = None
     schemas: Mapping[str, Any] = field(default_factory=dict)
     describe_fault: Callable[[Any], str] | None = None
+    setup: Callable[[Any], Any] | None = None
 
 
 _REGISTRY: dict[str, Family] = {}

@@ -215,6 +215,8 @@ class Controller:
         # retentive data (absolute encoder adjustment), kept in ``state_file`` when one is given
         self.state_file = state_file
         self.retain: dict[str, dict] = retain.load(state_file) if state_file else {}
+        #: the family's controller-wide runtime state (``Family.setup``), None when it has none
+        self.extension: Any = fam.setup(self) if fam.setup is not None else None
 
     # --- time ------------------------------------------------------------------------------------------
     @property
@@ -418,6 +420,9 @@ class Controller:
             to.reinitialize(reason)
         for inst in self._instances.values():
             inst._reinit()
+        reinit = getattr(self.extension, "reinitialize", None)
+        if reinit is not None:
+            reinit(reason)
         self.mode = RUN
         self.stop_reason = None
         self._servo_defect = False

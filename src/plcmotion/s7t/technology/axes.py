@@ -1,0 +1,260 @@
+"""The axis technology objects of S7-Technology (S7-Technology V4.1 §3.1-§3.4): speed-controlled axis,
+positioning axis and synchronization axis, real or virtual.
+
+All three are the kernel's ``LayeredAxis`` (basic and superimposed motion layer, the locking stop job of
+MC_Stop, per-job dynamics); here they get their technology DB (``axis.db``), the error channel of the
+technology DB (``axis.errors``: ErrorID, ErrorBuffer, ErrorStatus), the emergency programs of MC_Power
+(StopMode 0-6) and the S7-Technology rules for the MC_Stop lock and "homing required".  The synchronization
+axis is a positioning axis with the kernel's follower (its synchronous operation instructions come with
+part 2 of the issue).
+"""
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any, Mapping
+
+from ...kernel import faults as F
+from ...kernel.axis import DISABLED, ENABLING
+from ...kernel.faults import Fault, Reaction
+from ...kernel.follower import Follower
+from ...kernel.jobs import Job, JobKind, JobState
+from ...kernel.layered_axis import LayeredAxis
+from .builder import POSITIONING, SPEED, SYNCHRONIZATION, TELEGRAMS_NO_ENCODER, YES
+from .schema import AXIS
+from .tdb import AxisDB
+from .to_errors import W_DYNAMICS_LIMITED, ErrorRecord, tdb_error
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ...kernel.runtime import Controller
+
+_EPS_T = 1e-9
+
+#: MC_Power StopMode (§6.2.1): 0 DefaultStop, 1 FastStop, 2 TimeStop, 3 OFF2Stop (hydraulic axes), 4 GearStop,
+#: 5 ramp stop and 6 fast-stop ramp of the drive (real electric axes)
+DEFAULT_STOP, FAST_STOP, TIME_STOP, OFF2_STOP, GEAR_STOP, RAMP_STOP, QUICK_STOP = range(7)
+
+#: how long a technology object takes no commands after MC_Reset Restart = TRUE [s] ("several hundred ms",
+#: §6.7.1; the value is plcmotion's)
+RESTART_TIME = 0.2
+
+TECHNOLOGY_NAMES = {SPEED: "speed-controlled axis", POSITIONING: "positioning axis",
+                    SYNCHRONIZATION: "synchronization axis"}
+
+
+class AxisT(LayeredAxis):
+    """Base of the S7-Technology axes (the class of each technology below)."""
+
+    schema = AXIS
+    technology = POSITIONING
+    hydraulic = False                      # a hydraulic axis (§3.1.4) sets it (its own drive model)
+    #: MC_Stop lock, follower and the superimposed layer as in the kernel; a virtual axis homes at once
+    _sim_homing_at_once = True
+
+    def __init__(self, ctl: "Controller", name: str, cfg: Mapping[str, Any], *, db_number: int | None = None):
+        self.errors = ErrorRecord()                  # ErrorID, ErrorBuffer, ErrorStatus of the technology DB
+        self.following_mode = False                  # MC_Power Mode 2/3: position control off (§3.1.2)
+        self.restart_requested = False               # Statusword.RequestRestart
+        self.last_direction = 1                      # direction of the last motion (Direction = 4: "current")
+        self._warned: Job | None = None
+        self.restart_until: float | None = None      # a restart (MC_Reset Restart = TRUE) runs until then
+        #: MC_Power QOutputValue [%]: the valve output after disabling with StopMode 3 (hydraulic axes)
+        self.q_output_value = 0.0
+        super().__init__(ctl, name, cfg, db_number=db_number)
+        self.db = AxisDB(self)
+
+    # --- what kind of axis ------------------------------------------------------------------------------
+    @property
+    def positioning(self) -> bool:
+        """A positioning or synchronization axis (one that has a position, §3.3)."""
+        return self.technology != SPEED
+
+    @property
+    def virtual(self) -> bool:
+        return self.sim
+
+    @property
+    def technology_name(self) -> str:
+        return ("virtual " if self.virtual else "") + TECHNOLOGY_NAMES[self.technology]
+
+    @property
+    def without_encoder(self) -> bool:
+        """A speed-controlled axis on a telegram without encoder shows no actual velocity (§7.1)."""
+        return self.technology == SPEED and not self.virtual and self.cfg["Wizard.Telegram"] in TELEGRAMS_NO_ENCODER
+
+    @property
+    def homing_required(self) -> bool:
+        return self.cfg["TypeOfAxis.Homing.referencingNecessary"] == YES
+
+    def sw_limits_effective(self) -> bool:
+        """§4.5.7.3: the software limit switches act on a homed axis; with "Homing required" = NO always
+        (not on a modulo axis, which has no end)."""
+        c = self.config
+        return c.software_limits.enabled and not c.modulo.enabled and (self.homed or not self.homing_required)
+
+    def queue_waiting(self) -> bool:
+        return bool(self.queue.pending)
+
+    def __repr__(self) -> str:
+        return f"<{type(self).__name__} {self.name} DB{self.db_number} {self.state}>"
+
+    # --- the error channel of the technology DB (§5.12) -------------------------------------------------
+    def raise_alarm(self, fault: Fault, job: Job | None = None) -> None:
+        new = fault not in self.alarms
+        stop = self.stop_job
+        if stop is not None and stop.busy and fault.reaction != Reaction.NONE:
+            # the error reaction stops the axis: MC_Stop is done (only another MC_Stop aborts it, §6.2.3)
+            self._finish_job(stop, JobState.DONE, self.now)
+        super().raise_alarm(fault, job)
+        if new:
+            self.errors.note(*tdb_error(fault))
+
+    def note_rejected(self, fault: Fault) -> None:
+        """A command that had been accepted ended because it could not be carried out (§6.8 "abort
+        error"): its ErrorID goes to the technology DB."""
+        self.errors.note(*tdb_error(fault))
+
+    def _note_limits(self, lim, job: Job | None = None) -> None:
+        super()._note_limits(lim, job)
+        # warning 0021 once per command whose dynamic values were cut to the limits (§6.9.3, §7.12.1)
+        if self.warnings and (job is None or job is not self._warned):
+            self._warned = job
+            self.errors.note(W_DYNAMICS_LIMITED)
+
+    def acknowledge(self) -> Fault | None:
+        """MC_Reset Restart = FALSE: the errors whose cause is gone are acknowledged; the technology DB's
+        ErrorID, ErrorBuffer and ErrorStatus are cleared when nothing remains (§6.7.1)."""
+        fault = super().acknowledge()
+        if fault is None:
+            self.errors.clear()
+        return fault
+
+    # --- restart (MC_Reset Restart = TRUE): the object takes no commands for RESTART_TIME (§6.7.1) --------
+    @property
+    def restarting(self) -> bool:
+        until = self.restart_until
+        if until is not None and self.now >= until - _EPS_T:
+            self.restart_until = until = None
+        return until is not None
+
+    def begin_restart(self) -> Fault | None:
+        """Restart the technology object with its start values; it is busy for ``RESTART_TIME``."""
+        fault = self.restart()
+        if fault is None:
+            self.restart_until = self.now + RESTART_TIME
+        return fault
+
+    def _enable(self, start_mode: int) -> None:
+        if not self.restarting:                  # enabled once the restart is over (MC_Power calls again)
+            super()._enable(start_mode)
+
+    # --- start conditions -------------------------------------------------------------------------------
+    def check_start(self, job: Job) -> Fault | None:
+        if self.restarting:
+            return F.reject(F.REJECTED, "restarting")
+        if job.kind == JobKind.STOP and self.state == DISABLED and self.ctl.mode == "RUN":
+            return None                          # MC_Stop locks a disabled axis too (§6.2.3)
+        if self.following_mode and job.kind != JobKind.STOP and self.state == "enabled":
+            return F.reject(F.NOT_ENABLED, "following_mode")      # MC_Power Mode 2: no motion (8040)
+        fault = super().check_start(job)
+        if fault is not None and fault.kind == F.NOT_HOMED and not self.homing_required:
+            # §3.1.8: absolute motion on an axis that is not homed when "Homing required" = NO
+            if self.servo and not self.sensor_valid:
+                return F.reject(F.REJECTED, "position_control_required")
+            return None
+        return fault
+
+    def _begin(self, job: Job, t: float) -> None:
+        if job.kind == JobKind.STOP and self.state == DISABLED:
+            self.stop_job = job                  # nothing to brake: done at once, the lock stays
+            self._finish_job(job, JobState.DONE, t)
+            return
+        super()._begin(job, t)
+        v = job.velocity if job.kind == JobKind.VELOCITY else job.target - self._state_now()[0] \
+            if job.kind in (JobKind.ABSOLUTE, JobKind.RELATIVE) else 0.0
+        if v:
+            self.last_direction = 1 if v > 0 else -1
+
+    # --- MC_Stop keeps the axis locked while its Execute is TRUE, also across a disable (§6.2.3) ----------
+    def _abort_all(self, t: float, *, keep_simulated: bool = True) -> None:
+        stop = self.stop_job
+        if stop is not None and stop.busy:
+            # the emergency program of MC_Power takes the stop over: the stop is done, its lock stays
+            self._finish_job(stop, JobState.DONE, t)
+        super()._abort_all(t, keep_simulated=keep_simulated)
+        if stop is not None and not stop.extra.get("released"):
+            self.stop_job = stop
+
+    # --- MC_Power: enabling modes and emergency programs (§6.2.1) ----------------------------------------
+    def _disable(self, stop_mode: int) -> None:
+        t = self.now
+        self._abort_all(t)
+        if self.state == ENABLING or stop_mode in (OFF2_STOP, RAMP_STOP, QUICK_STOP) and not self.virtual:
+            # OFF2: pulses off, the axis coasts; 5/6: the drive brakes with its own ramp (enable removed)
+            self._remove_enable(t, by_power=True)
+            return
+        self.state = "disabling"
+        p, v, a = self._state_now()
+        self._after_stop = "disable"
+        if stop_mode == FAST_STOP:
+            self._start_profile(self.motion.stop_with(t, p, v, a, self._max_dynamics()))
+        elif stop_mode == TIME_STOP:
+            plan = self.motion.ramp_out(t, p, v, self.cfg["userdefaultdynamics.stoptime"])
+            self._start_profile(plan.profile, plan)
+        else:                      # DefaultStop; GearStop of an axis that is not synchronous (§6.2.1)
+            plan = self.motion.stop(t, p, v, a, emergency=True, jerk=False)
+            self._start_profile(plan.profile, plan)
+        if self.profile.t_end <= t + _EPS_T:
+            self._remove_enable(t, by_power=True)
+
+    def _remove_enable(self, t: float, by_power: bool = False) -> None:
+        super()._remove_enable(t, by_power)
+        self.following_mode = False
+
+    def reinitialize(self, reason: str) -> None:
+        if reason != "restart":
+            self.restart_until = None
+        super().reinitialize(reason)
+        self.stop_job = None                  # a restart ends the MC_Stop lock with the instances
+        self.errors.clear()
+        self.following_mode = False
+        self.restart_requested = False
+        self._warned = None
+
+    @property
+    def disabled(self) -> bool:
+        return self.state == DISABLED
+
+
+class SpeedAxis(AxisT):
+    """Speed-controlled axis (§3.2): velocity only, no position control."""
+
+    technology = SPEED
+
+    def _has_start_mode(self) -> bool:
+        return True
+
+    def _set_position_control(self, on: bool) -> None:
+        super()._set_position_control(False)       # always speed-controlled (Statusword.SpeedMode, §7.1)
+
+
+class PositioningAxisT(AxisT):
+    """Positioning axis (§3.3)."""
+
+    technology = POSITIONING
+
+
+class SynchronizationAxis(PositioningAxisT):
+    """Synchronization axis (§3.4): a positioning axis with a following object (the kernel's follower)."""
+
+    technology = SYNCHRONIZATION
+
+    def __init__(self, ctl: "Controller", name: str, cfg: Mapping[str, Any], *, leading_values=(),
+                 db_number: int | None = None):
+        self.follower = Follower(self, leading_values, name)
+        super().__init__(ctl, name, cfg, db_number=db_number)
+
+
+#: the axis class of each technology (family tag Wizard.Technology)
+AXIS_CLASSES = {SPEED: SpeedAxis, POSITIONING: PositioningAxisT, SYNCHRONIZATION: SynchronizationAxis}
+
+__all__ = ["AxisT", "SpeedAxis", "PositioningAxisT", "SynchronizationAxis", "AXIS_CLASSES", "DEFAULT_STOP",
+           "FAST_STOP", "TIME_STOP", "OFF2_STOP", "GEAR_STOP", "RAMP_STOP", "QUICK_STOP"]

@@ -18,9 +18,11 @@ from ...kernel.faults import Fault, Reaction
 from ...kernel.follower import Follower
 from ...kernel.jobs import Job, JobKind, JobState
 from ...kernel.layered_axis import LayeredAxis
+from ...kernel.reference_approach import ApproachHoming
 from .builder import POSITIONING, SPEED, SYNCHRONIZATION, TELEGRAMS_NO_ENCODER, YES
 from .schema import AXIS
 from .tdb import AxisDB
+from .monitoring import tdb_errors
 from .to_errors import W_DYNAMICS_LIMITED, ErrorRecord, tdb_error
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -48,6 +50,8 @@ class AxisT(LayeredAxis):
     hydraulic = False                      # a hydraulic axis (§3.1.4) sets it (its own drive model)
     #: MC_Stop lock, follower and the superimposed layer as in the kernel; a virtual axis homes at once
     _sim_homing_at_once = True
+    #: homing with the reference point approach of §4.5.10 (cam and zero mark, distances, corrections)
+    homing_class = ApproachHoming
 
     def __init__(self, ctl: "Controller", name: str, cfg: Mapping[str, Any], *, db_number: int | None = None):
         self.errors = ErrorRecord()                  # ErrorID, ErrorBuffer, ErrorStatus of the technology DB
@@ -105,7 +109,8 @@ class AxisT(LayeredAxis):
             self._finish_job(stop, JobState.DONE, self.now)
         super().raise_alarm(fault, job)
         if new:
-            self.errors.note(*tdb_error(fault))
+            for entry in tdb_errors(fault):          # a limit switch gives two (homing_params, monitoring)
+                self.errors.note(*entry)
 
     def note_rejected(self, fault: Fault) -> None:
         """A command that had been accepted ended because it could not be carried out (§6.8 "abort

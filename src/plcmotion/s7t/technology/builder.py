@@ -17,6 +17,7 @@ from ...kernel.axis_config import (AxisConfig, DriveSignals, DynamicDefaults, Dy
                                    HardwareLimits, Homing, HomingMethod, Modulo, PositionControl,
                                    PositioningMonitoring, PulseOutput, SoftwareLimits, StandstillMonitoring, Units)
 from ...kernel.plant_schema import plant_spec
+from .homing_params import plant_wiring, refine
 
 #: §9.4.12 ValueDint of EnumYesNo / EnumActiveInactive / EnumDirectionType
 YES, ACTIVE, POSITIVE = 1, 1, 5
@@ -81,12 +82,16 @@ def drive_spec(p: Mapping[str, Any]) -> DriveSpec:
         ready_delay=p["Plant.ReadyDelay"],
         off_ramp_time=p["Plant.OffRampTime"],
         encoder=encoder,
-        plant=plant_spec(p, hw_min=("", False), hw_max=("", False), homing_inputs=(), ready_input=""),
+        plant=plant_spec(p, **plant_wiring(p)),
     )
 
 
 def axis_config(p: Mapping[str, Any]) -> AxisConfig:
     """The configuration of an S7-Technology axis with valid tag values ``p``."""
+    return refine(_axis_config(p), p)          # homing, limit switches, standstill: homing_params
+
+
+def _axis_config(p: Mapping[str, Any]) -> AxisConfig:
     jerk = p[f"{DYN}.positiveaccelstartjerk"]
     max_acc = p["TypeOfAxis.MaxAcceleration.maximum"]
     home_method = HomingMethod(mode=0, home_offset=0.0)

@@ -17,6 +17,7 @@ from typing import Any, Mapping
 
 from ...kernel.plant_schema import PLANT_PARAMS
 from ...kernel.schema import E12, INT, REAL, WP, P, R, AxisSchema, Issue, Param
+from .homing_params import HOMING_PARAMS, homing_rule_issues
 from .builder import (DS, DYN, FE, GEAR, PV, TELEGRAMS_NO_ENCODER, TELEGRAMS_ONE_ENCODER, TELEGRAMS_TWO_ENCODERS,
                       axis_config, max_drive_velocity)
 
@@ -101,7 +102,7 @@ _PARAMS: list[Param] = [
 # fmt: on
 
 #: tags that are not the expert list's: the wizard's, the simulated drive's, the DB number
-FAMILY_TAGS = frozenset(p.path for p in _PARAMS if p.path.startswith(("Wizard.", "Drive.")) or p.path == "DBNumber")
+FAMILY_TAGS = frozenset(p.path for p in _PARAMS + HOMING_PARAMS if p.path.startswith(("Wizard.", "Drive.")) or p.path == "DBNumber")
 
 #: the manual's spellings with stray blanks, cleaned (s7-technology-parameters.csv numbers 2020, 2021)
 _ALIASES = {"TypeOfAxis.NumberOfData Sets.DataSet_1.Gear denFactor": f"{GEAR}.denFactor",
@@ -136,10 +137,10 @@ def rule_issues(cfg: Mapping[str, Any]) -> list[Issue]:
     lo, hi = cfg["Plant.HWLimitMinPosition"], cfg["Plant.HWLimitMaxPosition"]
     if lo is not None and hi is not None and lo >= hi:
         add("Plant.HWLimitMinPosition", "low_above_high", f"below Plant.HWLimitMaxPosition = {hi:g}")
-    return issues
+    return issues + homing_rule_issues(cfg)
 
 
-AXIS = AxisSchema("S7-Technology axis", _PARAMS + PLANT_PARAMS, rules=rule_issues, canonical=canonical,
+AXIS = AxisSchema("S7-Technology axis", _PARAMS + HOMING_PARAMS + PLANT_PARAMS, rules=rule_issues, canonical=canonical,
                   build=axis_config, real_type="Real")
 
 __all__ = ["AXIS", "FAMILY_TAGS", "DIRECTIONS", "P"]

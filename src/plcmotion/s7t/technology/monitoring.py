@@ -1,0 +1,67 @@
+"""The monitoring functions of an axis in its technology DB: which ErrorIDs and ErrorStatus bits a kernel
+monitoring fault gives, and how the axis reacts (S7-Technology V4.1 §3.5 of the catalog, §4.5.7, §4.5.10,
+§4.5.11, §7.1, §7.12.1).
+
+The manual's error tables name the error and its cause but no reaction column; the reactions below are the
+kernel's for each fault and are plcmotion's decision where the manual only says "the axis is stopped":
+
+====== ============================================ ===================== =======================================
+ErrorID message                                       ErrorStatus bit       reaction
+====== ============================================ ===================== =======================================
+8013   hardware limit switch is active               LimitSwitchActive     enable removed (the drive brakes)
+804B   limit switch active; invalid command          LimitSwitchActive     with 8013; alone: motion into the switch
+8014   software limit switch actuated                SoftwareLimitPos/Neg  the axis stops at the switch
+8015   software limit switch overshot                SoftwareLimitPos/Neg  enable removed
+8016   following error out of limits                 FollowingError        enable removed
+8018   standstill monitoring error                   StandstillFault       enable removed
+8019   positioning monitoring error                  PositioningError      enable removed
+801D   reference cam or encoder zero mark not found  ReferenceNotFound     homing ends, the axis brakes (stop)
+====== ============================================ ===================== =======================================
+
+A hardware limit switch gives two entries at once (§4.5.7.2: "stopped with error messages 8013 and 804B").
+All other faults keep the core's mapping (``to_errors.tdb_error``).
+"""
+from __future__ import annotations
+
+from ...kernel import faults as F
+from ...kernel.faults import Fault, Reaction
+from .to_errors import ERROR_STATUS_BITS as B
+from .to_errors import tdb_error
+
+HW_LIMIT_SWITCH = 0x8013
+SW_LIMIT_REACHED = 0x8014
+SW_LIMIT_OVERSHOT = 0x8015
+FOLLOWING_ERROR = 0x8016
+STANDSTILL = 0x8018
+POSITIONING = 0x8019
+REFERENCE_NOT_FOUND = 0x801D
+LIMIT_SWITCH_COMMAND = 0x804B
+
+#: kernel fault kind -> the technology DB entries (ErrorID, ErrorStatus bit), in the order they are noted
+_MONITORS: dict[str, tuple[tuple[int, int], ...]] = {
+    F.HW_LIMIT_MIN: ((HW_LIMIT_SWITCH, B["LimitSwitchActive"]), (LIMIT_SWITCH_COMMAND, B["LimitSwitchActive"])),
+    F.HW_LIMIT_MAX: ((HW_LIMIT_SWITCH, B["LimitSwitchActive"]), (LIMIT_SWITCH_COMMAND, B["LimitSwitchActive"])),
+    F.FOLLOWING_ERROR: ((FOLLOWING_ERROR, B["FollowingError"]),),
+    F.STANDSTILL: ((STANDSTILL, B["StandstillFault"]),),
+    F.POSITIONING: ((POSITIONING, B["PositioningError"]),),
+    F.REFERENCE_NOT_FOUND: ((REFERENCE_NOT_FOUND, B["ReferenceNotFound"]),),
+}
+
+#: the reaction of each monitoring ErrorID (see the table above); ``None``: none of its own (8014 stops at the
+#: switch by its plan, 804B comes with 8013 or refuses a motion into the switch)
+REACTIONS: dict[int, Reaction | None] = {
+    HW_LIMIT_SWITCH: Reaction.REMOVE_ENABLE, LIMIT_SWITCH_COMMAND: None, SW_LIMIT_REACHED: None,
+    SW_LIMIT_OVERSHOT: Reaction.REMOVE_ENABLE, FOLLOWING_ERROR: Reaction.REMOVE_ENABLE,
+    STANDSTILL: Reaction.REMOVE_ENABLE, POSITIONING: Reaction.REMOVE_ENABLE, REFERENCE_NOT_FOUND: Reaction.STOP,
+}
+
+
+def tdb_errors(fault: Fault) -> list[tuple[int, int | None]]:
+    """The technology DB entries (ErrorID, ErrorStatus bit) of a kernel fault, in order."""
+    if fault.ack and fault.kind in _MONITORS:
+        return list(_MONITORS[fault.kind])
+    return [tdb_error(fault)]
+
+
+__all__ = ["tdb_errors", "REACTIONS", "HW_LIMIT_SWITCH", "SW_LIMIT_REACHED", "SW_LIMIT_OVERSHOT", "FOLLOWING_ERROR",
+           "STANDSTILL", "POSITIONING", "REFERENCE_NOT_FOUND", "LIMIT_SWITCH_COMMAND"]

@@ -126,15 +126,18 @@ class ExecuteInstruction(_S7T, fb.ExecuteInstruction):
         object.__setattr__(self, "_cmd_seq", self._cmd_seq + 1)
         object.__setattr__(self, "_done_flag", 0)
         object.__setattr__(self, "_to", None)
-        object.__setattr__(self, "_starting", True)
+        object.__setattr__(self, "_starting", True)     # until the end of this call (see _evaluate)
+        super()._begin()
+        job = self._job
+        to = self.__dict__.get("_to")
+        if job is not None and self._done_flag and isinstance(to, AxisT):
+            ext = to.ctl.extension
+            if isinstance(ext, TechnologyDevice):
+                ext.watch_done_flag(self, self._cmd_seq, job, self._done_flag, self._completed)
+
+    def _evaluate(self) -> None:
         try:
-            super()._begin()
-            job = self._job
-            to = self.__dict__.get("_to")
-            if job is not None and self._done_flag and isinstance(to, AxisT):
-                ext = to.ctl.extension
-                if isinstance(ext, TechnologyDevice):
-                    ext.watch_done_flag(self, self._cmd_seq, job, self._done_flag, self._completed)
+            super()._evaluate()
         finally:
             object.__setattr__(self, "_starting", False)
 

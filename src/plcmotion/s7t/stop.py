@@ -64,7 +64,10 @@ class MC_Stop(ExecuteInstruction):  # noqa: N801 - instruction name of the manua
 
     def _update(self, execute: bool) -> None:
         job = self._job
-        if job is not None and self._final is None and job.state == JobState.DONE and execute:
+        if job is not None and self._final is None and job.extra.get("superseded"):
+            object.__setattr__(self, "_job", None)
+            self._end("CommandAborted")          # another MC_Stop took the axis over (§6.2.3)
+        elif job is not None and self._final is None and job.state == JobState.DONE and execute:
             self._set_busy(True)                 # standing still, but Done only after Execute = FALSE
             self._out(ErrorID=self._warning)
             return

@@ -178,7 +178,18 @@ class AxisT(LayeredAxis):
         if v:
             self.last_direction = 1 if v > 0 else -1
 
+    def _has_start_mode(self) -> bool:
+        """Every axis switches between position and speed control (MC_Power Mode, MC_MoveVelocity
+        PositionControl; Statusword.SpeedMode), a virtual one too: it has no control loop either way."""
+        return True
+
     # --- MC_Stop keeps the axis locked while its Execute is TRUE, also across a disable (§6.2.3) ----------
+    def _end_stop(self, t: float) -> None:
+        old = self.stop_job
+        if old is not None and not old.busy and not old.extra.get("released"):
+            old.extra["superseded"] = True       # a new MC_Stop ends the held one: CommandAborted there
+        super()._end_stop(t)
+
     def _abort_all(self, t: float, *, keep_simulated: bool = True) -> None:
         stop = self.stop_job
         if stop is not None and stop.busy:
@@ -233,9 +244,6 @@ class SpeedAxis(AxisT):
     """Speed-controlled axis (§3.2): velocity only, no position control."""
 
     technology = SPEED
-
-    def _has_start_mode(self) -> bool:
-        return True
 
     def _set_position_control(self, on: bool) -> None:
         super()._set_position_control(False)       # always speed-controlled (Statusword.SpeedMode, §7.1)

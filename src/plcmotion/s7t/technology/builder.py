@@ -101,7 +101,8 @@ def _axis_config(p: Mapping[str, Any]) -> AxisConfig:
         limits=DynamicLimits(
             max_velocity=p["TypeOfAxis.MaxVelocity.maximum"],
             start_stop_velocity=0.0,
-            velocity=None,
+            # the limit in force is the maximum: a faster command is cut to it (warning 0021, §6.9.3)
+            velocity=p["TypeOfAxis.MaxVelocity.maximum"],
             # §4.5.7.4 state-dependent model (the default): one maximum for acceleration and deceleration
             max_acceleration=max_acc,
             max_deceleration=max_acc,

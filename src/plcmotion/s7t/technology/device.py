@@ -135,8 +135,8 @@ class TechnologyDevice:
                 continue                            # the instance started a new command
             if w.reached(w.job):
                 self._done_flags[w.flag - 1] = not self._done_flags[w.flag - 1]
-            elif w.job.busy:
-                keep.append(w)
+            elif w.job.busy or getattr(w.owner, "_job", None) is w.job:
+                keep.append(w)                      # still running, or its instance still holds it (MC_Stop)
         self._watches = keep
 
     # --- the DB update (§7.11) --------------------------------------------------------------------------

@@ -90,7 +90,8 @@ def test_s7t_monitoring_software_limit_switch():
 
 def test_s7t_monitoring_following_error():
     """S7-Technology V4.1 §4.5.11.3: a blocked drive while the axis moves: the following error exceeds its
-    limit: 8016, ErrorStatus.FollowingError, enable removed; acknowledged once the drive is free."""
+    limit: 8016, ErrorStatus.FollowingError, enable removed; acknowledged once the drive is free.  The
+    warning limit is 100 % by default (plcmotion's start value): no 8017 before."""
     r = _homed()
     mv = MC_MoveVelocity()
     r.call(mv, 0.5, Execute=True, Velocity=20.0)
@@ -166,3 +167,24 @@ def test_s7t_monitoring_passive_homing_distance_ends_the_motion():
     assert r.home.CommandAborted and mv.CommandAborted
     assert r.axis.db.ErrorID == 0x801D and r.axis.db.ErrorStatus.ReferenceNotFound
     assert 3.0 <= r.mech < 5.0
+
+
+def test_s7t_monitoring_following_error_warning_limit():
+    """S7-Technology V4.1 §4.5.11.3, §7.12.1: with a warning limit of 50 % the blocked axis first reports 8017
+    (ErrorStatus.FollowingWarning, Statusword.Error) and goes on enabled; then 8016 removes the enable.  The
+    ErrorBuffer keeps both in order."""
+    r = _homed({"TypeOfAxis.NumberOfDataSets.DataSet_1.DynamicFollowing.warningLimit": 50.0})
+    mv = MC_MoveVelocity()
+    r.call(mv, 0.5, Execute=True, Velocity=20.0)
+    r.axis.drive.disturb(blocked=True)
+    while r.axis.db.ErrorID == 0:
+        r.call(mv, r.ctl.app_cycle, Execute=True, Velocity=20.0)
+        assert r.ctl.time < 5.0
+    assert _tdb(r) == (0x8017, [0x8017, 0, 0], 1 << 5)
+    assert r.axis.db.Statusword.Error and r.axis.state == "enabled" and mv.Busy
+    assert REACTIONS[0x8017] is None
+    r.call(mv, 2.0, Execute=True, Velocity=20.0)
+    assert _tdb(r) == (0x8016, [0x8017, 0x8016, 0], (1 << 5) | (1 << 6))
+    assert mv.CommandAborted and r.axis.state == "disabled"
+    r.axis.drive.disturb(blocked=False)
+    _assert_acknowledged(r)

@@ -22,7 +22,7 @@ from ...kernel.reference_approach import ApproachHoming
 from .builder import POSITIONING, SPEED, SYNCHRONIZATION, TELEGRAMS_NO_ENCODER, YES
 from .schema import AXIS
 from .tdb import AxisDB
-from .monitoring import tdb_errors
+from .monitoring import FOLLOWING_WARNING_ENTRY, tdb_errors
 from .to_errors import W_DYNAMICS_LIMITED, ErrorRecord, tdb_error
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -52,6 +52,8 @@ class AxisT(LayeredAxis):
     _sim_homing_at_once = True
     #: homing with the reference point approach of §4.5.10 (cam and zero mark, distances, corrections)
     homing_class = ApproachHoming
+    #: 8017 when the following error exceeds its warning limit (technology.monitoring)
+    reports_following_warning = True
 
     def __init__(self, ctl: "Controller", name: str, cfg: Mapping[str, Any], *, db_number: int | None = None):
         self.errors = ErrorRecord()                  # ErrorID, ErrorBuffer, ErrorStatus of the technology DB
@@ -111,6 +113,9 @@ class AxisT(LayeredAxis):
         if new:
             for entry in tdb_errors(fault):          # a limit switch gives two (homing_params, monitoring)
                 self.errors.note(*entry)
+
+    def _on_following_warning(self, t: float) -> None:
+        self.errors.note(*FOLLOWING_WARNING_ENTRY)
 
     def note_rejected(self, fault: Fault) -> None:
         """A command that had been accepted ended because it could not be carried out (§6.8 "abort

@@ -5,18 +5,19 @@ monitoring fault gives, and how the axis reacts (S7-Technology V4.1 §3.5 of the
 The manual's error tables name the error and its cause but no reaction column; the reactions below are the
 kernel's for each fault and are plcmotion's decision where the manual only says "the axis is stopped":
 
-====== ============================================ ===================== =======================================
-ErrorID message                                       ErrorStatus bit       reaction
-====== ============================================ ===================== =======================================
-8013   hardware limit switch is active               LimitSwitchActive     enable removed (the drive brakes)
-804B   limit switch active; invalid command          LimitSwitchActive     with 8013; alone: motion into the switch
-8014   software limit switch actuated                SoftwareLimitPos/Neg  the axis stops at the switch
-8015   software limit switch overshot                SoftwareLimitPos/Neg  enable removed
-8016   following error out of limits                 FollowingError        enable removed
-8018   standstill monitoring error                   StandstillFault       enable removed
-8019   positioning monitoring error                  PositioningError      enable removed
-801D   reference cam or encoder zero mark not found  ReferenceNotFound     homing ends, the axis brakes (stop)
-====== ============================================ ===================== =======================================
+======= =============================================== ==================== ===================================
+ErrorID message                                         ErrorStatus bit      reaction
+======= =============================================== ==================== ===================================
+8013    hardware limit switch is active                 LimitSwitchActive    enable removed (the drive brakes)
+804B    limit switch active; invalid command            LimitSwitchActive    comes with 8013
+8014    software limit switch actuated                  SoftwareLimitPos/Neg the axis stops at the switch
+8015    software limit switch overshot                  SoftwareLimitPos/Neg enable removed
+8016    following error out of limits                   FollowingError       enable removed
+8017    following error has exceeded the warning limit  FollowingWarning     none: the axis goes on
+8018    standstill monitoring error                     StandstillFault      enable removed
+8019    positioning monitoring error                    PositioningError     enable removed
+801D    reference cam or encoder zero mark not found    ReferenceNotFound    homing ends, the axis brakes (stop)
+======= =============================================== ==================== ===================================
 
 A hardware limit switch gives two entries at once (§4.5.7.2: "stopped with error messages 8013 and 804B").
 All other faults keep the core's mapping (``to_errors.tdb_error``).
@@ -32,6 +33,7 @@ HW_LIMIT_SWITCH = 0x8013
 SW_LIMIT_REACHED = 0x8014
 SW_LIMIT_OVERSHOT = 0x8015
 FOLLOWING_ERROR = 0x8016
+FOLLOWING_WARNING = 0x8017
 STANDSTILL = 0x8018
 POSITIONING = 0x8019
 REFERENCE_NOT_FOUND = 0x801D
@@ -47,11 +49,15 @@ _MONITORS: dict[str, tuple[tuple[int, int], ...]] = {
     F.REFERENCE_NOT_FOUND: ((REFERENCE_NOT_FOUND, B["ReferenceNotFound"]),),
 }
 
+#: 8017 is an error of the technology DB (Statusword.Error) without a reaction, noted each time the following
+#: error rises above ``DynamicFollowing.warningLimit`` % of the admissible one (§4.5.11.3, §7.12.1)
+FOLLOWING_WARNING_ENTRY = (FOLLOWING_WARNING, B["FollowingWarning"])
+
 #: the reaction of each monitoring ErrorID (see the table above); ``None``: none of its own (8014 stops at the
 #: switch by its plan, 804B comes with 8013 or refuses a motion into the switch)
 REACTIONS: dict[int, Reaction | None] = {
     HW_LIMIT_SWITCH: Reaction.REMOVE_ENABLE, LIMIT_SWITCH_COMMAND: None, SW_LIMIT_REACHED: None,
-    SW_LIMIT_OVERSHOT: Reaction.REMOVE_ENABLE, FOLLOWING_ERROR: Reaction.REMOVE_ENABLE,
+    SW_LIMIT_OVERSHOT: Reaction.REMOVE_ENABLE, FOLLOWING_ERROR: Reaction.REMOVE_ENABLE, FOLLOWING_WARNING: None,
     STANDSTILL: Reaction.REMOVE_ENABLE, POSITIONING: Reaction.REMOVE_ENABLE, REFERENCE_NOT_FOUND: Reaction.STOP,
 }
 
@@ -63,5 +69,5 @@ def tdb_errors(fault: Fault) -> list[tuple[int, int | None]]:
     return [tdb_error(fault)]
 
 
-__all__ = ["tdb_errors", "REACTIONS", "HW_LIMIT_SWITCH", "SW_LIMIT_REACHED", "SW_LIMIT_OVERSHOT", "FOLLOWING_ERROR",
+__all__ = ["tdb_errors", "REACTIONS", "FOLLOWING_WARNING", "FOLLOWING_WARNING_ENTRY", "HW_LIMIT_SWITCH", "SW_LIMIT_REACHED", "SW_LIMIT_OVERSHOT", "FOLLOWING_ERROR",
            "STANDSTILL", "POSITIONING", "REFERENCE_NOT_FOUND", "LIMIT_SWITCH_COMMAND"]

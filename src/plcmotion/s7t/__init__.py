@@ -15,6 +15,7 @@ from typing import Any, Callable
 
 from . import errors
 from .errors import describe
+from .dataset import MC_ChangeDataset
 from .homing import MC_Home
 from .move import MC_MoveAbsolute, MC_MoveAdditive, MC_MoveRelative, MC_MoveSuperImposed, MC_MoveVelocity
 from .power import MC_Power, MC_Reset
@@ -28,6 +29,6 @@ def ob65(ctl: Any, fn: Callable[[], Any] | None = None, *, name: str | None = No
     return device(ctl).ob65(fn, name=name)
 
 
-__all__ = ["MC_Home", "MC_Power", "MC_Reset", "MC_Stop", "MC_Halt", "MC_MoveAbsolute", "MC_MoveRelative", "MC_MoveAdditive",
+__all__ = ["MC_ChangeDataset", "MC_Home", "MC_Power", "MC_Reset", "MC_Stop", "MC_Halt", "MC_MoveAbsolute", "MC_MoveRelative", "MC_MoveAdditive",
            "MC_MoveSuperImposed", "MC_MoveVelocity", "NAME", "TechnologyDevice", "device", "ob65", "describe",
            "errors"]

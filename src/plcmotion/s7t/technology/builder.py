@@ -17,6 +17,7 @@ from ...kernel.axis_config import (AxisConfig, DriveSignals, DynamicDefaults, Dy
                                    HardwareLimits, Homing, HomingMethod, Modulo, PositionControl,
                                    PositioningMonitoring, PulseOutput, SoftwareLimits, StandstillMonitoring, Units)
 from ...kernel.plant_schema import plant_spec
+from .datasets import refine as refine_dataset
 from .homing_params import plant_wiring, refine
 
 #: §9.4.12 ValueDint of EnumYesNo / EnumActiveInactive / EnumDirectionType
@@ -88,7 +89,8 @@ def drive_spec(p: Mapping[str, Any]) -> DriveSpec:
 
 def axis_config(p: Mapping[str, Any]) -> AxisConfig:
     """The configuration of an S7-Technology axis with valid tag values ``p``."""
-    return refine(_axis_config(p), p)          # homing, limit switches, standstill: homing_params
+    # homing, limit switches, standstill: homing_params; the data set in force: datasets
+    return refine_dataset(refine(_axis_config(p), p), p)
 
 
 def _axis_config(p: Mapping[str, Any]) -> AxisConfig:

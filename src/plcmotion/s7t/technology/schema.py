@@ -17,6 +17,7 @@ from typing import Any, Mapping
 
 from ...kernel.plant_schema import PLANT_PARAMS
 from ...kernel.schema import E12, INT, REAL, WP, P, R, AxisSchema, Issue, Param
+from .datasets import DATASET_PARAMS, dataset_rule_issues
 from .homing_params import HOMING_PARAMS, homing_rule_issues
 from .builder import (DS, DYN, FE, GEAR, PV, TELEGRAMS_NO_ENCODER, TELEGRAMS_ONE_ENCODER, TELEGRAMS_TWO_ENCODERS,
                       axis_config, max_drive_velocity)
@@ -138,10 +139,10 @@ def rule_issues(cfg: Mapping[str, Any]) -> list[Issue]:
     lo, hi = cfg["Plant.HWLimitMinPosition"], cfg["Plant.HWLimitMaxPosition"]
     if lo is not None and hi is not None and lo >= hi:
         add("Plant.HWLimitMinPosition", "low_above_high", f"below Plant.HWLimitMaxPosition = {hi:g}")
-    return issues + homing_rule_issues(cfg)
+    return issues + homing_rule_issues(cfg) + dataset_rule_issues(cfg)
 
 
-AXIS = AxisSchema("S7-Technology axis", _PARAMS + HOMING_PARAMS + PLANT_PARAMS, rules=rule_issues, canonical=canonical,
+AXIS = AxisSchema("S7-Technology axis", _PARAMS + HOMING_PARAMS + DATASET_PARAMS + PLANT_PARAMS, rules=rule_issues, canonical=canonical,
                   build=axis_config, real_type="Real")
 
 __all__ = ["AXIS", "FAMILY_TAGS", "DIRECTIONS", "P"]

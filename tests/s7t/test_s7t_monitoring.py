@@ -188,3 +188,19 @@ def test_s7t_monitoring_following_error_warning_limit():
     assert mv.CommandAborted and r.axis.state == "disabled"
     r.axis.drive.disturb(blocked=False)
     _assert_acknowledged(r)
+
+
+@pytest.mark.parametrize("at_start, buffer", [(1, [0x0026, 0x8014, 0]), (0, [0x8014, 0, 0])])
+def test_s7t_monitoring_software_limit_warning_at_start(at_start, buffer):
+    """S7-Technology V4.1 §4.5.7.3 "monitoring of the software limit switches at start of motion": checked,
+    a positioning beyond the switch shows warning 0026 as it starts (Statusword.Error stays FALSE, the axis
+    travels on) and 8014 at the switch; unchecked only 8014."""
+    r = _homed({"swlimit": {"state": 1, "plusposition": 50.0}, "Wizard.SWLimitMonitoringAtStart": at_start})
+    ma = MC_MoveAbsolute()
+    ma(Axis=r.axis, Execute=True, Position=100.0, Velocity=50.0)
+    if at_start:
+        assert r.axis.db.ErrorID == 0x0026 and not r.axis.db.Statusword.Error and ma.Busy
+    else:
+        assert r.axis.db.ErrorID == 0
+    r.until(ma, _ended, Execute=True)
+    assert ma.CommandAborted and list(r.axis.db.ErrorBuffer) == buffer

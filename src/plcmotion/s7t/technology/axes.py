@@ -22,7 +22,7 @@ from ...kernel.reference_approach import ApproachHoming
 from .builder import POSITIONING, SPEED, SYNCHRONIZATION, TELEGRAMS_NO_ENCODER, YES
 from .schema import AXIS
 from .tdb import AxisDB
-from .monitoring import FOLLOWING_WARNING_ENTRY, tdb_errors
+from .monitoring import FOLLOWING_WARNING_ENTRY, note_sw_limit_at_start, tdb_errors
 from .to_errors import W_DYNAMICS_LIMITED, ErrorRecord, tdb_error
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -178,6 +178,7 @@ class AxisT(LayeredAxis):
             self._finish_job(job, JobState.DONE, t)
             return
         super()._begin(job, t)
+        note_sw_limit_at_start(self, job)        # warning 0026 (technology.monitoring)
         v = job.velocity if job.kind == JobKind.VELOCITY else job.target - self._state_now()[0] \
             if job.kind in (JobKind.ABSOLUTE, JobKind.RELATIVE) else 0.0
         if v:

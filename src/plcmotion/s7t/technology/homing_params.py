@@ -83,6 +83,8 @@ HOMING_PARAMS: list[Param] = [
           choices=(END_MOUNTED_SWITCH, FLEXIBLE_MOUNTED_SWITCH)),
     Param("Wizard.HWLimitSwitchMinusInput", ADDR, "", R, (), choices=("I",), doc="NC contact of the minus switch"),
     Param("Wizard.HWLimitSwitchPlusInput", ADDR, "", R, (), choices=("I",), doc="NC contact of the plus switch"),
+    Param("Wizard.SWLimitMonitoringAtStart", INT, 0, R, (), choices=(0, 1),
+          doc="§4.5.7.3 check box: warning 0026 at the start of a command beyond a software limit switch"),
     # --- standstill monitoring §4.5.11.2 (numbers 1341, 1342) ---------------------------------------------
     Param("TypeOfAxis.StandStillMonitoring.delayTimeToActivate", REAL, 0.1, WP, (10,), 0.0, E12),
     Param("TypeOfAxis.StandStillMonitoring.stillStandTolerance", REAL, 1.0, WP, (10,), 0.0, E12, lo_open=True),

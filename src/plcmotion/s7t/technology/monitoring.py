@@ -8,6 +8,7 @@ kernel's for each fault and are plcmotion's decision where the manual only says 
 ======= =============================================== ==================== ===================================
 ErrorID message                                         ErrorStatus bit      reaction
 ======= =============================================== ==================== ===================================
+0026    position limited to software limit switch       -                    warning; the axis travels on
 8013    hardware limit switch is active                 LimitSwitchActive    enable removed (the drive brakes)
 804B    limit switch active; invalid command            LimitSwitchActive    comes with 8013
 8014    software limit switch actuated                  SoftwareLimitPos/Neg the axis stops at the switch
@@ -24,8 +25,11 @@ All other faults keep the core's mapping (``to_errors.tdb_error``).
 """
 from __future__ import annotations
 
+from typing import Any
+
 from ...kernel import faults as F
 from ...kernel.faults import Fault, Reaction
+from ...kernel.jobs import Job, JobKind
 from .to_errors import ERROR_STATUS_BITS as B
 from .to_errors import tdb_error
 
@@ -34,10 +38,13 @@ SW_LIMIT_REACHED = 0x8014
 SW_LIMIT_OVERSHOT = 0x8015
 FOLLOWING_ERROR = 0x8016
 FOLLOWING_WARNING = 0x8017
+SW_LIMIT_WARNING = 0x0026
 STANDSTILL = 0x8018
 POSITIONING = 0x8019
 REFERENCE_NOT_FOUND = 0x801D
 LIMIT_SWITCH_COMMAND = 0x804B
+
+_POSITIONINGS = (JobKind.ABSOLUTE, JobKind.RELATIVE)
 
 #: kernel fault kind -> the technology DB entries (ErrorID, ErrorStatus bit), in the order they are noted
 _MONITORS: dict[str, tuple[tuple[int, int], ...]] = {
@@ -62,6 +69,19 @@ REACTIONS: dict[int, Reaction | None] = {
 }
 
 
+#: §4.5.7.3 check box "monitoring of the software limit switches at start of motion" (no expert-list name in
+#: the manual: a family tag; off unless configured)
+SW_LIMIT_AT_START = "Wizard.SWLimitMonitoringAtStart"
+
+
+def note_sw_limit_at_start(axis: Any, job: Job) -> None:
+    """§4.5.7.3: with the check box set, a position-controlled command whose target lies beyond a software
+    limit switch shows warning 0026 as it starts (the axis then travels up to the switch: 8014)."""
+    plan = axis._plan
+    if job.kind in _POSITIONINGS and plan is not None and plan.limit_side and axis.eff[SW_LIMIT_AT_START]:
+        axis.errors.note(SW_LIMIT_WARNING)
+
+
 def tdb_errors(fault: Fault) -> list[tuple[int, int | None]]:
     """The technology DB entries (ErrorID, ErrorStatus bit) of a kernel fault, in order."""
     if fault.ack and fault.kind in _MONITORS:
@@ -69,5 +89,5 @@ def tdb_errors(fault: Fault) -> list[tuple[int, int | None]]:
     return [tdb_error(fault)]
 
 
-__all__ = ["tdb_errors", "REACTIONS", "FOLLOWING_WARNING", "FOLLOWING_WARNING_ENTRY", "HW_LIMIT_SWITCH", "SW_LIMIT_REACHED", "SW_LIMIT_OVERSHOT", "FOLLOWING_ERROR",
+__all__ = ["tdb_errors", "note_sw_limit_at_start", "SW_LIMIT_AT_START", "SW_LIMIT_WARNING", "REACTIONS", "FOLLOWING_WARNING", "FOLLOWING_WARNING_ENTRY", "HW_LIMIT_SWITCH", "SW_LIMIT_REACHED", "SW_LIMIT_OVERSHOT", "FOLLOWING_ERROR",
            "STANDSTILL", "POSITIONING", "REFERENCE_NOT_FOUND", "LIMIT_SWITCH_COMMAND"]

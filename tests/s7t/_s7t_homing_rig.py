@@ -13,7 +13,7 @@ CAM_LO, CAM_HI = 100.0, 120.0
 V_APPROACH, V_ENTRY, V_REDUCED = 50.0, 20.0, 5.0
 
 REAL_AXIS = {
-    f"{ENC}.logAdressBero": 0, f"{ENC}.bitNumberBero": 0,
+    f"{ENC}.homingMode": 22, f"{ENC}.logAdressBero": 0, f"{ENC}.bitNumberBero": 0,
     "Plant.HomingSwitchPosition": CAM_LO, "Plant.HomingSwitchLength": CAM_HI - CAM_LO,
     "Plant.ZeroMarkDistance": 10.0, "Plant.ZeroMarkOffset": 5.0,
     "userdefaulthoming": {"homingapproachvelocity": V_APPROACH, "homingentryvelocity": V_ENTRY,

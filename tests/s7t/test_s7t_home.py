@@ -251,9 +251,15 @@ def test_s7t_home_in_speed_controlled_mode(mode, error_id):
 
 def test_s7t_home_configuration_rules():
     """S7-Technology V4.1 §4.12.3 (table of approach direction and homing mode): an external zero mark needs
-    an EDGE_* direction, a zero mark an APPROACH_* one; the configuration error names the tag."""
+    an EDGE_* direction, a zero mark an APPROACH_* one; homing with a reference cam needs its address, with
+    an external zero mark its input (§4.5.10.2); the configuration error names the tag."""
     from plcmotion import ConfigurationError
     with pytest.raises(ConfigurationError, match="approachDirection"):
         Rig({f"{ENC}.homingMode": 24, f"{ENC}.approachDirection": 16})
     with pytest.raises(ConfigurationError, match="passiveApproachDirection"):
-        Rig({f"{ENC}.passiveHomingMode": 24, f"{ENC}.passiveApproachDirection": 21})
+        Rig({f"{ENC}.passiveHomingMode": 24, f"{ENC}.passiveApproachDirection": 21,
+             "Drive.ExternalZeroMarkInput": "I0.1"})
+    with pytest.raises(ConfigurationError, match="logAdressBero"):
+        Rig({f"{ENC}.logAdressBero": None})                     # cam and zero mark without a cam
+    with pytest.raises(ConfigurationError, match="ExternalZeroMarkInput"):
+        Rig({f"{ENC}.homingMode": 24, f"{ENC}.approachDirection": 17})

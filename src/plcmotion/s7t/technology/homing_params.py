@@ -50,7 +50,7 @@ _ZM_DIRECTIONS = {APPROACH_NEGATIVE: -1, APPROACH_POSITIVE: 1, ACTUAL_DIRECTION_
 # fmt: off
 HOMING_PARAMS: list[Param] = [
     # --- active homing §4.5.10.2 (numbers 3061, 3064, 3070, 3071, 3063, 1120, 1122) ----------------------
-    Param(f"{ENC}.homingMode", INT, MODE_CAM_AND_ZM, WP, (10,), choices=tuple(_ACTIVE_METHOD),
+    Param(f"{ENC}.homingMode", INT, MODE_ZM, WP, (10,), choices=tuple(_ACTIVE_METHOD),
           doc="EnumAxisHomingMode: 22 cam and zero mark, 23 zero mark only, 24 external zero mark only, 88 none"),
     Param(f"{ENC}.approachDirection", INT, APPROACH_POSITIVE, WP, (10,), choices=(15, 16, 17, 18, 19, 20),
           doc="EnumAxisApproachDirection: direction at the zero mark (15/16) or edge of the external mark (17-20)"),
@@ -114,7 +114,8 @@ def passive_mode(p: Mapping[str, Any], zero_marks: bool = True) -> int:
 
 
 def homing_rule_issues(cfg: Mapping[str, Any]) -> list[Issue]:
-    """The approach direction must fit the homing mode (§4.12.3 table: X valid, F invalid, N not supported)."""
+    """The approach direction must fit the homing mode (§4.12.3 table: X valid, F invalid, N not supported);
+    a mode with a reference cam or an external zero mark needs its input."""
     issues: list[Issue] = []
     active, direction = cfg[f"{ENC}.homingMode"], cfg[f"{ENC}.approachDirection"]
     if active == MODE_CAM and direction not in EDGES:
@@ -123,7 +124,23 @@ def homing_rule_issues(cfg: Mapping[str, Any]) -> list[Issue]:
     if active in (MODE_CAM_AND_ZM, MODE_ZM) and direction in EDGES:
         issues.append(Issue(f"{ENC}.approachDirection", "rule:zero_mark_direction", direction,
                             "APPROACH_NEGATIVE (15) or APPROACH_POSITIVE (16) for homing to a zero mark"))
+    # the inputs a mode needs (a real axis; a virtual one has no homing modes, §6.2.2)
+    cam, passive_cam = cam_inputs(cfg)
+    external = cfg["Drive.ExternalZeroMarkInput"]
+    real = not cfg.get("Wizard.Virtual")
+    if real and active == MODE_CAM_AND_ZM and not cam:
+        issues.append(Issue(f"{ENC}.logAdressBero", "rule:cam_required", None,
+                            "the byte address of the reference cam for homingMode 22 (cam and zero mark)"))
+    if real and active == MODE_CAM and not external:
+        issues.append(Issue("Drive.ExternalZeroMarkInput", "rule:input_required", "",
+                            "the input of the external zero mark for homingMode 24"))
     passive = passive_mode(cfg)
+    if real and passive == CAM_AND_ZM_PASSIVE and not passive_cam:
+        issues.append(Issue(f"{ENC}.passiveLogAdressBero", "rule:cam_required", None,
+                            "the byte address of the reference cam for passiveHomingMode 22"))
+    if real and passive == CAM_PASSIVE and not external:
+        issues.append(Issue("Drive.ExternalZeroMarkInput", "rule:input_required", "",
+                            "the input of the external zero mark for passiveHomingMode 24"))
     pdir = cfg[f"{ENC}.passiveApproachDirection"]
     if passive == CAM_PASSIVE and pdir not in EDGES:
         issues.append(Issue(f"{ENC}.passiveApproachDirection", "rule:edge_required", pdir,

@@ -20,9 +20,11 @@ from ...kernel.jobs import Job, JobKind, JobState
 from ...kernel.layered_axis import LayeredAxis
 from ...kernel.policy import Activity
 from . import override
+from ...kernel.reference_approach import ApproachHoming
 from .builder import POSITIONING, SPEED, SYNCHRONIZATION, TELEGRAMS_NO_ENCODER, YES
 from .schema import AXIS
 from .tdb import AxisDB
+from .monitoring import FOLLOWING_WARNING_ENTRY, note_sw_limit_at_start, tdb_errors
 from .to_errors import W_DYNAMICS_LIMITED, W_SW_LIMIT, ErrorRecord, tdb_error
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -55,6 +57,10 @@ class AxisT(LayeredAxis):
     releasing_clamp = None
     #: MC_Stop lock, follower and the superimposed layer as in the kernel; a virtual axis homes at once
     _sim_homing_at_once = True
+    #: homing with the reference point approach of §4.5.10 (cam and zero mark, distances, corrections)
+    homing_class = ApproachHoming
+    #: 8017 when the following error exceeds its warning limit (technology.monitoring)
+    reports_following_warning = True
 
     def __init__(self, ctl: "Controller", name: str, cfg: Mapping[str, Any], *, db_number: int | None = None):
         self.errors = ErrorRecord()                  # ErrorID, ErrorBuffer, ErrorStatus of the technology DB
@@ -112,7 +118,11 @@ class AxisT(LayeredAxis):
             self._finish_job(stop, JobState.DONE, self.now)
         super().raise_alarm(fault, job)
         if new:
-            self.errors.note(*tdb_error(fault))
+            for entry in tdb_errors(fault):          # a limit switch gives two (homing_params, monitoring)
+                self.errors.note(*entry)
+
+    def _on_following_warning(self, t: float) -> None:
+        self.errors.note(*FOLLOWING_WARNING_ENTRY)
 
     def note_rejected(self, fault: Fault) -> None:
         """A command that had been accepted ended because it could not be carried out (§6.8 "abort
@@ -202,6 +212,7 @@ class AxisT(LayeredAxis):
             self._finish_job(job, JobState.DONE, t)
             return
         super()._begin(job, t)
+        note_sw_limit_at_start(self, job)        # warning 0026 (technology.monitoring)
         v = job.velocity if job.kind == JobKind.VELOCITY else job.target - self._state_now()[0] \
             if job.kind in (JobKind.ABSOLUTE, JobKind.RELATIVE) else 0.0
         if v:

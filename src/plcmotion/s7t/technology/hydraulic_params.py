@@ -105,8 +105,10 @@ def rule_issues(cfg: Mapping[str, Any]) -> list[Issue]:
     return out
 
 
-def hydraulic_drive_spec(p: Mapping[str, Any], encoder: EncoderSpec, per_revolution: float) -> DriveSpec:
-    """The valve output, cylinder and encoder of a hydraulic axis with valid tag values ``p``."""
+def hydraulic_drive_spec(p: Mapping[str, Any], encoder: EncoderSpec, per_revolution: float,
+                         wiring: Mapping[str, Any] | None = None) -> DriveSpec:
+    """The valve output, cylinder and encoder of a hydraulic axis with valid tag values ``p``; ``wiring``: the
+    simulated switches on the controller's inputs (keyword arguments of ``plant_spec``)."""
     pq = p[DRIVE_TECHNOLOGY] == HYDRAULIC_PQ
     try:
         spec = HydraulicSpec(valve=ValveType.PQ if pq else ValveType.Q,
@@ -117,8 +119,8 @@ def hydraulic_drive_spec(p: Mapping[str, Any], encoder: EncoderSpec, per_revolut
             actuator=ActuatorKind.HYDRAULIC, interface=SetpointInterface.ANALOG, telegram=3,
             length_per_revolution=per_revolution, ready_delay=p["Plant.ReadyDelay"],
             encoder=encoder, hydraulic=spec,
-            plant=plant_spec(p, hw_min=("", False), hw_max=("", False), homing_inputs=(), ready_input="",
-                             cylinder=cylinder_spec(p)))
+            plant=plant_spec(p, **(wiring or dict(hw_min=("", False), hw_max=("", False), homing_inputs=(),
+                                                        ready_input="")), cylinder=cylinder_spec(p)))
     except DriveSpecError as exc:
         raise ConfigurationError("hydraulic axis", [Issue(exc.field, "rule:hydraulic", exc.value,
                                                           exc.allowed)]) from None

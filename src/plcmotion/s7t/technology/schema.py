@@ -18,6 +18,8 @@ from typing import Any, Mapping
 from ...kernel.plant_schema import PLANT_PARAMS
 from ...kernel.schema import E12, INT, REAL, WP, R, AxisSchema, Issue, Param
 from . import hydraulic_params as H
+from .datasets import DATASET_PARAMS, dataset_rule_issues
+from .homing_params import HOMING_PARAMS, homing_rule_issues
 from .builder import (DYN, FE, GEAR, PV, TELEGRAMS_NO_ENCODER, TELEGRAMS_ONE_ENCODER, TELEGRAMS_TWO_ENCODERS,
                       axis_config, max_drive_velocity)
 
@@ -90,7 +92,8 @@ _PARAMS: list[Param] = [
     Param(f"{FE}.maxPositionTolerance", REAL, 100.0, WP, NOW, 0.0, E12),
     Param(f"{FE}.minPositionTolerance", REAL, 10.0, WP, NOW, 0.0, E12),
     Param(f"{FE}.minVelocity", REAL, 10.0, WP, NOW, 0.0, E12),
-    Param(f"{FE}.warningLimit", REAL, 90.0, WP, NOW, 0.0, 100.0, doc="[%] of the admissible following error"),
+    Param(f"{FE}.warningLimit", REAL, 100.0, WP, NOW, 0.0, 100.0,
+          doc="[%] of the admissible following error; 8017 above it (100: the error limit, no warning)"),
     Param("TypeOfAxis.PositionMonitoring.tolerance", REAL, 1.0, WP, NOW, 0.0, E12, doc="positioning window"),
     Param("TypeOfAxis.PositionMonitoring.posWinTolTime", REAL, 1.0, WP, NOW, 0.0, E12,
           doc="time [s] to reach the positioning window after the end of the setpoint interpolation"),
@@ -102,7 +105,7 @@ _PARAMS: list[Param] = [
 # fmt: on
 
 #: tags that are not the expert list's: the wizard's, the simulated drive's, the DB number
-FAMILY_TAGS = frozenset(p.path for p in _PARAMS + H.PARAMS
+FAMILY_TAGS = frozenset(p.path for p in _PARAMS + H.PARAMS + HOMING_PARAMS
                         if p.path.startswith(("Wizard.", "Drive.")) or p.path == "DBNumber")
 
 #: the manual's spellings with stray blanks, cleaned (s7-technology-parameters.csv numbers 2020, 2021)
@@ -139,10 +142,10 @@ def rule_issues(cfg: Mapping[str, Any]) -> list[Issue]:
     lo, hi = cfg["Plant.HWLimitMinPosition"], cfg["Plant.HWLimitMaxPosition"]
     if lo is not None and hi is not None and lo >= hi:
         add("Plant.HWLimitMinPosition", "low_above_high", f"below Plant.HWLimitMaxPosition = {hi:g}")
-    return issues
+    return issues + homing_rule_issues(cfg) + dataset_rule_issues(cfg)
 
 
-AXIS = AxisSchema("S7-Technology axis", _PARAMS + H.PARAMS + PLANT_PARAMS, rules=rule_issues, canonical=canonical,
-                  build=axis_config, real_type="Real")
+AXIS = AxisSchema("S7-Technology axis", _PARAMS + H.PARAMS + HOMING_PARAMS + DATASET_PARAMS + PLANT_PARAMS,
+                  rules=rule_issues, canonical=canonical, build=axis_config, real_type="Real")
 
 __all__ = ["AXIS", "FAMILY_TAGS", "DIRECTIONS", "canonical", "rule_issues"]

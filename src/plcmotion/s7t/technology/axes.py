@@ -19,6 +19,7 @@ from ...kernel.follower import Follower
 from ...kernel.jobs import Job, JobKind, JobState
 from ...kernel.layered_axis import LayeredAxis
 from .builder import POSITIONING, SPEED, SYNCHRONIZATION, TELEGRAMS_NO_ENCODER, YES
+from . import tags as T
 from .schema import AXIS
 from .tdb import AxisDB
 from .to_errors import W_DYNAMICS_LIMITED, W_SW_LIMIT, ErrorRecord, tdb_error
@@ -45,6 +46,11 @@ class AxisT(LayeredAxis):
 
     schema = AXIS
     technology = POSITIONING
+    # the technology DB's members as tag paths (traces, the command line): ``tags``
+    _dynamic = T.POSITION_TAGS
+    _dynamic_types = T.POSITION_TYPES
+    trace_tags = T.POSITION_TRACE
+    summary_tags = T.POSITION_SUMMARY
     hydraulic = False                      # a hydraulic axis (§3.1.4) sets it (its own drive model)
     #: MC_Stop lock, follower and the superimposed layer as in the kernel; a virtual axis homes at once
     _sim_homing_at_once = True
@@ -257,6 +263,10 @@ class SpeedAxis(AxisT):
     """Speed-controlled axis (§3.2): velocity only, no position control."""
 
     technology = SPEED
+    _dynamic = T.SPEED_TAGS
+    _dynamic_types = T.SPEED_TYPES
+    trace_tags = T.SPEED_TRACE
+    summary_tags = T.SPEED_SUMMARY
 
     def _set_position_control(self, on: bool) -> None:
         super()._set_position_control(False)       # always speed-controlled (Statusword.SpeedMode, §7.1)

@@ -67,13 +67,29 @@ def test_s7t_project_wrong_type_is_refused(tmp_path, key, value, hint):
 
 def test_s7t_project_duplicate_db_number_names_both_objects(tmp_path):
     """S7-Technology V4.1 §2.5.3: every technology object has its own technology DB; DB1 is the MCDevice DB
-    (§7.10)."""
+    (§7.10).  A number declared twice is found also when the first table has problems of its own."""
     problems = _problems(tmp_path, "[axes.Table]\nDBNumber = 10\n\n[axes.Feed]\nDBNumber = 10\n\n"
                                    "[axes.Spindle]\nDBNumber = 1\n")
     assert problems == [
-        "axes.Feed.DBNumber = 10: allowed: a DB number no other technology object has; DB10 is the technology "
-        "DB of Table",
+        "axes.Feed.DBNumber = 10: allowed: a value no other object of the file has; axes.Table.DBNumber = 10",
         "axes.Spindle.DBNumber = 1: allowed: a DB number no other technology object has; DB1 is the MCDevice DB"]
+    problems = _problems(tmp_path, '[axes.Table]\nDBNumber = 10\n"override.velocity" = 300.0\n\n'
+                                   "[axes.Feed]\nDBNumber = 10\n")
+    assert problems == ["axes.Table.override.velocity = 300.0: allowed: real in [0.0, 200.0]",
+                        "axes.Feed.DBNumber = 10: allowed: a value no other object of the file has; "
+                        "axes.Table.DBNumber = 10"]
+
+
+def test_s7t_device_refuses_a_db_number_in_use():
+    """S7-Technology V4.1 §2.5.3: through the Python API a taken DB number is a configuration error naming the
+    owner."""
+    from plcmotion import Controller
+    from plcmotion.kernel.errors import ConfigurationError
+
+    ctl = Controller(family="S7-Technology", servo_cycle=0.002, app_cycle=0.004)
+    ctl.add_positioning_axis("Table", {"DBNumber": 10})
+    with pytest.raises(ConfigurationError, match="DB10 is the technology DB of Table"):
+        ctl.add_positioning_axis("Feed", {"DBNumber": 10})
 
 
 def test_s7t_project_technology_must_fit_the_type(tmp_path):

@@ -22,6 +22,7 @@ from ...kernel.policy import Activity
 from . import override
 from ...kernel.reference_approach import ApproachHoming
 from .builder import POSITIONING, SPEED, SYNCHRONIZATION, TELEGRAMS_NO_ENCODER, YES
+from . import tags as T
 from .schema import AXIS
 from .tdb import AxisDB
 from .monitoring import FOLLOWING_WARNING_ENTRY, note_sw_limit_at_start, tdb_errors
@@ -49,6 +50,11 @@ class AxisT(LayeredAxis):
 
     schema = AXIS
     technology = POSITIONING
+    # the technology DB's members as tag paths (traces, the command line): ``tags``
+    _dynamic = T.POSITION_TAGS
+    _dynamic_types = T.POSITION_TYPES
+    trace_tags = T.POSITION_TRACE
+    summary_tags = T.POSITION_SUMMARY
     hydraulic = False                      # a hydraulic axis (§3.1.4) sets it (its own drive model)
     #: MC_SetTorqueLimit (EnableLimit TRUE) or MC_MoveToEndPos reduces the torque (Statusword bit 23)
     torque_limiting_command = False
@@ -288,6 +294,10 @@ class SpeedAxis(AxisT):
     """Speed-controlled axis (§3.2): velocity only, no position control."""
 
     technology = SPEED
+    _dynamic = T.SPEED_TAGS
+    _dynamic_types = T.SPEED_TYPES
+    trace_tags = T.SPEED_TRACE
+    summary_tags = T.SPEED_SUMMARY
 
     def _set_position_control(self, on: bool) -> None:
         super()._set_position_control(False)       # always speed-controlled (Statusword.SpeedMode, §7.1)

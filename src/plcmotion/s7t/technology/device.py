@@ -100,9 +100,10 @@ class TechnologyDevice:
             return n
         if requested in self._dbs:
             owner = self._objects.get(requested)
-            what = f"technology object {owner.name}" if owner is not None else "the MCDevice DB"
+            what = f"the technology DB of {owner.name}" if owner is not None else "the MCDevice DB"
             raise ConfigurationError(where, [Issue("DBNumber", "rule:duplicate", requested,
-                                                   f"a DB number not used yet; DB{requested} is {what}")])
+                                                   f"allowed: a DB number no other technology object has; "
+                                                   f"DB{requested} is {what}")])
         return int(requested)
 
     def register(self, to: Any) -> None:

@@ -44,7 +44,7 @@ _PARAMS: list[Param] = [
     Param("Wizard.AxisType", INT, 0, R, (), choices=(0, 1), doc="0 linear, 1 rotary (§3.1.3)"),
     Param("Wizard.Telegram", INT, 3, R, (), choices=TELEGRAMS,
           doc="PROFIdrive telegram of the drive (§4.2.3 Table 4-1)"),
-    Param("DBNumber", INT, None, R, (), 1, 65535, optional=True,
+    Param("DBNumber", INT, None, R, (), 1, 65535, optional=True, unique=True,
           doc="number of the technology DB (auto-assigned when absent)"),
     # --- the simulated drive ------------------------------------------------------------------------------
     Param("Drive.ReferenceSpeed", REAL, 6000.0, R, (), 0.0, E12, lo_open=True,

@@ -24,6 +24,8 @@ FLOAT_FIELDS = (
     "ss_threshold", "ss_dwell", "ss_since",
     # superimposed motion (S7-1500 MC_MoveSuperimposed): a second profile segment added to the setpoint
     "sup_t", "sup_p", "sup_v", "sup_a", "sup_j",
+    # its position part in this cycle (the positioning window is about the basic target plus it)
+    "sup_now",
 )
 BOOL_FIELDS = (
     "closed_loop",     # position loop active (servo axis, enabled, position-controlled)

@@ -47,7 +47,9 @@ def following_warning(ctl: Controller, t: float, limit: np.ndarray, bad: np.ndar
 def positioning(ctl: Controller, t: float) -> None:
     b = ctl.bank
     on = b.pm_on
-    inside = on & (np.abs(b.pm_target - b.act_p) <= b.pm_window)
+    # the target of the basic motion; a superimposed motion moves the axis by its part on top of it
+    target = b.pm_target + b.sup_now if ctl._n_sup else b.pm_target
+    inside = on & (np.abs(target - b.act_p) <= b.pm_window)
     entered = np.isnan(b.pm_in_since)
     b.pm_in_since = np.where(inside & entered, t, b.pm_in_since)
     left = on & ~inside & ~entered

@@ -176,13 +176,22 @@ def cmd_check(args: argparse.Namespace) -> int:
 
 
 def _describe(ax) -> str:
+    named = getattr(ax, "technology_name", None)     # a family's own name of the kind of axis
     kind = "synchronous axis, " if hasattr(ax, "possible_leading_values") else ""
     if ax.parameters.effective.get("VirtualAxis.Mode"):         # an S7-1500 tag: a virtual axis has no drive
         return kind + "virtual"
     interface = ax.config.drive.interface
     drive = "PTO" if ax.pto else "simulated" if ax.sim else "PROFIdrive" if interface is SetpointInterface.PROFIDRIVE \
         else "CiA 402" if interface is SetpointInterface.CANOPEN else "analog"
+    if named:
+        return named if ax.sim else f"{named}, {drive}"
     return kind + drive
+
+
+def _values(ax) -> str:
+    """The two values printed per axis after a run: the family's own (``summary_tags``) or Position and
+    ActualPosition."""
+    return ", ".join(f"{tag} {ax.tag(tag):.6g}" for tag in getattr(ax, "summary_tags", ("Position", "ActualPosition")))
 
 
 def load_program(ctl, program: str) -> None:
@@ -283,8 +292,7 @@ def cmd_run(args: argparse.Namespace) -> int:
 
     for name, ax in ctl.axes.items():
         errors = alarms(ax)
-        print(f"  {name}: {ax.state}, Position {ax.Position:.6g}, ActualPosition {ax.ActualPosition:.6g}, "
-              f"homed {ax.homed}, {errors}")
+        print(f"  {name}: {ax.state}, {_values(ax)}, homed {ax.homed}, {errors}")
     for name, to in ctl.objects.items():
         errors = alarms(to)
         print(f"  {name}: {type(to).__name__}, {errors}")

@@ -87,7 +87,9 @@ def _check_name(name: Any, seen: set[str]) -> str:
 def _signal_table(ctl: Controller, signals: Signals) -> list[tuple[str, Callable[[], Any]]]:
     """(column name, getter) for every signal, in the given order."""
     if signals is None:
-        signals = [f"{name}.{tag}" for name in ctl.axes for tag in DEFAULT_TAGS]
+        # an axis class may name its family's default set (``trace_tags``), else the S7-1200 names
+        signals = [f"{name}.{tag}" for name, axis in ctl.axes.items()
+                   for tag in getattr(axis, "trace_tags", DEFAULT_TAGS)]
         if not signals:
             raise ValueError("the controller has no axes: pass the signals to trace")
     if isinstance(signals, str):
@@ -415,9 +417,13 @@ def plot_csv(csv_path: PathLike, png_path: PathLike, title: str | None = None, *
 
 
 # --- plotting -------------------------------------------------------------------------------------------
-_AXIS_TAGS = frozenset(_Axis1200.tag_paths()) | frozenset(DYNAMIC_V7)   # V7 axes have a few more
+#: the motion panels: setpoint and actual value of position, velocity and acceleration
 _MOTION_PANELS = (("Position", "ActualPosition"), ("Velocity", "ActualVelocity"), ("Acceleration",))
 _FOLLOWING_ERROR = "StatusPositioning.FollowingError"
+#: other families' names of the same values (technology DB members of S7-Technology): plotted alike
+_SAME_AS = {"CommandPosition": "Position", "CommandVelocity": "Velocity", "CommandAcceleration": "Acceleration",
+            "FollowingError": _FOLLOWING_ERROR}
+_AXIS_TAGS = frozenset(_Axis1200.tag_paths()) | frozenset(DYNAMIC_V7) | frozenset(_SAME_AS)   # V7: a few more
 
 
 def _layout(columns: Sequence[str], rows: np.ndarray) -> tuple[dict[str, dict[str, int]], list[int], list[int]]:
@@ -430,7 +436,7 @@ def _layout(columns: Sequence[str], rows: np.ndarray) -> tuple[dict[str, dict[st
             continue
         axis, _, tag = name.partition(".")
         if tag in _AXIS_TAGS:
-            axes.setdefault(axis, {})[tag] = i
+            axes.setdefault(axis, {})[_SAME_AS.get(tag, tag)] = i
         elif _binary(rows[:, i]):
             lanes.append(i)
         else:

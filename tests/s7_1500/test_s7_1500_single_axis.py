@@ -354,3 +354,29 @@ def test_s7_1500_active_homing_of_a_virtual_following_axis_aborts_gearing_s9_3_2
     assert home.Done and gear.CommandAborted and not slave.StatusWord.Synchronous
     ctl.run(0.2)
     assert slave.Velocity == 0.0 and slave.Position == 0.0 and slave.StatusWord.Done
+
+
+def test_s7_1500_superimposed_distance_during_positioning_on_a_drive_axis():
+    """S7-1500T V5 §6.1.5.4 (MC_MoveSuperimposed) with §5.4.4 positioning monitoring: a superimposed distance
+    started while an MC_MoveAbsolute runs on a PROFIdrive axis moves the axis by that distance on top of the
+    target; the positioning monitor checks the actual value against target plus superimposed distance, so
+    the positioning ends Done at 340 without technology alarm 541 (defect: the window was checked around the
+    basic target alone and raised 541 with the axis standing at 340)."""
+    from plcmotion import Controller
+    from plcmotion.s7_1500 import MC_Home, MC_MoveAbsolute, MC_MoveSuperimposed, MC_Power
+    ctl = Controller(family="S7-1500")
+    ax = ctl.add_positioning_axis("A", {"Actor": {"Type": 1}})
+    power, home, move, sup = MC_Power(), MC_Home(), MC_MoveAbsolute(), MC_MoveSuperimposed()
+
+    @ctl.program
+    def main():
+        power(Axis=ax, Enable=True)
+        home(Axis=ax, Execute=power.Status, Mode=0, Position=0.0)
+        move(Axis=ax, Execute=home.Done, Position=300.0, Velocity=100.0)
+        sup(Axis=ax, Execute=move.Busy and ctl.time > 2.0, Distance=40.0, VelocityDiff=50.0)
+
+    ctl.run_until(lambda: move.Done or move.Error or move.CommandAborted, timeout=10.0)
+    assert move.Done and ax.ErrorDetail.Number == 0 and not ax.StatusWord.Error
+    assert abs(ax.ActualPosition - 340.0) <= ax.tag("PositioningMonitoring.Window")    # Done: inside the window
+    ctl.run(1.0)
+    assert abs(ax.ActualPosition - 340.0) < 1e-3 and ax.ErrorDetail.Number == 0

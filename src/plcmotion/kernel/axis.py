@@ -10,6 +10,7 @@ instruction hands it a job.  Behaviour follows S7-1200 Motion Control V6 (sectio
 """
 from __future__ import annotations
 
+import math
 from typing import Any, Iterator, Mapping
 
 from . import faults as F
@@ -45,6 +46,9 @@ MAX_COMMANDS_PTO, MAX_COMMANDS_SERVO = 200, 100
 class PositioningAxis(TagViews):
     """Positioning axis technology object (TO_PositioningAxis)."""
 
+    #: the axis reports a following error above ``FollowingErrorMonitoring.warning_level`` to
+    #: ``_on_following_warning`` (a family that has such a message sets it)
+    reports_following_warning = False
     #: the homing part of this axis kind (``kernel.homing.NoHoming`` for a kind without homing)
     homing_class: type = Homing
 
@@ -196,7 +200,7 @@ class PositioningAxis(TagViews):
     def sw_limits_effective(self) -> bool:
         """SW limit switches act only on a homed, non-modulo axis (§2.3; modulo: see docs/decisions)."""
         c = self.config
-        return c.software_limits.enabled and self.homed and not c.modulo.enabled
+        return c.software_limits.enabled and (self.homed or not c.homing.required) and not c.modulo.enabled
 
     def position_resolution(self) -> float:
         """Smallest position step of the axis: one pulse (PTO), one encoder increment (servo)."""
@@ -229,6 +233,11 @@ class PositioningAxis(TagViews):
         b.fe_max[i] = max(fmax, fmin)
         b.fe_vmin[i] = vmin
         b.fe_slope[i] = (fmax - fmin) / (vmax - vmin) if vmax > vmin else 0.0
+        warn = c.following_error.warning_level if self.reports_following_warning else None
+        level = math.inf if warn is None else warn / 100.0
+        if math.isinf(level) != math.isinf(b.fe_warn[i]):
+            self.ctl._n_few += -1 if math.isinf(level) else 1
+        b.fe_warn[i] = level
         b.pm_window[i] = c.positioning.window
         b.pm_dwell[i] = c.positioning.min_dwell_time
         b.ss_threshold[i] = c.standstill.velocity_threshold
@@ -398,6 +407,9 @@ class PositioningAxis(TagViews):
 
     def _on_following_error(self, t: float) -> None:
         self.raise_alarm(F.alarm(F.FOLLOWING_ERROR, "", Reaction.REMOVE_ENABLE))
+
+    def _on_following_warning(self, t: float) -> None:
+        """The following error rose above its warning level (only when ``reports_following_warning``)."""
 
     # ------------------------------------------------------------------------------------------------
     # inputs watched every servo cycle: drive ready, limit switches, homing inputs, actual value range

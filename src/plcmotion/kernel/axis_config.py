@@ -98,6 +98,25 @@ class HomingMethod:
 
 
 @dataclass(frozen=True, slots=True)
+class ReferenceApproach:
+    """The settings of a reference point approach with a velocity of its own for the travel to the home
+    position, a zero mark before or after the cam, distance monitoring and directional passive homing
+    (``kernel.reference_approach.ApproachHoming``; None in :class:`Homing` for the plain approach)."""
+
+    entry_velocity: float = 40.0        #: travel from the homing event to the home position [length unit/s]
+    zero_mark_after_cam: bool = True    #: the zero mark lies beyond the cam in the approach direction
+    cam_distance: float | None = None   #: most travel from the start to the cam / external mark (None: off)
+    zero_mark_distance: float | None = None  #: most travel from the cam (or the start) to the zero mark
+    external_rising: bool = True        #: active homing on an external mark: its rising edge homes
+    passive_direction: int = 0          #: passive homing only while moving +1 / -1; 0 either direction
+    passive_rising: bool = True         #: passive homing on an external mark: its rising edge homes
+    #: when corrections of the superimposed coordinate system go over to the basic one:
+    #: "standstill" (also as "merge"), "merge" (a basic motion takes over, following mode, restart), "reset"
+    #: (following mode, restart)
+    transfer_superimposed: str = "standstill"
+
+
+@dataclass(frozen=True, slots=True)
 class Homing:
     approach_positive: bool = True      #: approach (and homing) direction is positive
     approach_velocity: float = 200.0    #: velocity of the switch search [length unit/s]
@@ -105,6 +124,10 @@ class Homing:
     auto_reversal: bool = False         #: reverse at a hardware limit switch during the search
     active: HomingMethod = HomingMethod()
     passive: HomingMethod = HomingMethod()
+    approach: ReferenceApproach | None = None   #: settings of ``ApproachHoming`` (other homing ignores them)
+    #: absolute positioning needs a homed axis, and software limit switches act only once it is homed;
+    #: False: both regardless of the homed state
+    required: bool = True
 
 
 @dataclass(frozen=True, slots=True)
@@ -133,6 +156,10 @@ class PositioningMonitoring:
     tolerance_time: float = 1.0         #: [s]
     min_dwell_time: float = 0.1         #: [s]
     window: float = 1.0                 #: [length unit]
+    #: standstill monitoring after a positioning: the actual value must stay within this distance of the
+    #: target once ``standstill_delay`` has passed since the setpoint reached it [length unit]; None: off
+    standstill_window: float | None = None
+    standstill_delay: float = 0.0       #: [s]
 
 
 @dataclass(frozen=True, slots=True)

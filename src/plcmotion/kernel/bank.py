@@ -16,19 +16,22 @@ FLOAT_FIELDS = (
     "sp_p", "sp_v", "sp_a", "sp_j", "act_p", "act_v", "cmd_v", "fe",
     # position controller
     "kv", "kpc",
-    # following error monitoring (velocity dependent limit)
-    "fe_min", "fe_max", "fe_vmin", "fe_slope",
+    # following error monitoring (velocity dependent limit; warning at fe_warn times the limit, inf: none)
+    "fe_min", "fe_max", "fe_vmin", "fe_slope", "fe_warn",
     # positioning monitoring
     "pm_target", "pm_deadline", "pm_in_since", "pm_window", "pm_dwell",
     # standstill signal
     "ss_threshold", "ss_dwell", "ss_since",
     # superimposed motion (S7-1500 MC_MoveSuperimposed): a second profile segment added to the setpoint
     "sup_t", "sup_p", "sup_v", "sup_a", "sup_j",
+    # its position part in this cycle (the positioning window is about the basic target plus it)
+    "sup_now",
 )
 BOOL_FIELDS = (
     "closed_loop",     # position loop active (servo axis, enabled, position-controlled)
     "follow_act",      # setpoint position follows the actual position (disabled or not position-controlled)
     "fe_on",           # following error monitoring active
+    "fe_warned",       # following error above its warning level (reported once per excursion)
     "pm_on",           # positioning monitoring running
     "servo",           # PROFIdrive/analog axis (not PTO, not simulated)
     "standstill",      # standstill signal
@@ -52,5 +55,6 @@ class AxisBank:
             setattr(self, name, np.append(getattr(self, name), False))
         self.n += 1
         self.next_event[i] = np.inf
+        self.fe_warn[i] = np.inf
         self.pm_in_since[i] = np.nan
         return i

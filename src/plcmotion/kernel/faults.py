@@ -49,6 +49,7 @@ DRIVE_ALARM = "drive_alarm"
 FOLLOWING_ERROR = "following_error"
 HW_LIMIT_FREE = "hw_limit_free"          # details: wrong_direction, polarity, both
 POSITIONING = "positioning"              # details: not_reached, left
+STANDSTILL = "standstill"                # standstill monitoring after a positioning: not_reached, left
 SW_LIMIT_ORDER = "sw_limit_order"
 HOMING_APPROACH_ZERO = "homing_approach_zero"
 HOMING_REFERENCING_ZERO = "homing_referencing_zero"

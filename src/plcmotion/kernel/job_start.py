@@ -31,6 +31,13 @@ ENABLED, DISABLING = "enabled", "disabling"
 _EPS_T = 1e-9
 
 
+def _homing_required(ax: Any) -> bool:
+    """Absolute positioning needs a homed axis unless its configuration says otherwise ("Homing required"
+    = No); a host without a configuration requires it."""
+    config = getattr(ax, "config", None)
+    return config is None or config.homing.required
+
+
 class JobStartHost(Protocol):
     """What starting a job needs from its axis."""
 
@@ -105,7 +112,7 @@ class JobStart:
             return blocking
         if len(ax.busy_commands) >= ax.max_commands:
             return F.reject(F.TOO_MANY_COMMANDS)
-        if job.kind == JobKind.ABSOLUTE and not ax.homed:
+        if job.kind == JobKind.ABSOLUTE and not ax.homed and _homing_required(ax):
             return F.reject(F.NOT_HOMED)
         if job.kind in (JobKind.HOME_ACTIVE, JobKind.HOME_PASSIVE) and not ax.homing.available:
             return F.reject(F.NOT_AVAILABLE, "homing")      # an axis kind without homing

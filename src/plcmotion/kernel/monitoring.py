@@ -24,15 +24,32 @@ def following_error(ctl: Controller, t: float) -> None:
     speed = np.abs(b.sp_v)
     limit = np.minimum(b.fe_max, b.fe_min + b.fe_slope * np.maximum(speed - b.fe_vmin, 0.0))
     bad = b.fe_on & (np.abs(b.fe) > limit)
+    if ctl._n_few:
+        following_warning(ctl, t, limit, bad)
     if bad.any():
         for i in np.flatnonzero(bad):
             ctl._axis_at(i)._on_following_error(t)
 
 
+def following_warning(ctl: Controller, t: float, limit: np.ndarray, bad: np.ndarray) -> None:
+    """Following error above its warning level (a share of the admissible one): reported once each time it
+    rises above it, only for axes that configure a warning (``fe_warn`` finite); not in the cycle the error
+    itself trips (it supersedes the warning, so a level of 100 % never warns)."""
+    b = ctl.bank
+    warn = b.fe_on & (np.abs(b.fe) > limit * b.fe_warn)
+    rising = warn & ~b.fe_warned & ~bad
+    b.fe_warned = warn
+    if rising.any():
+        for i in np.flatnonzero(rising):
+            ctl._axis_at(i)._on_following_warning(t)
+
+
 def positioning(ctl: Controller, t: float) -> None:
     b = ctl.bank
     on = b.pm_on
-    inside = on & (np.abs(b.pm_target - b.act_p) <= b.pm_window)
+    # the target of the basic motion; a superimposed motion moves the axis by its part on top of it
+    target = b.pm_target + b.sup_now if ctl._n_sup else b.pm_target
+    inside = on & (np.abs(target - b.act_p) <= b.pm_window)
     entered = np.isnan(b.pm_in_since)
     b.pm_in_since = np.where(inside & entered, t, b.pm_in_since)
     left = on & ~inside & ~entered

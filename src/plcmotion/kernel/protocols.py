@@ -45,6 +45,7 @@ class ServoHost(Protocol):
     _dirty_axes: set[Any]           # axes whose parameters changed while moving
     _pto_holder: dict[int, Any]     # pulse generator number -> the axis holding it
     _n_fe: int                      # axes with following error monitoring on
+    _n_few: int                     # axes that report a following error warning
     _n_pm: int                      # axes in positioning monitoring
     _n_sup: int                     # axes with a superimposed motion part
 

@@ -205,6 +205,7 @@ class Controller:
         self.mode = RUN
         self.stop_reason: str | None = None
         self._n_fe = 0                              # axes with following error monitoring on
+        self._n_few = 0                             # axes that report a following error warning
         self._n_pm = 0                              # axes in positioning monitoring
         self._n_sup = 0                             # axes with a superimposed motion part
         self._bank_time = 0.0                       # time of the setpoints in the bank arrays

@@ -39,6 +39,7 @@ class Param:
     choices: tuple | None = None
     doc: str = ""
     optional: bool = False          # None allowed (not configured)
+    unique: bool = False            # no two objects of one controller may have the same value (a DB number)
 
     def check(self, value: Any) -> tuple[str, Any] | None:
         """Return ``(reason, normalised)``: reason None when valid.

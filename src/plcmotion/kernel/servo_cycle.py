@@ -129,7 +129,8 @@ def superimpose(ctl: Controller, t: float) -> None:
     tau = t - b.sup_t
     j = b.sup_j
     a = b.sup_a
-    b.sp_p = b.sp_p + (b.sup_p + tau * (b.sup_v + tau * (0.5 * a + tau * (j * _SIXTH))))
+    b.sup_now = b.sup_p + tau * (b.sup_v + tau * (0.5 * a + tau * (j * _SIXTH)))
+    b.sp_p = b.sp_p + b.sup_now
     b.sp_v = b.sp_v + (b.sup_v + tau * (a + (0.5 * tau) * j))
     b.sp_a = b.sp_a + (a + tau * j)
 

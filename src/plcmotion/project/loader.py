@@ -338,8 +338,10 @@ class _Loader:
         except KeyError as exc:
             reason = str(exc.args[0])
             if "did you mean" not in reason:
-                reason += "; allowed: a status or configuration tag such as Position, ActualVelocity, " \
-                          "StatusBits.Enable (PositioningAxis.tag_paths() lists them)"
+                own = getattr(axis, "trace_tags", None)       # a family's own tag names, e.g. its DB members
+                such = ", ".join(own[:3]) + f" ({type(axis).__name__}.tag_paths() lists them)" if own else \
+                    "Position, ActualVelocity, StatusBits.Enable (PositioningAxis.tag_paths() lists them)"
+                reason += f"; allowed: a status or configuration tag such as {such}"
             self.note(f"{key} = {toml_value(signal)}: {reason}")
             return False
         return True

@@ -134,6 +134,7 @@ def load_axes(loader: "_Loader", ctl: "Controller", section: Any) -> list[str]:
     if not isinstance(section, dict):
         loader.bad("axes", section, "one table [axes.<name>] per axis")
         return []
+    taken: dict[tuple[str, Any], str] = {}     # (tag, value) of a unique tag -> the key path that set it first
     for name, table in section.items():
         key = f"axes.{_key(name)}"
         valid_name = bool(_NAME.match(name))
@@ -143,7 +144,7 @@ def load_axes(loader: "_Loader", ctl: "Controller", section: Any) -> list[str]:
         if not isinstance(table, dict):
             loader.bad(key, table, f"a table of axis tags, e.g. [{key}] with \"Actor.Type\" = 2")
             continue
-        _axis(loader, ctl, name, key, table, create=valid_name)
+        _axis(loader, ctl, name, key, table, create=valid_name, taken=taken)
     names = list(section)
     for name, table in section.items():
         raw = table.get("leading_values", []) if isinstance(table, dict) else []
@@ -174,7 +175,8 @@ def _leading_values(loader: "_Loader", key: str, value: Any) -> list[tuple[str, 
     return out
 
 
-def _axis(loader: "_Loader", ctl: "Controller", name: str, key: str, table: dict[str, Any], *, create: bool) -> None:
+def _axis(loader: "_Loader", ctl: "Controller", name: str, key: str, table: dict[str, Any], *, create: bool,
+          taken: dict[tuple[str, Any], str]) -> None:
     values = dict(table)
     family = families.lookup(ctl.family)
     types = axis_types(family)
@@ -214,6 +216,18 @@ def _axis(loader: "_Loader", ctl: "Controller", name: str, key: str, table: dict
     _cfg, issues = schema.validate(flat)
     for issue in issues:
         loader.issue(key, issue, written)
+    bad = {issue.path for issue in issues}
+    for canon, path in written.items():
+        # a tag no two objects may share (``Param.unique``): checked across the tables, also those with problems
+        param = schema.params.get(canon)
+        value = flat[path]
+        if param is None or not param.unique or canon in bad or value is None or isinstance(value, (dict, list)):
+            continue
+        first = taken.setdefault((canon, value), f"{key}.{path}")
+        if first != f"{key}.{path}":
+            loader.note(f"{key}.{path} = {toml_value(value)}: allowed: a value no other object of the file has; "
+                        f"{first} = {toml_value(value)}")
+            create = False
     if issues or not create:
         return
     try:

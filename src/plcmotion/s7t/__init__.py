@@ -15,10 +15,15 @@ from typing import Any, Callable
 
 from . import errors
 from .errors import describe
+from .drive_functions import MC_SetCharacteristic, MC_SetTorqueLimit
+from .end_pos import MC_MoveToEndPos
+from .dataset import MC_ChangeDataset
+from .homing import MC_Home
 from .move import MC_MoveAbsolute, MC_MoveAdditive, MC_MoveRelative, MC_MoveSuperImposed, MC_MoveVelocity
 from .power import MC_Power, MC_Reset
 from .stop import MC_Halt, MC_Stop
 from .technology import NAME, TechnologyDevice, device
+from .technology.cam_disk import CamDisk, add_cam_disk
 
 
 def ob65(ctl: Any, fn: Callable[[], Any] | None = None, *, name: str | None = None):
@@ -27,6 +32,8 @@ def ob65(ctl: Any, fn: Callable[[], Any] | None = None, *, name: str | None = No
     return device(ctl).ob65(fn, name=name)
 
 
-__all__ = ["MC_Power", "MC_Reset", "MC_Stop", "MC_Halt", "MC_MoveAbsolute", "MC_MoveRelative", "MC_MoveAdditive",
-           "MC_MoveSuperImposed", "MC_MoveVelocity", "NAME", "TechnologyDevice", "device", "ob65", "describe",
+__all__ = ["MC_Power", "MC_Reset", "MC_Home", "MC_Stop", "MC_Halt", "MC_MoveAbsolute", "MC_MoveRelative",
+           "MC_MoveAdditive", "MC_MoveSuperImposed", "MC_MoveVelocity", "MC_MoveToEndPos", "MC_SetTorqueLimit",
+           "MC_SetCharacteristic", "MC_ChangeDataset", "CamDisk", "add_cam_disk", "NAME", "TechnologyDevice", "device",
+           "ob65", "describe",
            "errors"]

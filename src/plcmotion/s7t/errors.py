@@ -26,6 +26,7 @@ CANNOT_ACKNOWLEDGE = 0x8047          # MC_Reset: the error cannot be acknowledge
 CANNOT_RESTART = 0x8048              # MC_Reset: restart not possible (axis not disabled)
 OUTPUT_RATE_TOO_HIGH = 0x804C        # command output rate too high
 INVALID_AXIS_TYPE = 0x804D           # invalid axis type
+MISSING_CONNECTION = 0x804A         # required object connection missing (MC_SetCharacteristic)
 ONE_INSTANCE_ONLY = 0x804E           # MC_Power: only one active instance per axis
 OTHER_AXIS_ENABLED = 0x804F          # MC_Power: disabling an axis this instance did not enable
 TECHNOLOGY_NOT_READY = 0x8050        # technology not ready (CPU not in RUN / restart OB)
@@ -49,6 +50,7 @@ TEXTS = {
     CANNOT_RESTART: "unable to restart",
     OUTPUT_RATE_TOO_HIGH: "command output rate too high",
     INVALID_AXIS_TYPE: "invalid axis type",
+    MISSING_CONNECTION: "required object connection is missing",
     ONE_INSTANCE_ONLY: "only one instance allowed per axis",
     OTHER_AXIS_ENABLED: "the axis was not enabled by this instance",
     TECHNOLOGY_NOT_READY: "technology not ready",

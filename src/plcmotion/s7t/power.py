@@ -77,7 +77,7 @@ class MC_Power(Instruction):  # noqa: N801 - instruction name of the manual
             object.__setattr__(self, "_edge_error", self._take_edge(axis))
         one_call = 0
         if fall:
-            one_call = self._take_stop(axis)
+            one_call = self._take_stop(axis, fall=True)
         if enable and self._edge_error:
             self._show(axis, enable, self._edge_error)            # a new rising edge tries again
             return
@@ -105,13 +105,15 @@ class MC_Power(Instruction):  # noqa: N801 - instruction name of the manual
             axis.following_mode = mode == FOLLOWING_ENABLED
         return 0
 
-    def _take_stop(self, axis: AxisT) -> int:
+    def _take_stop(self, axis: AxisT, fall: bool = False) -> int:
         try:
             stop = integer("StopMode", self.StopMode, stop_modes(axis))
             q = real("QOutputValue", self.QOutputValue)
             if not -100.0 <= q <= 100.0:
                 raise InstructionError(E.ILLEGAL_PARAMETER)
         except InstructionError as exc:
+            if fall and exc.error_id == E.ILLEGAL_PARAMETER and self.StopMode in stop_modes(axis):
+                return E.INVALID_REAL      # an invalid QOutputValue at the falling edge: 808B, one call
             return exc.error_id
         object.__setattr__(self, "_stop", stop)
         if axis.power_owner is None or axis.power_owner is self:
@@ -141,7 +143,10 @@ class MC_Power(Instruction):  # noqa: N801 - instruction name of the manual
         mode = self._mode
         start = 1 if mode == POSITION_CONTROLLED or (
             mode == DEFAULT_MODE and axis.positioning and axis.position_controlled) else 0
-        fault = axis.power(self, enable, start, self._stop)
+        stop = self._stop
+        if not enable and getattr(axis, "torque_limiting_command", False) and not axis.virtual:
+            stop = RAMP_STOP       # torque reduction active: StopMode ignored, the drive's own ramp (§6.2.1)
+        fault = axis.power(self, enable, start, stop)
         if fault is None:
             return 0
         code = E.fb_error(fault)

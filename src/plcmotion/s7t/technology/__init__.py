@@ -15,9 +15,10 @@ from ...kernel import family as K
 from ...kernel.errors import ConfigurationError
 from ...kernel.jobs import JobKind
 from ...kernel.schema import Issue
-from .axes import AXIS_CLASSES, AxisT, PositioningAxisT, SpeedAxis, SynchronizationAxis
+from .axes import AxisT, PositioningAxisT, SpeedAxis, SynchronizationAxis
 from .builder import POSITIONING, SPEED, SYNCHRONIZATION
 from .device import TechnologyDevice
+from .hydraulic_axis import axis_class
 from .override import POLICY
 from .schema import AXIS
 from .to_errors import describe_fault
@@ -50,11 +51,15 @@ def _new_axis(ctl: Any, name: str, flat: Mapping[str, Any], where: str, technolo
         technology = technologies[-1]
     elif technology not in technologies:
         names = {SPEED: "0 (speed-controlled)", POSITIONING: "1 (positioning)", SYNCHRONIZATION: "2 (synchronization)"}
+        kind = "synchronous" if technologies == (SYNCHRONIZATION,) else "positioning"
+        other = ('a synchronization axis is type = "synchronous"' if kind == "positioning" else
+                 'a speed-controlled or positioning axis is type = "positioning"')
         raise ConfigurationError(where, [Issue("Wizard.Technology", "selection", technology,
-                                               "allowed here: " + " or ".join(names[t] for t in technologies))])
+                                               "allowed: " + " or ".join(names[t] for t in technologies)
+                                               + f' for type = "{kind}"; {other}')])
     ext = device(ctl)
     number = ext.db_number(cfg["DBNumber"], where)
-    axis = ctl.new_axis(AXIS_CLASSES[technology], name, {**flat, "Wizard.Technology": technology}, where,
+    axis = ctl.new_axis(axis_class(technology, cfg), name, {**flat, "Wizard.Technology": technology}, where,
                         db_number=number, **kw)
     ext.register(axis)
     return axis

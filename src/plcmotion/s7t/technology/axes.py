@@ -20,9 +20,12 @@ from ...kernel.jobs import Job, JobKind, JobState
 from ...kernel.layered_axis import LayeredAxis
 from ...kernel.policy import Activity
 from . import override
+from ...kernel.reference_approach import ApproachHoming
 from .builder import POSITIONING, SPEED, SYNCHRONIZATION, TELEGRAMS_NO_ENCODER, YES
+from . import tags as T
 from .schema import AXIS
 from .tdb import AxisDB
+from .monitoring import FOLLOWING_WARNING_ENTRY, note_sw_limit_at_start, tdb_errors
 from .to_errors import W_DYNAMICS_LIMITED, W_SW_LIMIT, ErrorRecord, tdb_error
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -47,9 +50,23 @@ class AxisT(LayeredAxis):
 
     schema = AXIS
     technology = POSITIONING
+    # the technology DB's members as tag paths (traces, the command line): ``tags``
+    _dynamic = T.POSITION_TAGS
+    _dynamic_types = T.POSITION_TYPES
+    trace_tags = T.POSITION_TRACE
+    summary_tags = T.POSITION_SUMMARY
     hydraulic = False                      # a hydraulic axis (§3.1.4) sets it (its own drive model)
+    #: MC_SetTorqueLimit (EnableLimit TRUE) or MC_MoveToEndPos reduces the torque (Statusword bit 23)
+    torque_limiting_command = False
+    #: the override policy's activity of an MC_MoveToEndPos that was released but whose clamping window
+    #: the setpoint has not left yet (``s7t.end_pos``): commands toward the stop stay refused (16#8056)
+    releasing_clamp = None
     #: MC_Stop lock, follower and the superimposed layer as in the kernel; a virtual axis homes at once
     _sim_homing_at_once = True
+    #: homing with the reference point approach of §4.5.10 (cam and zero mark, distances, corrections)
+    homing_class = ApproachHoming
+    #: 8017 when the following error exceeds its warning limit (technology.monitoring)
+    reports_following_warning = True
 
     def __init__(self, ctl: "Controller", name: str, cfg: Mapping[str, Any], *, db_number: int | None = None):
         self.errors = ErrorRecord()                  # ErrorID, ErrorBuffer, ErrorStatus of the technology DB
@@ -107,7 +124,11 @@ class AxisT(LayeredAxis):
             self._finish_job(stop, JobState.DONE, self.now)
         super().raise_alarm(fault, job)
         if new:
-            self.errors.note(*tdb_error(fault))
+            for entry in tdb_errors(fault):          # a limit switch gives two (homing_params, monitoring)
+                self.errors.note(*entry)
+
+    def _on_following_warning(self, t: float) -> None:
+        self.errors.note(*FOLLOWING_WARNING_ENTRY)
 
     def note_rejected(self, fault: Fault) -> None:
         """A command that had been accepted ended because it could not be carried out (§6.8 "abort
@@ -161,6 +182,8 @@ class AxisT(LayeredAxis):
         yield from super()._activities()
         if self.restart_until is not None and self.restarting:
             yield Activity(override.RESTART, None, _restart_goes_on)
+        if self.releasing_clamp is not None:
+            yield self.releasing_clamp          # MC_MoveToEndPos released, the setpoint still in its window
 
     def begin_restart(self) -> Fault | None:
         """Restart the technology object with its start values; it is busy for ``RESTART_TIME``."""
@@ -195,6 +218,7 @@ class AxisT(LayeredAxis):
             self._finish_job(job, JobState.DONE, t)
             return
         super()._begin(job, t)
+        note_sw_limit_at_start(self, job)        # warning 0026 (technology.monitoring)
         v = job.velocity if job.kind == JobKind.VELOCITY else job.target - self._state_now()[0] \
             if job.kind in (JobKind.ABSOLUTE, JobKind.RELATIVE) else 0.0
         if v:
@@ -270,6 +294,10 @@ class SpeedAxis(AxisT):
     """Speed-controlled axis (§3.2): velocity only, no position control."""
 
     technology = SPEED
+    _dynamic = T.SPEED_TAGS
+    _dynamic_types = T.SPEED_TYPES
+    trace_tags = T.SPEED_TRACE
+    summary_tags = T.SPEED_SUMMARY
 
     def _set_position_control(self, on: bool) -> None:
         super()._set_position_control(False)       # always speed-controlled (Statusword.SpeedMode, §7.1)

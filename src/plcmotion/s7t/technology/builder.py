@@ -17,6 +17,9 @@ from ...kernel.axis_config import (AxisConfig, DriveSignals, DynamicDefaults, Dy
                                    HardwareLimits, Homing, HomingMethod, Modulo, PositionControl,
                                    PositioningMonitoring, PulseOutput, SoftwareLimits, StandstillMonitoring, Units)
 from ...kernel.plant_schema import plant_spec
+from .hydraulic_params import hydraulic, hydraulic_drive_spec
+from .datasets import refine as refine_dataset
+from .homing_params import plant_wiring, refine
 
 #: §9.4.12 ValueDint of EnumYesNo / EnumActiveInactive / EnumDirectionType
 YES, ACTIVE, POSITIVE = 1, 1, 5
@@ -69,6 +72,8 @@ def drive_spec(p: Mapping[str, Any]) -> DriveSpec:
     telegram = p["Wizard.Telegram"]
     encoder = EncoderSpec(kind=EncoderKind.INCREMENTAL, rotary=True, distance_per_revolution=per_revolution,
                           interface=EncoderInterface.DRIVE_TELEGRAM)
+    if hydraulic(p):
+        return hydraulic_drive_spec(p, encoder, per_revolution, plant_wiring(p))   # a valve and a cylinder (§3.1.4, §4.6)
     return DriveSpec(
         actuator=ActuatorKind.IDEAL if ideal else ActuatorKind.SPEED_SERVO,
         interface=SetpointInterface.NONE if ideal else SetpointInterface.PROFIDRIVE,
@@ -81,12 +86,17 @@ def drive_spec(p: Mapping[str, Any]) -> DriveSpec:
         ready_delay=p["Plant.ReadyDelay"],
         off_ramp_time=p["Plant.OffRampTime"],
         encoder=encoder,
-        plant=plant_spec(p, hw_min=("", False), hw_max=("", False), homing_inputs=(), ready_input=""),
+        plant=plant_spec(p, **plant_wiring(p)),
     )
 
 
 def axis_config(p: Mapping[str, Any]) -> AxisConfig:
     """The configuration of an S7-Technology axis with valid tag values ``p``."""
+    # homing, limit switches, standstill: homing_params; the data set in force: datasets
+    return refine_dataset(refine(_axis_config(p), p), p)
+
+
+def _axis_config(p: Mapping[str, Any]) -> AxisConfig:
     jerk = p[f"{DYN}.positiveaccelstartjerk"]
     max_acc = p["TypeOfAxis.MaxAcceleration.maximum"]
     home_method = HomingMethod(mode=0, home_offset=0.0)

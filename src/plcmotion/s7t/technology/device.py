@@ -100,9 +100,10 @@ class TechnologyDevice:
             return n
         if requested in self._dbs:
             owner = self._objects.get(requested)
-            what = f"technology object {owner.name}" if owner is not None else "the MCDevice DB"
+            what = f"the technology DB of {owner.name}" if owner is not None else "the MCDevice DB"
             raise ConfigurationError(where, [Issue("DBNumber", "rule:duplicate", requested,
-                                                   f"a DB number not used yet; DB{requested} is {what}")])
+                                                   f"allowed: a DB number no other technology object has; "
+                                                   f"DB{requested} is {what}")])
         return int(requested)
 
     def register(self, to: Any) -> None:
@@ -111,6 +112,11 @@ class TechnologyDevice:
         self._objects[to.db_number] = to
         self._axis_dbs.append(to.db)
         self._rows = np.array([db._axis.index for db in self._axis_dbs], dtype=np.intp)
+
+    def register_object(self, to: Any) -> None:
+        """Make the technology DB ``to.db`` of a technology object that is no axis known under its number."""
+        self._dbs[to.db_number] = to.db
+        self._objects[to.db_number] = to
 
     def db(self, number: Any) -> TechnologyDB | None:
         """The technology DB with ``number`` (None: no technology DB)."""

@@ -17,6 +17,9 @@ from typing import Any, Mapping
 
 from ...kernel.plant_schema import PLANT_PARAMS
 from ...kernel.schema import E12, INT, REAL, WP, R, AxisSchema, Issue, Param
+from . import hydraulic_params as H
+from .datasets import DATASET_PARAMS, dataset_rule_issues
+from .homing_params import HOMING_PARAMS, homing_rule_issues
 from .builder import (DYN, FE, GEAR, PV, TELEGRAMS_NO_ENCODER, TELEGRAMS_ONE_ENCODER, TELEGRAMS_TWO_ENCODERS,
                       axis_config, max_drive_velocity)
 
@@ -41,7 +44,7 @@ _PARAMS: list[Param] = [
     Param("Wizard.AxisType", INT, 0, R, (), choices=(0, 1), doc="0 linear, 1 rotary (§3.1.3)"),
     Param("Wizard.Telegram", INT, 3, R, (), choices=TELEGRAMS,
           doc="PROFIdrive telegram of the drive (§4.2.3 Table 4-1)"),
-    Param("DBNumber", INT, None, R, (), 1, 65535, optional=True,
+    Param("DBNumber", INT, None, R, (), 1, 65535, optional=True, unique=True,
           doc="number of the technology DB (auto-assigned when absent)"),
     # --- the simulated drive ------------------------------------------------------------------------------
     Param("Drive.ReferenceSpeed", REAL, 6000.0, R, (), 0.0, E12, lo_open=True,
@@ -89,7 +92,8 @@ _PARAMS: list[Param] = [
     Param(f"{FE}.maxPositionTolerance", REAL, 100.0, WP, NOW, 0.0, E12),
     Param(f"{FE}.minPositionTolerance", REAL, 10.0, WP, NOW, 0.0, E12),
     Param(f"{FE}.minVelocity", REAL, 10.0, WP, NOW, 0.0, E12),
-    Param(f"{FE}.warningLimit", REAL, 90.0, WP, NOW, 0.0, 100.0, doc="[%] of the admissible following error"),
+    Param(f"{FE}.warningLimit", REAL, 100.0, WP, NOW, 0.0, 100.0,
+          doc="[%] of the admissible following error; 8017 above it (100: the error limit, no warning)"),
     Param("TypeOfAxis.PositionMonitoring.tolerance", REAL, 1.0, WP, NOW, 0.0, E12, doc="positioning window"),
     Param("TypeOfAxis.PositionMonitoring.posWinTolTime", REAL, 1.0, WP, NOW, 0.0, E12,
           doc="time [s] to reach the positioning window after the end of the setpoint interpolation"),
@@ -101,7 +105,8 @@ _PARAMS: list[Param] = [
 # fmt: on
 
 #: tags that are not the expert list's: the wizard's, the simulated drive's, the DB number
-FAMILY_TAGS = frozenset(p.path for p in _PARAMS if p.path.startswith(("Wizard.", "Drive.")) or p.path == "DBNumber")
+FAMILY_TAGS = frozenset(p.path for p in _PARAMS + H.PARAMS + HOMING_PARAMS
+                        if p.path.startswith(("Wizard.", "Drive.")) or p.path == "DBNumber")
 
 #: the manual's spellings with stray blanks, cleaned (s7-technology-parameters.csv numbers 2020, 2021)
 _ALIASES = {"TypeOfAxis.NumberOfData Sets.DataSet_1.Gear denFactor": f"{GEAR}.denFactor",
@@ -121,6 +126,7 @@ def rule_issues(cfg: Mapping[str, Any]) -> list[Issue]:
     if cfg["swlimit.minusposition"] >= cfg["swlimit.plusposition"]:
         add("swlimit.minusposition", "low_above_high",
             f"below swlimit.plusposition = {cfg['swlimit.plusposition']:g} (§4.5.7.3, ErrorID 8085)")
+    issues += H.rule_issues(cfg)
     if cfg["Wizard.Virtual"] == 0:
         if cfg["Wizard.Technology"] != 0 and cfg["Wizard.Telegram"] in TELEGRAMS_NO_ENCODER:
             add("Wizard.Telegram", "no_encoder", "a telegram with an encoder (3, 4, 5, 6, 102, 103, 105, 106) for a "
@@ -128,7 +134,7 @@ def rule_issues(cfg: Mapping[str, Any]) -> list[Issue]:
         if cfg["Drive.MaxSpeed"] > 2.0 * cfg["Drive.ReferenceSpeed"] * (1 + 1e-12):
             add("Drive.MaxSpeed", "above_reference", f"at most 2 x Drive.ReferenceSpeed = {2 * cfg['Drive.ReferenceSpeed']:g}")
         vmax = max_drive_velocity(cfg)
-        if cfg["TypeOfAxis.MaxVelocity.maximum"] > vmax * (1 + 1e-9):
+        if not H.hydraulic(cfg) and cfg["TypeOfAxis.MaxVelocity.maximum"] > vmax * (1 + 1e-9):
             add("TypeOfAxis.MaxVelocity.maximum", "unreachable",
                 f"at most {vmax:g} (Drive.MaxSpeed {cfg['Drive.MaxSpeed']:g} 1/min over the mechanics)")
     if cfg["Wizard.Technology"] == 0 and cfg["Modulo.state"] == 1:
@@ -136,10 +142,10 @@ def rule_issues(cfg: Mapping[str, Any]) -> list[Issue]:
     lo, hi = cfg["Plant.HWLimitMinPosition"], cfg["Plant.HWLimitMaxPosition"]
     if lo is not None and hi is not None and lo >= hi:
         add("Plant.HWLimitMinPosition", "low_above_high", f"below Plant.HWLimitMaxPosition = {hi:g}")
-    return issues
+    return issues + homing_rule_issues(cfg) + dataset_rule_issues(cfg)
 
 
-AXIS = AxisSchema("S7-Technology axis", _PARAMS + PLANT_PARAMS, rules=rule_issues, canonical=canonical,
-                  build=axis_config, real_type="Real")
+AXIS = AxisSchema("S7-Technology axis", _PARAMS + H.PARAMS + HOMING_PARAMS + DATASET_PARAMS + PLANT_PARAMS,
+                  rules=rule_issues, canonical=canonical, build=axis_config, real_type="Real")
 
 __all__ = ["AXIS", "FAMILY_TAGS", "DIRECTIONS", "canonical", "rule_issues"]

@@ -197,8 +197,8 @@ def statusword(ax: "AxisT", v: float, a: float, still: bool) -> int:
         w |= 1 << 7                                             # Standstill
     if kind in _POSITIONING:
         w |= 1 << 8
-    elif kind == JobKind.VELOCITY:
-        w |= 1 << 9
+    elif kind == JobKind.VELOCITY and not job.extra.get("clamped"):
+        w |= 1 << 9                       # SpeedCommand (MC_MoveToEndPos: until the end stop is detected)
     elif kind in _HOMING:
         w |= 1 << 11
     if synchr:
@@ -222,6 +222,10 @@ def statusword(ax: "AxisT", v: float, a: float, still: bool) -> int:
         w |= 1 << 19                                            # EncoderValid
     if not ax.positioning or not ax.position_controlled:
         w |= 1 << 20                                            # SpeedMode
+    if ax.torque_limiting_command:
+        w |= 1 << 23                                            # TorqueLimitingCommand
+        if ax.drive.torque_limit_active:
+            w |= 1 << 21                                        # TorqueLimiting: the drive is at the limit
     hw = ax.hw_approached
     if hw.get("min"):
         w |= 1 << 26

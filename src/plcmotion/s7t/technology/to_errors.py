@@ -27,6 +27,7 @@ SW_LIMIT_OVERSHOT = 0x8015
 FOLLOWING_ERROR = 0x8016
 STANDSTILL = 0x8018
 POSITIONING = 0x8019
+CLAMPING = 0x801B
 DYNAMIC_LIMITS = 0x801C
 REFERENCE_NOT_FOUND = 0x801D
 ACTUAL_VALUE = 0x8031
@@ -41,6 +42,9 @@ END_LIMITS = 0x8085
 W_RESTART = 0x0020
 W_DYNAMICS_LIMITED = 0x0021
 W_SW_LIMIT = 0x0026
+
+#: the kernel fault kind of the clamping monitoring (MC_MoveToEndPos, §4.5.7.5): 16#801B
+CLAMPING_FAULT = "clamping"
 
 # --- ErrorStatus bits (§7.1) ----------------------------------------------------------------------------
 ERROR_STATUS_BITS = {
@@ -70,6 +74,7 @@ _ALARMS: dict[str, tuple[int, int | None]] = {
     F.DIRECTION: (DYNAMIC_LIMITS, _B["DynamicError"]),
     F.SYNC_MASTER: (LEADING_AXIS, _B["SynchronOpError"]),
     F.LV_INVALID: (LEADING_AXIS, _B["SynchronOpError"]),
+    CLAMPING_FAULT: (CLAMPING, _B["ClampingError"]),
 }
 
 #: a command that was accepted but could not be carried out (e.g. an appended one whose turn came while the

@@ -1,0 +1,72 @@
+"""FB 409 MC_ChangeDataset: switch the data set of an axis while it runs (S7-Technology V4.1 §6.2.5, §3.1.10).
+
+``Dataset`` (1..numberOfDataSets, else 16#8043) is put in force at the moment
+``TypeOfAxis.NumberOfDataSets.changeMode`` names: NEVER - refused (16#8045); IN_POSITION - once the running
+motion has reached its positioning window, on an axis enabled position-controlled, at once after the axis is
+enabled again, never while it is synchronized; IN_STANDSTILL - once the axis stands still; IMMEDIATELY - now.
+``Done`` follows at that moment, at once when ``Dataset`` is already in force.  A virtual axis has one data
+set (16#804D).  ``SyncEncoder`` is taken (BOOL); all data sets use encoder 1 here, so it has nothing to do.
+"""
+from __future__ import annotations
+
+from ..kernel.jobs import Job, JobKind, JobState
+from . import errors as E
+from .base import ALL_AXES, ExecuteInstruction, InstructionError, as_bool, integer
+from .technology import datasets as D
+from .technology.axes import AxisT
+
+
+def due(axis: AxisT, mode: int) -> bool:
+    """Has the moment of ``changeMode`` come for ``axis``?"""
+    if mode == D.IMMEDIATELY:
+        return True
+    if mode == D.IN_STANDSTILL:
+        return bool(axis.ctl.bank.standstill[axis.index])
+    # IN_POSITION: no motion left and the positioning window reached; a disabled axis waits for its enable
+    if axis.state != "enabled" or not axis.position_controlled:
+        return False
+    follower = axis.follower
+    if follower is not None and follower.coupling is not None:
+        return False
+    job = axis.job
+    moving = job is not None and job.busy or axis.superimposed_active or axis.queue_waiting()
+    return not moving and axis.positioning_monitor.job is None
+
+
+class MC_ChangeDataset(ExecuteInstruction):  # noqa: N801 - instruction name of the manual
+    """FB 409 (see the module docstring)."""
+
+    INPUTS = {"Axis": 0, "Execute": False, "SyncEncoder": False, "Dataset": 1, "DoneFlag": 0}
+    TECHNOLOGIES = ALL_AXES
+
+    def _start(self, axis: AxisT) -> Job:
+        as_bool(self, "SyncEncoder", self.SyncEncoder)
+        eff = axis.eff
+        wanted = integer("Dataset", self.Dataset, range(1, eff[f"{D.DATA_SETS}.numberOfDataSets"] + 1))
+        self._flag()
+        if axis.virtual:
+            raise InstructionError(E.INVALID_AXIS_TYPE)
+        mode = eff[f"{D.DATA_SETS}.changeMode"]
+        if mode == D.NEVER or axis.restarting:
+            raise InstructionError(E.NOT_ALLOWED_IN_STATE)
+        job = Job(JobKind.RESET, mode=wanted, owner=self)   # no motion: a command of the object itself
+        job.extra.update(dataset=wanted, change_mode=mode, axis=axis)
+        self._try(job)
+        return job
+
+    def _try(self, job: Job) -> None:
+        axis = job.extra["axis"]
+        if D.active(axis.eff) == job.extra["dataset"]:
+            job.finish(JobState.DONE)                       # already in force: Done at once
+        elif due(axis, job.extra["change_mode"]):
+            D.switch(axis, job.extra["dataset"])
+            job.finish(JobState.DONE)
+
+    def _update(self, execute: bool) -> None:
+        job = self._job
+        if job is not None and job.busy:
+            self._try(job)
+        super()._update(execute)
+
+
+__all__ = ["MC_ChangeDataset", "due"]

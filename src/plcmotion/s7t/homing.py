@@ -1,0 +1,97 @@
+"""FB 403 MC_Home: home or set an axis (S7-Technology V4.1 §6.2.2, configuration §4.5.10).
+
+``Mode``: 0 active homing to the configured reference point coordinate (``userdefaulthoming.homeposition``),
+1 active homing to ``Position``, 2 passive homing to ``Position``, 3 direct homing (the position becomes
+``Position``), 4 correction of the actual value, 5 absolute encoder adjustment, 6 / 7 correction of the
+setpoint in the basic / superimposed coordinate system (each: the position becomes the position minus
+``Position``), 8 cancel a passive homing.  Modes 4, 6, 7 keep the homed state (``Statusword.HomingDone``).
+
+Which modes an axis takes (§6.2.2 note): a virtual axis 3, 4, 6, 7 (else 16#804D); an incremental encoder
+0-4, 6, 7; an absolute encoder 3-7 (a mode of the other encoder type: 16#8045, plcmotion's choice, the manual
+names no code).  Modes 0, 1, 2 need an axis enabled position-controlled (16#8040), 0 and 1 no MC_Stop
+(16#8045); 2, 3, 5 not in speed-controlled mode (16#8045); 3-7 run on a disabled axis too.  The active homing
+sequences, distance monitoring (16#801D in the technology DB) and the corrections are the kernel's
+``reference_approach.ApproachHoming``.
+"""
+from __future__ import annotations
+
+from ..kernel.jobs import Job, JobKind, JobState
+from . import errors as E
+from .base import POSITION_AXES, ExecuteInstruction, InstructionError, integer, real
+from .technology.axes import AxisT
+from .technology.homing_params import ENC, MODE_NO_REFERENCE
+
+ACTIVE, ACTIVE_POSITION, PASSIVE, DIRECT, CORRECT_ACTUAL, ABSOLUTE_ENCODER, CORRECT_BASE, CORRECT_SUPERIMPOSED, \
+    CANCEL_PASSIVE = range(9)
+
+#: §6.2.2 note: the modes each kind of axis supports
+MODES_VIRTUAL = frozenset({3, 4, 6, 7, 8})
+MODES_INCREMENTAL = frozenset({0, 1, 2, 3, 4, 6, 7, 8})
+MODES_ABSOLUTE = frozenset({3, 4, 5, 6, 7, 8})
+_CORRECTIONS = {CORRECT_ACTUAL: "actual", CORRECT_BASE: "base", CORRECT_SUPERIMPOSED: "superimposed"}
+
+
+class MC_Home(ExecuteInstruction):  # noqa: N801 - instruction name of the manual
+    """FB 403 (see the module docstring)."""
+
+    INPUTS = {"Axis": 0, "Execute": False, "Position": 0.0, "Mode": 0, "DoneFlag": 0}
+    TECHNOLOGIES = POSITION_AXES
+
+    def _start(self, axis: AxisT) -> Job:
+        position = real("Position", self.Position)
+        mode = integer("Mode", self.Mode, range(9))
+        self._flag()
+        self._check(axis, mode)
+        if mode == CANCEL_PASSIVE:
+            job = Job(JobKind.HOME_CANCEL, mode=mode, owner=self)
+            if not axis.homing.cancel_passive():
+                raise InstructionError(E.NOT_ALLOWED_IN_STATE)   # none armed, or it has homed already
+            job.finish(JobState.DONE)
+            return job
+        if mode in (ACTIVE, ACTIVE_POSITION, PASSIVE):
+            if mode == ACTIVE:
+                position = axis.eff["userdefaulthoming.homeposition"]
+            kind = JobKind.HOME_PASSIVE if mode == PASSIVE else JobKind.HOME_ACTIVE
+            job = Job(kind, position=position, mode=2 if mode == PASSIVE else 3, owner=self)
+            axis.home(job)
+            return job
+        job = Job(JobKind.HOME_DIRECT, position=position, mode=mode, owner=self)
+        if mode == DIRECT:
+            axis.homing.set_position(job)
+        elif mode == ABSOLUTE_ENCODER:
+            job.mode = 7                         # the kernel's absolute encoder adjustment to Position
+            axis.home_direct(job)
+        else:
+            # §6.2.2 notice: an axis in following mode corrects Mode 7 in the basic coordinate system
+            layer = "base" if mode == CORRECT_SUPERIMPOSED and axis.following_mode else _CORRECTIONS[mode]
+            axis.homing.correct(job, layer)
+        return job
+
+    def _check(self, axis: AxisT, mode: int) -> None:
+        """The §6.2.2 restrictions of ``mode`` on this axis, in the order the manual lists them."""
+        if axis.virtual:
+            supported = MODES_VIRTUAL
+        else:
+            supported = MODES_ABSOLUTE if axis.absolute_encoder() else MODES_INCREMENTAL
+        if mode not in supported:
+            raise InstructionError(E.INVALID_AXIS_TYPE if axis.virtual else E.NOT_ALLOWED_IN_STATE)
+        if axis.restarting:
+            raise InstructionError(E.NOT_ALLOWED_IN_STATE)
+        enabled = axis.state == "enabled" and not axis.following_mode
+        speed_mode = not axis.position_controlled
+        if mode in (ACTIVE, ACTIVE_POSITION, PASSIVE) and not enabled:
+            raise InstructionError(E.AXIS_DISABLED)
+        if mode in (ACTIVE, ACTIVE_POSITION):
+            if speed_mode:
+                raise InstructionError(E.AXIS_DISABLED)         # position-controlled operation needed
+            if axis.stop_job is not None:
+                raise InstructionError(E.NOT_ALLOWED_IN_STATE)  # MC_Stop active
+            if axis.eff[f"{ENC}.homingMode"] == MODE_NO_REFERENCE:
+                raise InstructionError(E.NOT_ALLOWED_IN_STATE)  # no active homing configured
+        if mode in (PASSIVE, DIRECT, ABSOLUTE_ENCODER) and speed_mode and axis.state == "enabled":
+            raise InstructionError(E.NOT_ALLOWED_IN_STATE)      # not in speed-controlled mode
+        if mode == ABSOLUTE_ENCODER and axis.sw_limits_effective():
+            raise InstructionError(E.NOT_ALLOWED_IN_STATE)      # §3.1.9: not while SW limit switches act
+
+
+__all__ = ["MC_Home", "MODES_VIRTUAL", "MODES_INCREMENTAL", "MODES_ABSOLUTE"]

@@ -20,6 +20,7 @@ from ...kernel.jobs import JobKind
 from ...kernel.motion import limits
 from ...kernel.tag_views import TagAccessError
 from ...kernel.words import DWord, pack, word_type
+from . import activation
 from .to_errors import ERROR_STATUS_BITS, ErrorRecord
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -129,6 +130,10 @@ class AxisDB(TechnologyDB):
     def update(self, ctl: Any) -> None:
         """Write the whole DB from the axis's state now (one DB update, §7.11 step 2)."""
         ax = self._axis
+        if activation.deactivated(ax):
+            # not processed (§6.7.2): the DB keeps its values, only Statusword.ToDeactivated is shown
+            self._write(Statusword=Statusword(int(self.Statusword) | 1 << STATUSWORD_BITS["ToDeactivated"]))
+            return
         b, i, t = ctl.bank, ax.index, ctl.time
         v_act = 0.0 if ax.without_encoder else float(b.act_v[i])
         last = self._last

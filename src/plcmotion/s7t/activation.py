@@ -18,6 +18,7 @@ from .base import ALL_AXES, ExecuteInstruction, InstructionError, integer
 from .service import ServiceInstruction, int_input
 from .technology import activation as A
 from .technology import dp_drive as DP
+from .technology import parameter_access as PA
 from .technology.axes import AxisT
 from .technology.device import TechnologyDevice
 
@@ -36,8 +37,9 @@ def _leading_in_use(axis: AxisT) -> bool:
 
 
 def _reactivated(axis: AxisT) -> None:
-    """Activated again: system variables as after a restart (§6.7.2), the drive only if its slave is."""
-    axis.reinitialize("restart")
+    """Activated again: system variables as after a restart (§6.7.2) - a "Restart" parameter change still
+    waits for its restart -, the drive only if its slave is active."""
+    PA.reinitialize_keeping_pending(axis)
     DP.bus(axis.ctl.extension).to_activated(axis)
 
 
@@ -95,7 +97,8 @@ class MC_ActivateTO(ExecuteInstruction):  # noqa: N801 - instruction name of the
 
 class MC_ActivateDPSlave(ServiceInstruction):  # noqa: N801
     """FB 457: activate or deactivate a DP slave on DP(DRIVE), or read its Status (1 activated, 2
-    deactivated, 3 being activated, 4 being deactivated)."""
+    deactivated, 3 being activated).  Done says the command was initiated; Mode 0 shows when an
+    activation is complete."""
 
     INPUTS = {"DiagnosticAddress": 0, "Execute": False, "Mode": 0}
     OUTPUTS = {"Done": False, "Busy": False, "Error": False, "ErrorID": 0, "Status": 0}
@@ -110,11 +113,8 @@ class MC_ActivateDPSlave(ServiceInstruction):  # noqa: N801
             job.extra["status"] = slave.status
             job.finish(JobState.DONE)
             return
-        if slave.status in (DP.ACTIVATING, DP.DEACTIVATING):
+        if slave.pending or slave.status == DP.ACTIVATING:
             raise InstructionError(FE.ACTIVATION_ALREADY_ACTIVE)
-        if (slave.status == DP.ACTIVATED) == (mode == ACTIVATE):
-            job.finish(JobState.DONE)
-            return
         DP.bus(device).set_active(slave, mode == ACTIVATE, lambda: self.complete(job))
 
     def _final_for(self, job: Job):

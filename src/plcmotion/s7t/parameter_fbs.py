@@ -79,11 +79,13 @@ class MC_ReadSysParameter(_ParameterFB):  # noqa: N801 - instruction name of the
 
 class MC_WriteParameter(_ParameterFB):  # noqa: N801
     """FB 407: change a parameter of an axis by number (§6.7.5); Done with ErrorID 16#0020 when the change
-    waits for a restart of the axis (MC_Reset Restart = TRUE)."""
+    waits for a restart of the axis (MC_Reset Restart = TRUE).  A deactivated axis (MC_ActivateTO) takes
+    no changes: 16#8086, the table of FB 407 has no 8045."""
 
     INPUTS = {"Axis": 0, "Execute": False, "ParameterNumber": 0, "Index": 1, "Value": 0.0, "ValueDInt": 0,
               "ValueDword1": 0, "ValueDword2": 0, "ValueBool": False}
     OUTPUTS = {"Done": False, "Busy": False, "Error": False, "ErrorID": 0}
+    WHILE_DEACTIVATED = True
 
     def _start(self, to: AxisT) -> Job:
         number, index = _int_input(self.ParameterNumber), _int_input(self.Index)

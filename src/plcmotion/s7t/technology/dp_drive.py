@@ -30,8 +30,10 @@ FIRST_STATION = 2
 INTEGRATED_IO_ADDRESS = 0
 STATIONS = 128
 
-#: DP slave Status of MC_ActivateDPSlave (§6.7.3)
-ACTIVATED, DEACTIVATED, ACTIVATING, DEACTIVATING, NOT_CONNECTED = 1, 2, 3, 4, 5
+#: DP slave Status of MC_ActivateDPSlave (§6.7.3; 4 "being deactivated" is never shown)
+ACTIVATED, DEACTIVATED, ACTIVATING, NOT_CONNECTED = 1, 2, 3, 5
+#: command slices from an initiated activation until the slave is back in cyclic exchange (plcmotion's)
+ACTIVATION_SLICES = 4
 
 
 class Slices:
@@ -78,10 +80,12 @@ class Slave:
     busy_records: set[int] = field(default_factory=set)      # records with a write in progress
     drive_request: bool = False                              # a drive-parameter command is out (80C7)
     lost: bool = False                                       # the axis has the communication fault of it
+    pending: bool = False                                    # an MC_ActivateDPSlave command waits
 
     @property
     def active(self) -> bool:
-        return self.status in (ACTIVATED, DEACTIVATING)
+        """The slave takes part in cyclic exchange."""
+        return self.status == ACTIVATED
 
 
 def _parameters(axis: Any) -> PM.ParameterModel:
@@ -156,23 +160,34 @@ class DPDrive:
         return next((s for s in self.slaves if s.axis is axis), None)
 
     # --- MC_ActivateDPSlave -------------------------------------------------------------------------------
-    def set_active(self, slave: Slave, active: bool, done: Callable[[], None]) -> None:
-        """Start (de)activating ``slave``; cyclic exchange stops or resumes in the next command slice.
-        Without cyclic exchange the drive of an active axis is not reachable: the kernel's communication
-        fault (Statusword.CyclicInterface FALSE and the drive error in the technology DB); an axis that is
-        deactivated (MC_ActivateTO first, as §6.7.2 asks) gets it only if it is activated again while its
-        slave is still deactivated."""
-        slave.status = ACTIVATING if active else DEACTIVATING
+    def set_active(self, slave: Slave, active: bool, initiated: Callable[[], None]) -> None:
+        """(De)activate ``slave``: the command is initiated in the next command slice (``initiated``, the
+        FB's Done).  Deactivation takes the slave out of cyclic exchange at once (Status 2; §6.7.3 never
+        shows 4); an activation shows Status 3 until the slave is back in cyclic exchange
+        ``ACTIVATION_SLICES`` slices later.  Without cyclic exchange the drive of an active axis is not
+        reachable: the kernel's communication fault (Statusword.CyclicInterface FALSE and the drive error
+        in the technology DB); an axis deactivated first (MC_ActivateTO, as §6.7.3 asks) gets it only if it
+        is activated again while its slave is still deactivated."""
+        slave.pending = True
 
-        def finish() -> None:
-            slave.status = ACTIVATED if active else DEACTIVATED
+        def initiate() -> None:
+            slave.pending = False
             if active:
-                self._restore(slave)
-            elif not activation.deactivated(slave.axis):
-                self._lose(slave)
+                slave.status = ACTIVATING
+                self.slices.after(ACTIVATION_SLICES, lambda: self._connected(slave))
+            else:
+                slave.status = DEACTIVATED
+                if not activation.deactivated(slave.axis):
+                    self._lose(slave)
+                self.publish()
+            initiated()
+        self.slices.after(1, initiate)
+
+    def _connected(self, slave: Slave) -> None:
+        if slave.status == ACTIVATING:
+            slave.status = ACTIVATED
+            self._restore(slave)
             self.publish()
-            done()
-        self.slices.after(1, finish)
 
     def _lose(self, slave: Slave) -> None:
         slave.axis.inject_fault("communication_loss", persistent=True)
@@ -195,6 +210,7 @@ class DPDrive:
         for s in self.slaves:
             self._restore(s)
             s.status = ACTIVATED
+            s.pending = False
             s.busy_records.clear()
             s.drive_request = False
         self.publish()
@@ -218,4 +234,4 @@ def _power(b: DPDrive | None, reason: str) -> None:
 
 
 __all__ = ["DPDrive", "Slave", "Slices", "bus", "BASE_ADDRESS", "DIAGNOSTIC_ADDRESS", "FIRST_STATION",
-           "INTEGRATED_IO_ADDRESS", "ACTIVATED", "DEACTIVATED", "ACTIVATING", "DEACTIVATING", "NOT_CONNECTED"]
+           "INTEGRATED_IO_ADDRESS", "ACTIVATED", "DEACTIVATED", "ACTIVATING", "NOT_CONNECTED", "ACTIVATION_SLICES"]

@@ -28,7 +28,7 @@ from typing import TYPE_CHECKING, Any
 
 from ...kernel import axis_status as S
 from ...kernel.jobs import JobKind
-from .enums import ENUMS
+from . import activation
 from .parameters import (ILLEGAL_PARAMETER, INVALID_NUMBER, READ_ONLY, RESTART_REQUIRED, Parameter, parameter)
 from .to_kinds import AxisType, TOKind
 
@@ -217,8 +217,8 @@ def write(axis: "AxisT", number: int, index: int, value: Any) -> int:
     if isinstance(acc, int):
         return acc
     p = acc.parameter
-    if axis.restarting:
-        return NOT_AVAILABLE
+    if axis.restarting or activation.deactivated(axis):
+        return NOT_AVAILABLE                  # restarting, or deactivated: not processed (§6.7.2)
     code = p.check(value, index if p.index is not None else None, axis.ctl.servo_cycle)
     if code is not None:
         return code
@@ -266,6 +266,20 @@ def _restart_pending(axis: "AxisT") -> bool:
                if t in store.start and not store.schema.params[t].effective)
 
 
+def reinitialize_keeping_pending(axis: "AxisT") -> None:
+    """Initialize the axis as a restart does, but keep written "Restart" values waiting for the real
+    restart (MC_ActivateTO reactivation, §6.7.2)."""
+    store = axis.parameters
+    w = _WRITES.get(axis)
+    pending = {} if w is None else {t: store.effective[t] for t in w.configured
+                                    if not store.schema.params[t].effective and store.start[t] != store.effective[t]}
+    axis.reinitialize("restart")
+    if pending:
+        store.make_effective({**store.effective, **pending})
+        axis._apply_bank_config()
+        axis.restart_requested = True
+
+
 def power_on(axis: "AxisT") -> None:
     """POWER OFF -> ON: the configured values are in effect again (§5.16); the axis is disabled."""
     w = _WRITES.pop(axis, None)
@@ -278,5 +292,5 @@ def power_on(axis: "AxisT") -> None:
     axis._apply_bank_config()
 
 
-__all__ = ["Access", "resolve", "read", "write", "power_on", "output_of", "NOT_AVAILABLE",
+__all__ = ["Access", "resolve", "read", "write", "power_on", "reinitialize_keeping_pending", "output_of", "NOT_AVAILABLE",
            "OUT_REAL", "OUT_DINT", "OUT_DWORD1", "OUT_DWORD2", "OUT_BOOL"]

@@ -145,10 +145,10 @@ class MC_MoveAdditive(_Move):  # noqa: N801
             raise InstructionError(E.ILLEGAL_PARAMETER)
         if positioning:
             job.extra["relative_base"] = running.target          # target correction (§6.2.8)
-        moving = abs(v) > 0.0 or positioning
-        if axis.homing_required and not axis.homed and moving:
-            # §6.2.8: a homed axis is needed when it moves or a positioning is overridden; the check is the
-            # technology's: CommandAborted, 16#8041 in the technology DB
+        over_velocity = running is not None and running.busy and running.kind == JobKind.VELOCITY
+        if axis.homing_required and not axis.homed and (positioning or (abs(v) > 0.0 and not over_velocity)):
+            # §6.2.8: a homed axis is needed when it moves (unless an MC_MoveVelocity is overridden) or a
+            # positioning is overridden; the check is the technology's: CommandAborted, 16#8041 in the DB
             job.finish(JobState.ERROR, F.reject(F.NOT_HOMED))
             return job
         return self._submit(axis, job)

@@ -20,6 +20,7 @@ from .builder import POSITIONING, SPEED, SYNCHRONIZATION
 from .device import TechnologyDevice
 from .policy_basic import POLICY
 from .schema import AXIS
+from .to_errors import describe_fault
 
 NAME = "S7-Technology"
 
@@ -70,7 +71,7 @@ S7_TECHNOLOGY = K.register(K.Family(
     NAME, versions=(4,), default_version=4,
     factories={K.POSITIONING_AXIS: _positioning_axis, K.SYNCHRONOUS_AXIS: _synchronization_axis},
     job_kinds=JOB_KINDS, policy=POLICY, schemas={K.POSITIONING_AXIS: AXIS, K.SYNCHRONOUS_AXIS: AXIS},
-    setup=TechnologyDevice))
+    describe_fault=describe_fault, setup=TechnologyDevice))
 
 __all__ = ["S7_TECHNOLOGY", "NAME", "AxisT", "SpeedAxis", "PositioningAxisT", "SynchronizationAxis",
            "TechnologyDevice", "device"]

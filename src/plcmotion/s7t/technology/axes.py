@@ -21,7 +21,7 @@ from ...kernel.layered_axis import LayeredAxis
 from .builder import POSITIONING, SPEED, SYNCHRONIZATION, TELEGRAMS_NO_ENCODER, YES
 from .schema import AXIS
 from .tdb import AxisDB
-from .to_errors import W_DYNAMICS_LIMITED, ErrorRecord, tdb_error
+from .to_errors import W_DYNAMICS_LIMITED, W_SW_LIMIT, ErrorRecord, tdb_error
 
 if TYPE_CHECKING:  # pragma: no cover
     from ...kernel.runtime import Controller
@@ -126,6 +126,24 @@ class AxisT(LayeredAxis):
         if fault is None:
             self.errors.clear()
         return fault
+
+    # --- the superimposed motion stays inside the software limit switches (§4.5.7.3) -------------------
+    def start_superimposed(self, job: Job, lim: Any) -> None:
+        """A superimposed positioning whose end, added to the extremes of the basic motion still to come,
+        would pass a software limit switch is shortened to reach it (warning 16#0026 in the technology DB):
+        the kernel guards the basic motion, this the sum of both layers."""
+        if self.sw_limits_effective():
+            t = self.now
+            prof = self.profile
+            ends = [prof.at(t)[0], prof.final.p] + [seg.p for seg in prof.segments if seg.t > t]
+            limits = self.config.software_limits
+            here = self.sup_state_at(t)[0]
+            target = here + job.position
+            clamped = min(max(target, limits.minimum - min(ends)), limits.maximum - max(ends))
+            if clamped != target:
+                job.position = clamped - here
+                self.errors.note(W_SW_LIMIT)
+        super().start_superimposed(job, lim)
 
     # --- restart (MC_Reset Restart = TRUE): the object takes no commands for RESTART_TIME (§6.7.1) --------
     @property

@@ -19,9 +19,11 @@ from __future__ import annotations
 import numbers
 from typing import Any, Callable
 
+import numpy as np
+
 from ...kernel.errors import ConfigurationError
 from ...kernel.schema import Issue
-from .tdb import Array, MCDeviceDB, TechnologyDB
+from .tdb import Array, AxisDB, MCDeviceDB, TechnologyDB
 
 #: number of the MCDevice DB (Technology Objects Management creates it with the first technology object)
 MCDEVICE_DB = 1
@@ -61,6 +63,8 @@ class TechnologyDevice:
         self.mcdevice = MCDeviceDB(MCDEVICE_DB)
         self._dbs: dict[int, TechnologyDB] = {MCDEVICE_DB: self.mcdevice}
         self._objects: dict[int, Any] = {}
+        self._axis_dbs: list[AxisDB] = []           # the axis DBs, gathered from the bank in one go
+        self._rows = np.zeros(0, dtype=np.intp)
         self._ob65: list[tuple[str, Callable[[], Any]]] = []
         self._ipo = 0                               # IPO cycles since the last DB update
         self._done_flags = [False] * 32
@@ -107,6 +111,8 @@ class TechnologyDevice:
         """Make the technology DB ``to.db`` known under its number."""
         self._dbs[to.db_number] = to.db
         self._objects[to.db_number] = to
+        self._axis_dbs.append(to.db)
+        self._rows = np.array([db._axis.index for db in self._axis_dbs], dtype=np.intp)
 
     def db(self, number: Any) -> TechnologyDB | None:
         """The technology DB with ``number`` (None: no technology DB)."""
@@ -157,8 +163,12 @@ class TechnologyDevice:
         if self._watches:
             self._toggle_done_flags()
         self._write_mcdevice()
-        for db in dbs[1:]:
-            db.update(ctl)
+        if self._axis_dbs:
+            b, rows, t = ctl.bank, self._rows, ctl.time
+            columns = (b.sp_p[rows].tolist(), b.sp_v[rows].tolist(), b.sp_a[rows].tolist(), b.act_p[rows].tolist(),
+                       b.act_v[rows].tolist(), b.fe[rows].tolist(), b.standstill[rows].tolist())
+            for db, values in zip(self._axis_dbs, zip(*columns)):
+                db.update(t, *values)
         for db in dbs:
             db._write(UpdateCounter=(db.UpdateCounter + 1) & 0xFFFF, UpdateFlag=0)
         self.updates += 1

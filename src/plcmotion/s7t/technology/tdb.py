@@ -16,10 +16,10 @@ from typing import TYPE_CHECKING, Any, Iterator
 from ...kernel import axis_status as S
 from ...kernel import faults as F
 from ...kernel.faults import Reaction
-from ...kernel.jobs import JobKind
+from ...kernel.jobs import JobKind, JobState
 from ...kernel.motion import limits
 from ...kernel.tag_views import TagAccessError
-from ...kernel.words import DWord, pack, word_type
+from ...kernel.words import DWord, word_type
 from . import activation
 from .to_errors import ERROR_STATUS_BITS, ErrorRecord
 
@@ -127,35 +127,41 @@ class AxisDB(TechnologyDB):
     def __getattr__(self, name: str) -> Any:
         raise AttributeError(f"DB{self.number} ({self._axis.technology_name}) has no member {name!r}")
 
-    def update(self, ctl: Any) -> None:
-        """Write the whole DB from the axis's state now (one DB update, §7.11 step 2)."""
+    def update(self, t: float, sp_p: float, sp_v: float, sp_a: float, act_p: float, act_v: float, fe: float,
+               still: bool) -> None:
+        """Write the whole DB from the axis's state at ``t`` (one DB update, §7.11 step 2); the bank values
+        of all axes come in one gather (``device.TechnologyDevice.update``)."""
         ax = self._axis
         if activation.deactivated(ax):
             # not processed (§6.7.2): the DB keeps its values, only Statusword.ToDeactivated is shown
             self._write(Statusword=Statusword(int(self.Statusword) | 1 << STATUSWORD_BITS["ToDeactivated"]))
             return
-        b, i, t = ctl.bank, ax.index, ctl.time
-        v_act = 0.0 if ax.without_encoder else float(b.act_v[i])
+        if ax.without_encoder:
+            act_v = 0.0
         last = self._last
-        a_act = 0.0 if last is None or t <= last[0] else (v_act - last[1]) / (t - last[0])
-        object.__setattr__(self, "_last", (t, v_act))
+        a_act = 0.0 if last is None or t <= last[0] else (act_v - last[1]) / (t - last[0])
+        object.__setattr__(self, "_last", (t, act_v))
         override = ax.config.defaults.velocity_override
-        values: dict[str, Any] = dict(
-            Statusword=Statusword(statusword(ax)), CommandVelocity=float(b.sp_v[i]),
-            CommandAcceleration=float(b.sp_a[i]), ActualVelocity=v_act, ActualAcceleration=a_act,
-            SpeedOverride=100.0 if override is None else float(override), AccelerationOverride=100.0)
+        d = self.__dict__
+        d["Statusword"] = Statusword(statusword(ax, sp_v, sp_a, still))
+        d["CommandVelocity"] = sp_v
+        d["CommandAcceleration"] = sp_a
+        d["ActualVelocity"] = act_v
+        d["ActualAcceleration"] = a_act
+        d["SpeedOverride"] = 100.0 if override is None else float(override)
         if ax.positioning:
-            values.update(ActualPosition=S.actual_position(ax), CommandPosition=S.position(ax),
-                          FollowingError=float(b.fe[i]), **_positioning(ax, self.TargetPosition))
-        self._write(**values)
+            d["ActualPosition"] = ax._wrap(act_p)
+            d["CommandPosition"] = ax._wrap(sp_p)
+            d["FollowingError"] = fe
+            job = ax.job
+            if job is not None and job.state == JobState.BUSY and job.kind in _POSITIONING:
+                d.update(_positioning(ax, job))
+            else:                                   # outside a positioning: the last target, no distances
+                d["Distance"] = d["DecelerationDistance"] = 0.0
 
 
-def _positioning(ax: "AxisT", last_target: float) -> dict[str, float]:
-    """TargetPosition, Distance and DecelerationDistance: valid while a positioning runs (§7.2); outside
-    one the target of the last positioning stays and the distances are 0."""
-    job = ax.job
-    if job is None or not job.busy or job.kind not in _POSITIONING:
-        return dict(TargetPosition=last_target, Distance=0.0, DecelerationDistance=0.0)
+def _positioning(ax: "AxisT", job: Any) -> dict[str, float]:
+    """TargetPosition, Distance and DecelerationDistance while a positioning runs (§7.2)."""
     p, v, a = ax._state_now()
     try:
         stop = ax.motion.planner.stop_position(p, v, a, limits(ax, job.velocity, job=job))
@@ -164,44 +170,69 @@ def _positioning(ax: "AxisT", last_target: float) -> dict[str, float]:
     return dict(TargetPosition=ax._wrap(job.target), Distance=abs(job.target - p), DecelerationDistance=abs(stop - p))
 
 
-def statusword(ax: "AxisT") -> int:
-    """§7.1 Statusword of an axis from its kernel state."""
+def statusword(ax: "AxisT", v: float, a: float, still: bool) -> int:
+    """§7.1 Statusword of an axis from its kernel state (setpoint velocity ``v`` and acceleration ``a``,
+    the standstill signal ``still``)."""
     job = ax.job
-    kind = job.kind if job is not None and job.busy else None
+    kind = job.kind if job is not None and job.state == JobState.BUSY else None
     stop = ax.stop_job
     follower = ax.follower
     synchr = follower is not None and follower.coupling is not None
-    motion = kind is not None or ax.superimposed_active or synchr or (stop is not None and stop.busy) or \
-        ax.queue_waiting()
+    sup = ax.superimposed.active
     enabled = ax.state in ("enabled", "disabling")
-    acc = S.accel_state(ax)
-    b, i = ax.ctl.bank, ax.index
+    virtual = ax.virtual
+    w = 0
+    if virtual or (enabled and not ax.following_mode and ax.drive.ready(ax.now)):
+        w |= 1                                                  # DriveEnabled
+    if ax.positioning and ax.homed:
+        w |= 1 << 1                                             # HomingDone
+    if not (kind is not None or sup or synchr or (stop is not None and stop.state == JobState.BUSY)
+            or ax.queue.pending):
+        w |= 1 << 2                                             # Done: no motion command
+    if sup:
+        w |= 1 << 3 | 1 << 8                                    # SuperImposedCommand, PositioningCommand
+    if ax.errors.error:
+        w |= 1 << 4
+    alarms = ax.alarms
+    if alarms and any(f.reaction != Reaction.NONE for f in alarms):
+        w |= 1 << 5                                             # Errorstop
+    if stop is not None:
+        w |= 1 << 6                                             # Stopping
+    if (still if ax.servo else v == 0.0):
+        w |= 1 << 7                                             # Standstill
+    if kind in _POSITIONING:
+        w |= 1 << 8
+    elif kind == JobKind.VELOCITY:
+        w |= 1 << 9
+    elif kind in _HOMING:
+        w |= 1 << 11
+    if synchr:
+        w |= 1 << 10
+    if ax.homing.passive is not None:
+        w |= 1 << 11
+    if not enabled or ax.following_mode:
+        w |= 1 << 12                                            # FollowUpControl
+    if abs(a) <= 1e-9 * max(1.0, ax.config.defaults.acceleration):
+        if v != 0.0:
+            w |= 1 << 13                                        # ConstantVelocity
+    elif a * v > 0 or v == 0.0:
+        w |= 1 << 14                                            # Accelerating
+    else:
+        w |= 1 << 15                                            # Decelerating
+    if ax.restart_requested:
+        w |= 1 << 16
+    if virtual or (S.drive_communication_ok(ax) and not any(f.kind == F.DRIVE_ALARM for f in alarms)):
+        w |= 1 << 18                                            # CyclicInterface
+    if virtual or ax.sensor_valid:
+        w |= 1 << 19                                            # EncoderValid
+    if not ax.positioning or not ax.position_controlled:
+        w |= 1 << 20                                            # SpeedMode
     hw = ax.hw_approached
-    bits = {
-        0: ax.virtual or (enabled and not ax.following_mode and ax.drive.ready(ax.now)),
-        1: ax.positioning and ax.homed,
-        2: not motion,
-        3: ax.superimposed_active,
-        4: ax.errors.error,
-        5: any(a.reaction != Reaction.NONE for a in ax.alarms),
-        6: stop is not None,
-        7: S.standstill(ax),
-        8: kind in _POSITIONING or ax.superimposed_active,
-        9: kind == JobKind.VELOCITY,
-        10: synchr,
-        11: kind in _HOMING or ax.homing.passive is not None,
-        12: not enabled or ax.following_mode,
-        13: acc == 0 and float(b.sp_v[i]) != 0.0,
-        14: acc > 0,
-        15: acc < 0,
-        16: ax.restart_requested,
-        18: ax.virtual or (S.drive_communication_ok(ax) and not any(a.kind == F.DRIVE_ALARM for a in ax.alarms)),
-        19: ax.virtual or ax.sensor_valid,
-        20: not ax.positioning or not ax.position_controlled,
-        26: bool(hw.get("min")),
-        27: bool(hw.get("max")),
-    }
-    return pack(bits)
+    if hw.get("min"):
+        w |= 1 << 26
+    if hw.get("max"):
+        w |= 1 << 27
+    return w
 
 
 class MCDeviceDB(TechnologyDB):

@@ -95,6 +95,13 @@ def tdb_error(fault: Fault) -> tuple[int, int | None]:
     return _REJECTIONS.get(fault.kind, NOT_ALLOWED), _B["UserFault"]
 
 
+def describe_fault(fault: Fault) -> str:
+    """How summaries name a kernel fault of an S7-Technology object: its technology DB ErrorID."""
+    error_id, _bit = tdb_error(fault)
+    kind = "warning" if is_warning(error_id) else "error"
+    return f"technology DB {kind} 16#{error_id:04X} ({fault})"
+
+
 def is_warning(error_id: int) -> bool:
     """Warnings are 00xx, errors 8xxx (§5.12)."""
     return error_id < 0x8000
@@ -130,4 +137,4 @@ class ErrorRecord:
         return self.buffer + [0] * (3 - len(self.buffer))
 
 
-__all__ = ["ErrorRecord", "tdb_error", "is_warning", "ERROR_STATUS_BITS"]
+__all__ = ["ErrorRecord", "tdb_error", "describe_fault", "is_warning", "ERROR_STATUS_BITS"]

@@ -26,6 +26,13 @@ MODES = (0, 1, 2)
 READ_STATUS, ACTIVATE, DEACTIVATE = MODES
 
 
+def _running(axis: AxisT) -> bool:
+    """A command of the axis still runs (motion, MC_Stop, a waiting command, superimposed motion)."""
+    job, stop = axis.job, axis.stop_job
+    return bool((job is not None and job.busy) or (stop is not None and stop.busy) or axis.queue_waiting()
+                or axis.superimposed_active)
+
+
 def _leading_in_use(axis: AxisT) -> bool:
     """Another axis is coupled to ``axis`` as its leading axis."""
     for other in axis.ctl.axes.values():
@@ -71,7 +78,7 @@ class MC_ActivateTO(ExecuteInstruction):  # noqa: N801 - instruction name of the
         if state == A.DEACTIVATED:
             job.finish(JobState.DONE)
             return job
-        if to.power_owner is not None or to.state != "disabled" or to.restarting or to.busy_commands:
+        if to.power_owner is not None or to.state != "disabled" or to.restarting or _running(to):
             raise InstructionError(FE.NOT_ALLOWED)                   # enabled, or a command still runs
         if _leading_in_use(to):
             raise InstructionError(FE.DEACTIVATION_NOT_PERMITTED)

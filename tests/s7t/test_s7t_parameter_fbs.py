@@ -342,3 +342,20 @@ def test_s7t_parameter_fbs_do_not_abort_motion():
         _write(axis, number, Value=5000.0 if number == 3 else 50.0)
     ctl.run(0.01)
     assert move(Execute=True).Busy and not move.CommandAborted and power(Enable=True).Status
+
+
+def test_s7t_write_homing_required_acts_immediately():
+    """S7-Technology V4.1 §9.4 parameter 1123 "Homing required" (Activation: Immediately), §3.1.8: with NO
+    (EnumYesNo 0) an absolute positioning of an axis that is not homed runs at once, without a restart."""
+    from plcmotion.s7t import MC_MoveAbsolute
+    ctl, axis, _ = enabled({"Wizard": {"Virtual": 1}, "TypeOfAxis.Homing.referencingNecessary": 1})
+    move = MC_MoveAbsolute()
+    move(Axis=axis, Execute=True, Position=10.0, Velocity=50.0)
+    ctl.run(0.01)
+    assert not move(Execute=True).Busy and not move.Done                  # refused: not homed
+    fb = _write(axis, 1123, ValueDInt=0)
+    assert fb.Done and fb.ErrorID == 0
+    move(Execute=False)
+    move(Execute=True)
+    ctl.run(1.0)
+    assert move(Execute=True).Done and float(ctl.bank.sp_p[axis.index]) == pytest.approx(10.0)

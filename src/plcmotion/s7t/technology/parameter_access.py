@@ -28,6 +28,7 @@ from typing import TYPE_CHECKING, Any
 
 from ...kernel import axis_status as S
 from ...kernel.jobs import JobKind
+from ...kernel.tag_views import TagAccessError
 from . import activation
 from .parameters import (ILLEGAL_PARAMETER, INVALID_NUMBER, READ_ONLY, RESTART_REQUIRED, Parameter, parameter)
 from .to_kinds import AxisType, TOKind
@@ -232,19 +233,43 @@ def write(axis: "AxisT", number: int, index: int, value: Any) -> int:
     reason, norm = param.check(norm)
     if reason is not None:
         return ILLEGAL_PARAMETER
-    candidate = {**store.values, **_writes(axis).held, tag: norm}
+    w = _writes(axis)
+    # checked together with the other values as they will be: written ones, also those awaiting a restart
+    pending = {t: store.start[t] for t in w.configured}
+    candidate = {**store.values, **pending, **w.held, tag: norm}
     if store.validate(candidate, [tag]) is not None:
         return ILLEGAL_PARAMETER
-    w = _writes(axis)
-    w.configured.setdefault(tag, store.start[tag])
-    store.start[tag] = norm                   # a restart keeps the written value (§5.16)
     if p.needs_restart:
+        _remember(w, store, tag, norm)
         axis.restart_requested = _restart_pending(axis)
         return RESTART_REQUIRED if norm != store.effective[tag] else 0
     if w.collecting:
+        _remember(w, store, tag, norm)
         w.held[tag] = norm
         return 0
-    store.write(tag, norm, via_write_param=True)
+    return _now(axis, tag, norm)
+
+
+def _remember(w: _AxisWrites, store: Any, tag: str, value: Any) -> None:
+    w.configured.setdefault(tag, store.start[tag])
+    store.start[tag] = value                  # a restart keeps the written value (§5.16)
+
+
+def _now(axis: "AxisT", tag: str, value: Any) -> int:
+    """An "Immediately" parameter: in effect from the next IPO cycle (the store's servo moment).  Where the
+    schema keeps the tag as a start value (its effect list is empty) the manual's "Immediately" wins: the
+    configuration takes it at once."""
+    store = axis.parameters
+    if store.schema.params[tag].effective:
+        try:
+            store.write(tag, value, via_write_param=True)
+        except (TagAccessError, TypeError):
+            return READ_ONLY                  # a tag the schema keeps from the user program
+    else:
+        store.values[tag] = value
+        store.make_effective({**store.effective, tag: value})
+        axis._apply_bank_config()
+    _remember(_writes(axis), store, tag, value)
     return 0
 
 
@@ -256,7 +281,7 @@ def _activation_mode(axis: "AxisT", mode: int) -> int:
     w.collecting = False
     held, w.held = w.held, {}
     for tag, value in held.items():
-        axis.parameters.write(tag, value, via_write_param=True)
+        _now(axis, tag, value)
     return 0
 
 

@@ -338,3 +338,21 @@ def test_s7t_power_second_instance_804e_and_other_axis_804f():
     assert mine.Error and mine.ErrorID == 0x804F
     ctl.run(0.1)
     assert other.state == "enabled"
+
+
+def test_s7t_stop_deceleration_zero_uses_the_default():
+    """S7-Technology V4.1 §6.2.3 ErrorIDs: Deceleration = 0 is ignored with warning 16#0028 (Error FALSE)
+    and the axis stops with the default deceleration (userdefaultdynamics.negativeaccel 100: from 50 in
+    0.5 s)."""
+    ctl, axis, _ = enabled()
+    move, stop = MC_MoveVelocity(), MC_Stop()
+    move(Axis=axis, Execute=True, Velocity=50.0, **TRAPEZOID)
+    ctl.run(1.0)
+    stop(Axis=axis, Execute=True, Deceleration=0.0, Jerk=0.0)
+    assert stop.Busy and not stop.Error and stop.ErrorID == 0x0028 and stop.ENO
+    ctl.run(0.25)
+    assert _v(ctl, axis) == pytest.approx(25.0, abs=0.5)
+    ctl.run(0.3)
+    assert _v(ctl, axis) == 0.0
+    stop(Execute=False)
+    assert stop.Done and stop.ErrorID == 0x0028

@@ -203,3 +203,18 @@ def test_s7t_mcdevice_shows_integrated_io():
     assert mc.DOStatus[7] and not mc.DOStatus[0]
     with pytest.raises(IndexError):
         mc.DoneFlag[0]
+
+
+def test_s7t_technology_dbs_are_not_retentive():
+    """S7-Technology V4.1 §7, §7.10: technology DBs are not retentive: after POWER OFF -> ON the DoneFlags are
+    FALSE again and the errors of the technology objects are gone."""
+    ctl, axis, _ = enabled({"Wizard.Virtual": 1})          # "Homing required" = YES
+    move = MC_MoveRelative()
+    move(Axis=axis, Execute=True, Distance=1.0, DoneFlag=2)
+    ctl.run_until(lambda: move(Execute=True).Done, 2.0)
+    MC_MoveAbsolute()(Axis=axis, Execute=True, Position=5.0)   # not homed: 16#8041 in the DB
+    ctl.run(0.01)
+    assert _flag(ctl, 2) is True and axis.db.ErrorID == 0x8041 and axis.db.Statusword.Error
+    ctl.power_cycle()
+    ctl.run(0.01)
+    assert _flag(ctl, 2) is False and axis.db.ErrorID == 0 and not axis.db.Statusword.Error

@@ -1,8 +1,6 @@
 """FB 404 MC_Stop and FB 405 MC_Halt (S7-Technology V4.1 §6.2.3, §6.2.4)."""
 from __future__ import annotations
 
-from typing import Any
-
 from ..kernel import axis_status as S
 from ..kernel.jobs import Job, JobKind, JobState
 from .base import ALL_AXES, ExecuteInstruction, dynamic
@@ -98,4 +96,4 @@ class MC_Halt(ExecuteInstruction):  # noqa: N801
         return job
 
 
-__all__ = ["MC_Stop", "MC_Halt", "W_DEFAULT_USED", "Any"]
+__all__ = ["MC_Stop", "MC_Halt", "W_DEFAULT_USED"]

@@ -16,8 +16,8 @@ from __future__ import annotations
 from typing import Any, Mapping
 
 from ...kernel.plant_schema import PLANT_PARAMS
-from ...kernel.schema import E12, INT, REAL, WP, P, R, AxisSchema, Issue, Param
-from .builder import (DS, DYN, FE, GEAR, PV, TELEGRAMS_NO_ENCODER, TELEGRAMS_ONE_ENCODER, TELEGRAMS_TWO_ENCODERS,
+from ...kernel.schema import E12, INT, REAL, WP, R, AxisSchema, Issue, Param
+from .builder import (DYN, FE, GEAR, PV, TELEGRAMS_NO_ENCODER, TELEGRAMS_ONE_ENCODER, TELEGRAMS_TWO_ENCODERS,
                       axis_config, max_drive_velocity)
 
 NOW = (10,)            # "Immediately": the next IPO cycle
@@ -142,4 +142,4 @@ def rule_issues(cfg: Mapping[str, Any]) -> list[Issue]:
 AXIS = AxisSchema("S7-Technology axis", _PARAMS + PLANT_PARAMS, rules=rule_issues, canonical=canonical,
                   build=axis_config, real_type="Real")
 
-__all__ = ["AXIS", "FAMILY_TAGS", "DIRECTIONS", "P"]
+__all__ = ["AXIS", "FAMILY_TAGS", "DIRECTIONS", "canonical", "rule_issues"]

@@ -38,7 +38,7 @@ def _leading_in_use(axis: AxisT) -> bool:
     for other in axis.ctl.axes.values():
         follower = getattr(other, "follower", None)
         coupling = getattr(follower, "coupling", None) if follower is not None else None
-        if coupling is not None and getattr(coupling, "leading", None) is axis:
+        if coupling is not None and getattr(coupling, "source", None) is axis:
             return True
     return False
 

@@ -15,8 +15,6 @@ in the slice after the following one; Busy until then.  One drive-parameter comm
 """
 from __future__ import annotations
 
-from typing import Any
-
 from ..drives.profidrive import parameter_model as PM
 from ..kernel.jobs import Job
 from . import fb_errors as FE

@@ -10,7 +10,6 @@ refused with 16#8005.
 """
 from __future__ import annotations
 
-import numbers
 import weakref
 from typing import Any
 
@@ -22,7 +21,6 @@ from .technology.device import TechnologyDevice, current
 
 #: commands of these FBs a technology runs at the same time (the manual names no number; plcmotion's)
 MAX_COMMANDS = 8
-MAX_INT = 32767
 
 _RUNNING: "weakref.WeakKeyDictionary[TechnologyDevice, set[int]]" = weakref.WeakKeyDictionary()
 
@@ -58,12 +56,6 @@ def data_area(value: Any, *, writable: bool, maximum: int, too_long: int) -> byt
     if len(value) > maximum:
         raise InstructionError(too_long)
     return value
-
-
-def boolean(value: Any) -> bool:
-    if isinstance(value, bool) or (isinstance(value, numbers.Integral) and value in (0, 1)):
-        return bool(value)
-    raise InstructionError(FE.ILLEGAL_PARAMETER)
 
 
 class ServiceInstruction(ExecuteInstruction):
@@ -114,4 +106,4 @@ class ServiceInstruction(ExecuteInstruction):
         return super()._final_for(job)
 
 
-__all__ = ["ServiceInstruction", "running", "int_input", "data_area", "boolean", "MAX_COMMANDS"]
+__all__ = ["ServiceInstruction", "running", "int_input", "data_area", "MAX_COMMANDS"]

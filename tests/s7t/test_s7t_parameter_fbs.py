@@ -359,3 +359,22 @@ def test_s7t_write_homing_required_acts_immediately():
     move(Execute=True)
     ctl.run(1.0)
     assert move(Execute=True).Done and float(ctl.bank.sp_p[axis.index]) == pytest.approx(10.0)
+
+
+def test_s7t_write_acceleration_override_acts_on_the_next_motion():
+    """S7-Technology V4.1 §6.7.5 example "Override": parameter 4141 (1.0 ... 1000.0 %) scales acceleration and
+    deceleration; at 50 % an MC_MoveVelocity with Acceleration 100 reaches 50 after 1.0 s instead of 0.5 s;
+    AccelerationOverride of the technology DB shows it; 0.5 and 1000.5 are out of range."""
+    ctl, axis, _ = enabled()
+    assert _read(axis, 4141).Value == 100.0
+    assert _write(axis, 4141, Value=0.5).ErrorID == 0x8043
+    assert _write(axis, 4141, Value=1000.5).ErrorID == 0x8043
+    assert _write(axis, 4141, Value=50.0).Done
+    ctl.run(0.01)
+    assert axis.db.AccelerationOverride == 50.0
+    move = MC_MoveVelocity()
+    move(Axis=axis, Execute=True, Velocity=50.0, Acceleration=100.0, Deceleration=100.0, Jerk=0.0)
+    ctl.run(0.5)
+    assert float(ctl.bank.sp_v[axis.index]) == pytest.approx(25.0, abs=0.5)
+    ctl.run(0.6)
+    assert float(ctl.bank.sp_v[axis.index]) == pytest.approx(50.0)

@@ -17,6 +17,7 @@ from typing import Any, Mapping
 
 from ...kernel.plant_schema import PLANT_PARAMS
 from ...kernel.schema import E12, INT, REAL, WP, R, AxisSchema, Issue, Param
+from .schema_io import IO_PARAMS
 from .builder import (DYN, FE, GEAR, PV, TELEGRAMS_NO_ENCODER, TELEGRAMS_ONE_ENCODER, TELEGRAMS_TWO_ENCODERS,
                       axis_config, max_drive_velocity)
 
@@ -139,7 +140,7 @@ def rule_issues(cfg: Mapping[str, Any]) -> list[Issue]:
     return issues
 
 
-AXIS = AxisSchema("S7-Technology axis", _PARAMS + PLANT_PARAMS, rules=rule_issues, canonical=canonical,
+AXIS = AxisSchema("S7-Technology axis", _PARAMS + IO_PARAMS + PLANT_PARAMS, rules=rule_issues, canonical=canonical,
                   build=axis_config, real_type="Real")
 
 __all__ = ["AXIS", "FAMILY_TAGS", "DIRECTIONS", "canonical", "rule_issues"]

@@ -149,6 +149,8 @@ class AxisDB(TechnologyDB):
         d["ActualVelocity"] = act_v
         d["ActualAcceleration"] = a_act
         d["SpeedOverride"] = 100.0 if override is None else float(override)
+        acc_override = ax.config.defaults.acceleration_override
+        d["AccelerationOverride"] = 100.0 if acc_override is None else float(acc_override)
         if ax.positioning:
             d["ActualPosition"] = ax._wrap(act_p)
             d["CommandPosition"] = ax._wrap(sp_p)

@@ -46,7 +46,7 @@ PAGES: dict[str, tuple[str, str, dict[str, tuple[str, str]]]] = {
         "Changes a technology parameter of an axis by number. Only the input of the parameter's data type is "
         "evaluated. The value is checked against the parameter's range / ENUM codes and the other parameters "
         "of the axis (16#8043). An \"Immediately\" parameter is in effect from the next IPO cycle - a moving "
-        "axis plans again with it (software limits, override 4142, default dynamics, monitoring windows); a "
+        "axis plans again with it (software limits, overrides 4141 / 4142, default dynamics, monitoring windows); a "
         "\"Restart\" parameter answers Done with warning 16#0020 and sets `Statusword.RequestRestart` until "
         "MC_Reset with Restart = TRUE. Written values last through restarts and STOP -> RUN, not through "
         "POWER OFF -> ON. Parameter 4001 = 82 collects changes, 4001 = 81 activates them together. A "

@@ -63,6 +63,9 @@ class DynamicDefaults:
     #: the jerk motions are planned with [length unit/s^3]; ``inf`` when the jerk limit is switched off
     jerk: float = math.inf
     velocity_override: float | None = None   #: velocity override [%] applied to every commanded velocity
+    #: acceleration override [%] scaling the acceleration and deceleration of every motion but an emergency stop
+    #: (the dynamic limits still hold); None: no such override
+    acceleration_override: float | None = None
 
 
 @dataclass(frozen=True, slots=True)

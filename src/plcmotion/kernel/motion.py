@@ -74,6 +74,10 @@ def limits(axis: "PositioningAxis", velocity: float | None = None, *, emergency:
     else:
         dec = dd.deceleration if job is None or job.deceleration is None else job.deceleration
     j = dd.jerk if job is None or job.jerk is None else job.jerk
+    ov = getattr(dd, "acceleration_override", None)   # stand-in configurations of tests may lack it
+    if ov is not None and not emergency:        # an acceleration override scales both, within the limits
+        acc *= ov / 100.0
+        dec *= ov / 100.0
     amax_lim, dmax_lim = dl.max_acceleration, dl.max_deceleration
     if amax_lim is not None and acc > amax_lim * (1 + 1e-12):
         acc = amax_lim

@@ -20,7 +20,11 @@ from .end_pos import MC_MoveToEndPos
 from .dataset import MC_ChangeDataset
 from .homing import MC_Home
 from .move import MC_MoveAbsolute, MC_MoveAdditive, MC_MoveRelative, MC_MoveSuperImposed, MC_MoveVelocity
+from .activation import MC_ActivateDPSlave, MC_ActivateTO
+from .parameter_fbs import MC_ReadSysParameter, MC_WriteParameter
+from .periphery import MC_ReadPeriphery, MC_WritePeriphery
 from .power import MC_Power, MC_Reset
+from .records import MC_ReadDriveParameter, MC_ReadRecord, MC_WriteDriveParameter, MC_WriteRecord
 from .stop import MC_Halt, MC_Stop
 from .technology import NAME, TechnologyDevice, device
 from .technology.cam_disk import CamDisk, add_cam_disk
@@ -34,6 +38,7 @@ def ob65(ctl: Any, fn: Callable[[], Any] | None = None, *, name: str | None = No
 
 __all__ = ["MC_Power", "MC_Reset", "MC_Home", "MC_Stop", "MC_Halt", "MC_MoveAbsolute", "MC_MoveRelative",
            "MC_MoveAdditive", "MC_MoveSuperImposed", "MC_MoveVelocity", "MC_MoveToEndPos", "MC_SetTorqueLimit",
-           "MC_SetCharacteristic", "MC_ChangeDataset", "CamDisk", "add_cam_disk", "NAME", "TechnologyDevice", "device",
-           "ob65", "describe",
-           "errors"]
+           "MC_SetCharacteristic", "MC_ChangeDataset", "MC_ReadSysParameter", "MC_WriteParameter", "MC_ReadPeriphery",
+           "MC_WritePeriphery", "MC_ReadRecord", "MC_WriteRecord", "MC_ReadDriveParameter", "MC_WriteDriveParameter",
+           "MC_ActivateTO", "MC_ActivateDPSlave", "CamDisk", "add_cam_disk", "NAME", "TechnologyDevice", "device",
+           "ob65", "describe", "errors"]

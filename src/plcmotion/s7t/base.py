@@ -25,6 +25,7 @@ from ..kernel.faults import Fault
 from ..kernel.jobs import Job, JobState
 from ..kernel.profiles import INF
 from . import errors as E
+from .technology import activation
 from .technology.axes import AxisT
 from .technology.builder import POSITIONING, SPEED, SYNCHRONIZATION
 from .technology.device import TechnologyDevice, current
@@ -42,6 +43,8 @@ class _S7T:
     TECHNOLOGIES: ClassVar[tuple[int, ...]] = ALL_AXES
     #: the instruction also takes the MCDevice DB (MC_Reset)
     TAKES_MCDEVICE: ClassVar[bool] = False
+    #: the instruction serves a deactivated technology object (MC_ActivateTO); others give 16#8045
+    WHILE_DEACTIVATED: ClassVar[bool] = False
 
     ENO = True
 
@@ -85,6 +88,8 @@ class _S7T:
             raise InstructionError(E.NOT_SUPPORTED_BY_TO)
         if not isinstance(to, AxisT) or to.technology not in self.TECHNOLOGIES:
             raise InstructionError(E.NOT_SUPPORTED_BY_TO)
+        if not self.WHILE_DEACTIVATED and activation.deactivated(to):
+            raise InstructionError(E.NOT_ALLOWED_IN_STATE)      # deactivated by MC_ActivateTO (§6.7.2)
         self._register(to)
         object.__setattr__(self, "_to", to)
         return to

@@ -117,7 +117,8 @@ def _axis_config(p: Mapping[str, Any]) -> AxisConfig:
             deceleration=p[f"{DYN}.negativeaccel"],
             emergency_deceleration=p["TypeOfAxis.EmergencyRampGenerator.maxDeceleration"],
             jerk=jerk if jerk > 0.0 else math.inf,
-            velocity_override=p["override.velocity"]),
+            velocity_override=p["override.velocity"],
+            acceleration_override=p.get("override.acceleration")),
         software_limits=SoftwareLimits(
             enabled=p["swlimit.state"] == ACTIVE,
             minimum=p["swlimit.minusposition"],

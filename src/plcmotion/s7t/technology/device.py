@@ -70,6 +70,8 @@ class TechnologyDevice:
         self._done_flags = [False] * 32
         self._watches: list[_DoneWatch] = []
         self.updates = 0                            # DB updates since the controller started
+        #: called with the reason at the end of :meth:`reinitialize` ("startup", "power")
+        self.on_reinitialize: list[Callable[[str], None]] = []
         ctl.on_post_servo(self._on_ipo)
         # an INT at an instruction's Axis input names a DB of the CPU whose program runs (see ``current``)
         ctl.program(self._enter, name="S7-Technology (DB numbers of this CPU)")
@@ -112,6 +114,8 @@ class TechnologyDevice:
         self._objects[to.db_number] = to
         self._axis_dbs.append(to.db)
         self._rows = np.array([db._axis.index for db in self._axis_dbs], dtype=np.intp)
+        from .dp_drive import bus                 # the drive's DP slave shows in StationLifeList from the start
+        bus(self).refresh()
 
     def register_object(self, to: Any) -> None:
         """Make the technology DB ``to.db`` of a technology object that is no axis known under its number."""
@@ -209,6 +213,8 @@ class TechnologyDevice:
         self._ipo = 0
         self.mcdevice._write(MaxLoopDuration=0.0, CmdLoopDuration=0.0, TODBTaskOverflows=0,
                              DoneFlag=Array(1, [False] * 32))
+        for hook in tuple(self.on_reinitialize):
+            hook(reason)
 
 
 __all__ = ["TechnologyDevice", "current", "MCDEVICE_DB", "UPDATE_ACTIVE", "INTEGRATED_INPUTS", "INTEGRATED_OUTPUTS"]

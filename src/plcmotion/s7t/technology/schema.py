@@ -20,6 +20,7 @@ from ...kernel.schema import E12, INT, REAL, WP, R, AxisSchema, Issue, Param
 from . import hydraulic_params as H
 from .datasets import DATASET_PARAMS, dataset_rule_issues
 from .homing_params import HOMING_PARAMS, homing_rule_issues
+from .schema_io import IO_PARAMS
 from .builder import (DYN, FE, GEAR, PV, TELEGRAMS_NO_ENCODER, TELEGRAMS_ONE_ENCODER, TELEGRAMS_TWO_ENCODERS,
                       axis_config, max_drive_velocity)
 
@@ -145,7 +146,8 @@ def rule_issues(cfg: Mapping[str, Any]) -> list[Issue]:
     return issues + homing_rule_issues(cfg) + dataset_rule_issues(cfg)
 
 
-AXIS = AxisSchema("S7-Technology axis", _PARAMS + H.PARAMS + HOMING_PARAMS + DATASET_PARAMS + PLANT_PARAMS,
+AXIS = AxisSchema("S7-Technology axis",
+                  _PARAMS + H.PARAMS + HOMING_PARAMS + DATASET_PARAMS + IO_PARAMS + PLANT_PARAMS,
                   rules=rule_issues, canonical=canonical, build=axis_config, real_type="Real")
 
 __all__ = ["AXIS", "FAMILY_TAGS", "DIRECTIONS", "canonical", "rule_issues"]

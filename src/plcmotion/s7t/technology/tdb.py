@@ -20,6 +20,7 @@ from ...kernel.jobs import JobKind, JobState
 from ...kernel.motion import limits
 from ...kernel.tag_views import TagAccessError
 from ...kernel.words import DWord, word_type
+from . import activation
 from .to_errors import ERROR_STATUS_BITS, ErrorRecord
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -131,6 +132,10 @@ class AxisDB(TechnologyDB):
         """Write the whole DB from the axis's state at ``t`` (one DB update, §7.11 step 2); the bank values
         of all axes come in one gather (``device.TechnologyDevice.update``)."""
         ax = self._axis
+        if activation.deactivated(ax):
+            # not processed (§6.7.2): the DB keeps its values, only Statusword.ToDeactivated is shown
+            self._write(Statusword=Statusword(int(self.Statusword) | 1 << STATUSWORD_BITS["ToDeactivated"]))
+            return
         if ax.without_encoder:
             act_v = 0.0
         last = self._last
@@ -144,6 +149,8 @@ class AxisDB(TechnologyDB):
         d["ActualVelocity"] = act_v
         d["ActualAcceleration"] = a_act
         d["SpeedOverride"] = 100.0 if override is None else float(override)
+        acc_override = ax.config.defaults.acceleration_override
+        d["AccelerationOverride"] = 100.0 if acc_override is None else float(acc_override)
         if ax.positioning:
             d["ActualPosition"] = ax._wrap(act_p)
             d["CommandPosition"] = ax._wrap(sp_p)

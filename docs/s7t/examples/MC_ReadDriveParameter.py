@@ -1,0 +1,23 @@
+"""MC_ReadDriveParameter: read p2000 (reference speed, REAL) of the drive at logical base address 256; Busy
+while the request travels to the drive and back (S7-Technology V4.1 §6.7.10)."""
+import struct
+
+from plcmotion import Controller
+from plcmotion.s7t import MC_ReadDriveParameter
+
+ctl = Controller(family="S7-Technology", servo_cycle=0.002, app_cycle=0.004)
+ctl.add_positioning_axis("Axis1", {"Drive": {"ReferenceSpeed": 3000.0}})
+data = bytearray(4)
+read = MC_ReadDriveParameter()
+calls = []
+
+
+@ctl.program
+def ob1():
+    read(Execute=True, Address=256, ParameterNumber=2000, NumberOfElements=0, Data=data)
+    calls.append("Busy" if read.Busy else "Done" if read.Done else "Error")
+
+
+ctl.run(0.02)
+assert calls[:3] == ["Busy", "Busy", "Done"] and read.DataLength == 4
+print(f"p2000 = {struct.unpack('>f', data)[0]} 1/min; outputs per call: {calls[:3]}")

@@ -1,0 +1,20 @@
+"""MC_ReadSysParameter: read the positive software limit switch (parameter 3, REAL) and the default direction
+(parameter 4241, ENUM EnumDirection) of an axis by number (S7-Technology V4.1 §6.7.4)."""
+from plcmotion import Controller
+from plcmotion.s7t import MC_ReadSysParameter
+
+ctl = Controller(family="S7-Technology", servo_cycle=0.002, app_cycle=0.004)
+axis = ctl.add_positioning_axis("Axis1", {"Wizard": {"Virtual": 1}, "swlimit.plusposition": 250.0})
+read_limit, read_direction = MC_ReadSysParameter(), MC_ReadSysParameter()
+
+
+@ctl.program
+def ob1():
+    read_limit(Axis=axis.db_number, Execute=True, ParameterNumber=3)
+    read_direction(Axis=axis.db_number, Execute=True, ParameterNumber=4241)
+
+
+ctl.run(0.02)
+assert read_limit.Done and read_limit.Value == 250.0
+assert read_direction.Done and read_direction.ValueDInt == 5          # POSITIVE
+print(f"swlimit.plusposition = {read_limit.Value}, userdefaultdynamics.direction = {read_direction.ValueDInt}")

@@ -7,7 +7,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from plcmotion.kernel.errors import ConfigurationError
-from plcmotion.s7t import MC_MoveRelative, MC_MoveVelocity, MC_Power, MC_SetCharacteristic, add_cam_disk
+from plcmotion.s7t import (MC_MoveRelative, MC_MoveVelocity, MC_Power, MC_Reset, MC_SetCharacteristic, MC_Stop,
+                           add_cam_disk)
 
 from _s7t_rig import controller
 
@@ -149,6 +150,29 @@ def test_s7t_hydraulic_set_characteristic_error_ids():
         fb(**{"Axis": r.axis, "Execute": True, **inputs})
         assert fb.Error and fb.ErrorID == code, (inputs, fb)
         assert "CommandAborted" not in fb.outputs
+
+
+def test_s7t_hydraulic_set_characteristic_during_stop_and_restart():
+    """S7-Technology V4.1 §6.8.3 (MC_SetCharacteristic row: MC_Stop no influence, a running restart refuses,
+    16#8045 as for every command during a restart, §6.7.1; decisions D28/D31), §6.2.13: during a held MC_Stop
+    the profile is activated (Done, MC_Stop stays Busy); while MC_Reset Restart runs, 16#8045."""
+    r = Rig()
+    stop, fb = MC_Stop(), MC_SetCharacteristic()
+    stop(Axis=r.axis, Execute=True)
+    r.ctl.run(0.1)
+    fb(Axis=r.axis, CamTable=20, Execute=True)
+    stop(Axis=r.axis, Execute=True)
+    assert fb.Done and not fb.Error
+    assert stop.Busy and not stop.CommandAborted
+    r.inputs["Enable"] = False
+    stop(Axis=r.axis, Execute=False)
+    r.ctl.run(0.5)
+    assert r.axis.state == "disabled"
+    reset, during = MC_Reset(), MC_SetCharacteristic()
+    reset(Axis=r.axis, Execute=True, Restart=True)
+    assert reset.Busy
+    during(Axis=r.axis, CamTable=20, Execute=True)
+    assert during.Error and during.ErrorID == 0x8045
 
 
 @pytest.mark.parametrize("params, tag", [

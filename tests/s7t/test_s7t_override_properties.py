@@ -1,14 +1,16 @@
 """Invariants of the command interaction (S7-Technology V4.1 §6.8, §6.2.3, §6.2.6, §6.2.10) under any sequence of
 valid commands, OB1 cycle by OB1 cycle: a command refused at its start gets only an ErrorID of the interaction
 (8005, 8045, 8055); no motion command starts while an MC_Stop holds the axis; only a new MC_Stop sets an
-MC_Stop's CommandAborted; at most one basic command waits behind the running one.
+MC_Stop's CommandAborted; at most one basic command waits behind the running one; MC_Home Mode 3/4 (§6.2.2: no
+MC_Stop lock, refused only by a restart) always start, MC_Home Mode 8 without a passive homing gets 8045.
+(MC_ChangeDataset is not in the pool: the axis is virtual, which has one data set, 16#804D.)
 """
 from __future__ import annotations
 
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from plcmotion.s7t import (MC_Halt, MC_MoveAbsolute, MC_MoveAdditive, MC_MoveRelative, MC_MoveSuperImposed,
+from plcmotion.s7t import (MC_Halt, MC_Home, MC_MoveAbsolute, MC_MoveAdditive, MC_MoveRelative, MC_MoveSuperImposed,
                            MC_MoveVelocity, MC_Stop)
 
 from _s7t_rig import enabled
@@ -26,6 +28,7 @@ POOL = [
     (MC_MoveSuperImposed, dict(Distance=5.0, VelocityDiff=10.0, **DYN), (0,)),
     (MC_Stop, dict(Deceleration=300.0, Jerk=0.0), (0,)),
     (MC_Stop, dict(Deceleration=100.0, Jerk=0.0), (0,)),
+    (MC_Home, dict(Position=5.0), (3, 4, 8)),
 ]
 INTERACTION = {0x8005, 0x8045, 0x8055}
 BASIC = (MC_MoveAbsolute, MC_MoveRelative, MC_MoveAdditive, MC_MoveVelocity, MC_Halt)
@@ -42,7 +45,8 @@ def step(draw):
 @given(st.lists(step(), min_size=1, max_size=25))
 def test_s7t_interaction_invariants(steps):
     """S7-Technology V4.1 §6.8 with §6.2.3 (MC_Stop lock 8045, CommandAborted only by MC_Stop), §6.2.6 / §6.2.10
-    (Mode 1/2: 8055, one waiting command: 8005)."""
+    (Mode 1/2: 8055, one waiting command: 8005), §6.2.2 MC_Home Mode 3/4/8 (§6.8.2:
+    nothing refuses Mode 3/4 here)."""
     ctl, axis, _ = enabled()
     fbs = [cls() for cls, _, _ in POOL]
     execute = [False] * len(POOL)
@@ -63,7 +67,11 @@ def test_s7t_interaction_invariants(steps):
                     f = fbs[j]
                     if f.Error:
                         assert f.ErrorID in INTERACTION, (cls.__name__, hex(f.ErrorID))
-                    if locked and cls is not MC_Stop:
+                    if cls is MC_Home and mode[j] != 8:
+                        assert not f.Error, (cls.__name__, mode[j], hex(f.ErrorID))
+                    elif cls is MC_Home:
+                        assert f.Error and f.ErrorID == 0x8045      # no passive homing in the pool
+                    elif locked and cls is not MC_Stop:
                         assert f.Error and f.ErrorID == 0x8045, cls.__name__
             for j, (cls, inputs, modes) in enumerate(POOL):       # a second call: every output up to date
                 fbs[j](Axis=axis, Execute=execute[j], **inputs, **({"Mode": mode[j]} if len(modes) > 1 else {}))

@@ -13,6 +13,7 @@ from ..kernel.jobs import Job, JobKind, JobState
 from . import errors as E
 from .base import ALL_AXES, ExecuteInstruction, InstructionError, as_bool, integer
 from .technology import datasets as D
+from .technology import override
 from .technology.axes import AxisT
 
 
@@ -47,8 +48,12 @@ class MC_ChangeDataset(ExecuteInstruction):  # noqa: N801 - instruction name of 
         if axis.virtual:
             raise InstructionError(E.INVALID_AXIS_TYPE)
         mode = eff[f"{D.DATA_SETS}.changeMode"]
-        if mode == D.NEVER or axis.restarting:
+        if mode == D.NEVER:
             raise InstructionError(E.NOT_ALLOWED_IN_STATE)
+        reject = override.refusal(override.CHANGE_DATASET, axis._activities())
+        if reject is not None:                              # §6.8.3: only a running restart refuses it (8045)
+            code = E.fb_error(reject.fault())
+            raise InstructionError(E.NOT_ALLOWED_IN_STATE if code is None else code)
         job = Job(JobKind.RESET, mode=wanted, owner=self)   # no motion: a command of the object itself
         job.extra.update(dataset=wanted, change_mode=mode, axis=axis)
         self._try(job)

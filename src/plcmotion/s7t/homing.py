@@ -16,8 +16,10 @@ sequences, distance monitoring (16#801D in the technology DB) and the correction
 from __future__ import annotations
 
 from ..kernel.jobs import Job, JobKind, JobState
+from ..kernel.policy import ABORT
 from . import errors as E
 from .base import POSITION_AXES, ExecuteInstruction, InstructionError, integer, real
+from .technology import override
 from .technology.axes import AxisT
 from .technology.homing_params import ENC, MODE_NO_REFERENCE
 
@@ -44,6 +46,7 @@ class MC_Home(ExecuteInstruction):  # noqa: N801 - instruction name of the manua
         self._check(axis, mode)
         if mode == CANCEL_PASSIVE:
             job = Job(JobKind.HOME_CANCEL, mode=mode, owner=self)
+            self._interact(axis, override.HOME_CANCEL, job)
             if not axis.homing.cancel_passive():
                 raise InstructionError(E.NOT_ALLOWED_IN_STATE)   # none armed, or it has homed already
             job.finish(JobState.DONE)
@@ -53,9 +56,12 @@ class MC_Home(ExecuteInstruction):  # noqa: N801 - instruction name of the manua
                 position = axis.eff["userdefaulthoming.homeposition"]
             kind = JobKind.HOME_PASSIVE if mode == PASSIVE else JobKind.HOME_ACTIVE
             job = Job(kind, position=position, mode=2 if mode == PASSIVE else 3, owner=self)
-            axis.home(job)
+            if mode == PASSIVE:
+                self._interact(axis, override.HOME_PASSIVE, job)
+            axis.home(job)                       # Mode 0/1: the kernel's job start applies the policy
             return job
         job = Job(JobKind.HOME_DIRECT, position=position, mode=mode, owner=self)
+        self._interact(axis, override.HOME_SET, job)
         if mode == DIRECT:
             axis.homing.set_position(job)
         elif mode == ABSOLUTE_ENCODER:
@@ -66,6 +72,25 @@ class MC_Home(ExecuteInstruction):  # noqa: N801 - instruction name of the manua
             layer = "base" if mode == CORRECT_SUPERIMPOSED and axis.following_mode else _CORRECTIONS[mode]
             axis.homing.correct(job, layer)
         return job
+
+    def _interact(self, axis: AxisT, new: str, job: Job) -> None:
+        """§6.8 for the modes that start no kernel job (2, 3-7, 8): the policy's refusal (its ErrorID), else
+        the activities it aborts end with CommandAborted.  An aborted active homing would leave its approach
+        motion running without a job, so the axis brakes with the configured deceleration (an MC_Halt of
+        its own, which the policy lets abort the homing; docs/s7t/decisions.md D26, D65)."""
+        reject = override.refusal(new, axis._activities(), job)
+        if reject is not None:
+            code = E.fb_error(reject.fault())
+            raise InstructionError(E.NOT_ALLOWED_IN_STATE if code is None else code)
+        running = axis.job
+        if running is not None and running.busy and running.kind == JobKind.HOME_ACTIVE \
+                and override.POLICY.cell(new, override.HOME_ACTIVE) is ABORT:
+            brake = Job(JobKind.HALT)
+            axis.submit(brake)
+            if brake.state == JobState.ERROR:            # the axis cannot brake: leave the homing running
+                raise InstructionError(E.NOT_ALLOWED_IN_STATE)
+        if new != override.HOME_CANCEL:          # Mode 8 ends its passive homing itself (cancel_passive)
+            axis._override(new, axis.now, job)
 
     def _check(self, axis: AxisT, mode: int) -> None:
         """The §6.2.2 restrictions of ``mode`` on this axis, in the order the manual lists them."""

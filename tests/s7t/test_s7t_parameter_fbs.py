@@ -378,3 +378,20 @@ def test_s7t_write_acceleration_override_acts_on_the_next_motion():
     assert float(ctl.bank.sp_v[axis.index]) == pytest.approx(25.0, abs=0.5)
     ctl.run(0.6)
     assert float(ctl.bank.sp_v[axis.index]) == pytest.approx(50.0)
+
+
+def test_s7t_read_parameter_of_a_data_set_without_own_value():
+    """S7-Technology V4.1 §6.7.4 with §3.1.10 data sets: an axis with two data sets reads Kv (number 2033) of
+    data set 2 as data set 1's when data set 2 sets none, and 8080 for data set 3 it does not have; an
+    MC_ReadSysParameter never ends in an internal error (16#8001) for a data set index (merge defect: data
+    set tags without a value made the read raise)."""
+    ctl = controller()
+    axis = ctl.add_positioning_axis("A", {"TypeOfAxis.Homing.referencingNecessary": 0,     # a real axis
+                                          "TypeOfAxis.NumberOfDataSets.numberOfDataSets": 2,
+                                          "TypeOfAxis.NumberOfDataSets.DataSet_1.ControllerStruct.PV_Controller.kv": 25.0})
+    for index, error_id, value in ((1, 0, 25.0), (2, 0, 25.0), (3, 0x8080, None)):
+        fb = MC_ReadSysParameter()
+        fb(Axis=axis, Execute=True, ParameterNumber=2033, Index=index)
+        assert fb.ErrorID == error_id and fb.Error == (error_id != 0)
+        if value is not None:
+            assert fb.Done and fb.Value == value

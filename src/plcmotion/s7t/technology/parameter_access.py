@@ -181,6 +181,8 @@ def resolve(axis: "AxisT", number: int, index: int) -> Access | int:
     tag = _tag(p, i)
     if tag not in axis.schema.params:
         return INVALID_NUMBER                 # not configured on this axis (S7T Config)
+    if ".DataSet_" in tag and i > axis.parameters.effective.get("TypeOfAxis.NumberOfDataSets.numberOfDataSets", 1):
+        return INVALID_NUMBER                 # a data set the axis does not have (§3.1.10)
     return Access(p, tag, output_of(p))
 
 
@@ -202,6 +204,12 @@ def read(axis: "AxisT", number: int, index: int) -> tuple[int, str, Any]:
         held = _writes(axis).held
         if acc.tag in held:
             value = held[acc.tag]
+        if value is None and ".DataSet_" in acc.tag:
+            # a data set without its own value of this parameter uses data set 1's (s7t/technology/datasets.py)
+            first = _tag(p, 1)
+            value = store.effective.get(first) if p.needs_restart else store.values.get(first)
+        if value is None:
+            return INVALID_NUMBER, acc.output, 0.0    # an optional tag without a value: not configured
     if acc.output == OUT_REAL:
         value = float(value)
         if not math.isfinite(value):

@@ -82,7 +82,8 @@ swlimit.*), and instead of 4. and 7.: the REAL members of the technology DB are 
 at most one of Done/CommandAborted/Error (MC_MoveVelocity: InVelocity without Busy counts as Done), none
 with Busy (S7-Technology V4.1 §5.8); 10. errorid: ErrorID is 0 or a code of the FB's table of §6
 (``plcmotion.s7t.fb_errors.fb_codes``), Error only with an 16#8xxx code; 16#8001 (internal error) is a
-failure of kind "internal".
+failure of kind "internal"; 6. also strictly: a generated setpoint does not pass an effective SW limit
+switch at all (§4.5.7.3: the axis travels up to the switch).
 
 Not checked (yet): HW limit switches, physical drive behaviour (the simulated drive's actual values are
 only required to be finite), following error or positioning monitoring alarms, the exact ramps of the

@@ -574,6 +574,10 @@ class Run:
         if w.inside is None or w.inside[:2] != (lo, hi) or jump:
             w.inside = None            # limits changed, or the coordinate was set (homing): not a motion
             return
+        if self.s7t and not b.follow_act[i] and max(lo - p, p - hi) > 1e-9 * (1.0 + abs(lo) + abs(hi)):
+            # S7-Technology V4.1 §4.5.7.3: the axis travels up to the software limit switch, not beyond it
+            self._fail("swlimit", ax.name, f"setpoint {p:.9g} beyond the SW limit [{lo:g}, {hi:g}] "
+                       f"(S7-Technology: up to the switch)", "", (self.ep.family(), "setpoint"))
         _, _, v_in, fe_in = w.inside
         app = self.ctl.app_cycle
         v_ref = v_in + w.alim * app    # not capped at MaxVelocity: a superimposed part may add to it

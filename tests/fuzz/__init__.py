@@ -9,7 +9,8 @@ multi-process campaigns), ``machine`` (the hypothesis RuleBasedStateMachine), ``
 
 What is driven
 --------------
-Dialects S7-1200 V6, S7-1200 V7 (``technology_version=7``), S7-1500 and S7-1500T (and S7-Technology, below); 1-2 positioning axes
+Dialects S7-1200 V6, S7-1200 V7 (``technology_version=7``), S7-1500 and S7-1500T (S7-Technology: below);
+1-2 positioning axes
 (S7-1200: Actor.Type 0 analog, 1 PROFIdrive, 2 PTO, optionally simulated, homing switch; S7-1500: real
 analog/PROFIdrive, virtual or simulated), up to 2 following axes, cams (linear, cubic, Bézier, with and
 without boundary conditions), a command table, a leading axis proxy whose telegrams are sometimes NaN,

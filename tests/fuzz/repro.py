@@ -112,7 +112,8 @@ def script(ep: Episode, failure: Failure | None = None) -> str:
     classes = sorted({f["cls"] for f in ep.fbs})
     lines = [
         f"# fuzz episode seed {ep.seed} ({ep.dialect})" + (f": {failure.kind} - {failure.message}" if failure else ""),
-        f"# replay: python -m tests.fuzz --replay {ep.seed}" + (" --dialect 'S7-Technology'" if ep.dialect == "S7-Technology" else ""),
+        f"# replay: python -m tests.fuzz --replay {ep.seed}"
+        + (" --dialect 'S7-Technology'" if ep.dialect == "S7-Technology" else ""),
         "import numpy as np",
         "from plcmotion import Controller",
         "from plcmotion.s7_1200 import variables",

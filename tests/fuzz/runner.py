@@ -558,7 +558,8 @@ class Run:
         if self.s7t:
             lo, hi = _num(ax.eff.get("swlimit.minusposition")), _num(ax.eff.get("swlimit.plusposition"))
         else:
-            lo, hi = _num(ax.eff.get("PositionLimits_SW.MinPosition")), _num(ax.eff.get("PositionLimits_SW.MaxPosition"))
+            lo = _num(ax.eff.get("PositionLimits_SW.MinPosition"))
+            hi = _num(ax.eff.get("PositionLimits_SW.MaxPosition"))
         if lo is None or hi is None or lo >= hi:
             w.inside = None
             return

@@ -111,6 +111,7 @@ class _AxisWatch:
         self.inside: tuple | None = None   # SW limits: (min, max, v_ref) while inside
         self.stop_acc = math.inf
         self.last_p: float | None = None
+        self.sp_in = False         # S7-Technology: the setpoint was inside the SW limits at the last check
 
     def _tags(self, paths: tuple[str, ...]) -> list[float]:
         out = []
@@ -554,6 +555,7 @@ class Run:
             on = False
         if not on or w.coupled():
             w.inside = w.last_p = None
+            w.sp_in = False
             return
         if self.s7t:
             lo, hi = _num(ax.eff.get("swlimit.minusposition")), _num(ax.eff.get("swlimit.plusposition"))
@@ -569,14 +571,18 @@ class Run:
         v = abs(b.sp_v[i])
         jump = w.last_p is not None and abs(p - w.last_p) > self._peak_v[k] * self.ctl.app_cycle * 1.01 + 1e-6
         w.last_p = p
+        sp_was_in, w.sp_in = w.sp_in, lo <= p <= hi
         if lo <= p <= hi and lo <= act <= hi:
             w.inside = (lo, hi, v, abs(b.fe[i]))
             return
         if w.inside is None or w.inside[:2] != (lo, hi) or jump:
             w.inside = None            # limits changed, or the coordinate was set (homing): not a motion
             return
-        if self.s7t and not b.follow_act[i] and max(lo - p, p - hi) > 1e-9 * (1.0 + abs(lo) + abs(hi)):
-            # S7-Technology V4.1 §4.5.7.3: the axis travels up to the software limit switch, not beyond it
+        if self.s7t and sp_was_in and ax.state == "enabled" and not b.follow_act[i] \
+                and max(lo - p, p - hi) > 1e-9 * (1.0 + abs(lo) + abs(hi)):
+            # S7-Technology V4.1 §4.5.7.3: a motion travels up to the software limit switch, not beyond it.  Not
+            # MC_Power's stop programs (disabling): TimeStop brakes in its time, the braking-distance rule
+            # above bounds them (fuzz seed 202479)
             self._fail("swlimit", ax.name, f"setpoint {p:.9g} beyond the SW limit [{lo:g}, {hi:g}] "
                        f"(S7-Technology: up to the switch)", "", (self.ep.family(), "setpoint"))
         _, _, v_in, fe_in = w.inside

@@ -9,7 +9,8 @@ multi-process campaigns), ``machine`` (the hypothesis RuleBasedStateMachine), ``
 
 What is driven
 --------------
-Dialects S7-1200 V6, S7-1200 V7 (``technology_version=7``), S7-1500 and S7-1500T; 1-2 positioning axes
+Dialects S7-1200 V6, S7-1200 V7 (``technology_version=7``), S7-1500 and S7-1500T (S7-Technology: below);
+1-2 positioning axes
 (S7-1200: Actor.Type 0 analog, 1 PROFIdrive, 2 PTO, optionally simulated, homing switch; S7-1500: real
 analog/PROFIdrive, virtual or simulated), up to 2 following axes, cams (linear, cubic, Bézier, with and
 without boundary conditions), a command table, a leading axis proxy whose telegrams are sometimes NaN,
@@ -69,6 +70,21 @@ Invariants and their scope
    passive modes, MC_GearInPos/MC_CamIn waiting for the leading axis, MC_CommandTable wait steps,
    velocity and jog commands, MC_Stop holding the axis while Execute is TRUE).
 9. setup: a generated configuration (always within the documented ranges) is accepted.
+
+S7-Technology (``gen_s7t``, only with ``--dialect S7-Technology``: seeds without a dialect draw from the
+four dialects above as before, so old seeds give the same episodes): 1-4 speed-controlled, positioning and
+synchronization axes, real or virtual, modulo, SW limits on/off, "Homing required" YES/NO; MC_Power (Mode,
+StopMode, QOutputValue), MC_Reset (with/without Restart, also on the MCDevice DB), MC_Stop (held),
+MC_Halt, MC_MoveAbsolute/-Relative/-Additive/-SuperImposed/-Velocity with Mode/Direction/DoneFlag in and
+out of range, ``Axis`` as object, as DB number (valid, MCDevice, none, wrong type); rapid Execute and
+MC_Power toggling, appended and overlaid commands.  The invariants above apply with the family's tags
+(TypeOfAxis.MaxVelocity/MaxAcceleration/MaxJerk.maximum, EmergencyRampGenerator.maxDeceleration,
+swlimit.*), and instead of 4. and 7.: the REAL members of the technology DB are finite after every cycle;
+at most one of Done/CommandAborted/Error (MC_MoveVelocity: InVelocity without Busy counts as Done), none
+with Busy (S7-Technology V4.1 §5.8); 10. errorid: ErrorID is 0 or a code of the FB's table of §6
+(``plcmotion.s7t.fb_errors.fb_codes``), Error only with an 16#8xxx code; 16#8001 (internal error) is a
+failure of kind "internal"; 6. also strictly: a generated setpoint does not pass an effective SW limit
+switch at all (§4.5.7.3: the axis travels up to the switch).
 
 Not checked (yet): HW limit switches, physical drive behaviour (the simulated drive's actual values are
 only required to be finite), following error or positioning monitoring alarms, the exact ramps of the

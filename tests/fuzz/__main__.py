@@ -23,14 +23,14 @@ def _path() -> None:
 def main(argv: list[str] | None = None) -> int:
     _path()
     from .campaign import campaign, report
-    from .gen import DIALECTS, generate
+    from .gen import ALL_DIALECTS, generate
     from .repro import replay_log, script, shrink
 
     ap = argparse.ArgumentParser(prog="python -m tests.fuzz", description="plcmotion fuzz campaigns")
     ap.add_argument("--episodes", type=int, default=1000)
     ap.add_argument("--seed", type=int, default=0, help="first seed (episodes use seed, seed+1, ...)")
     ap.add_argument("--jobs", type=int, default=1, help="worker processes")
-    ap.add_argument("--dialect", choices=DIALECTS, default=None, help="only this dialect (default: all, by seed)")
+    ap.add_argument("--dialect", choices=ALL_DIALECTS, default=None, help="only this dialect (default: all, by seed)")
     ap.add_argument("--replay", type=int, metavar="SEED", help="rerun one episode, printing the FB call log")
     ap.add_argument("--script", action="store_true", help="with --replay: print the reproducer script")
     ap.add_argument("--ignore", action="append", default=[], metavar="SIGNATURE",

@@ -11,9 +11,15 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from . import values as V
+from .gen_s7t import CATALOG as _S7T_CATALOG
+from .gen_s7t import S7T, generate_s7t
 from .values import Ref, TagRefSpec, VarSpec
 
 DIALECTS = ("S7-1200 V6", "S7-1200 V7", "S7-1500", "S7-1500T")
+#: every dialect the fuzzer knows.  A seed without a dialect draws from DIALECTS only, so that the seeds of
+#: the campaigns before S7-Technology still give the same episodes; S7-Technology (gen_s7t) is fuzzed when
+#: asked for (``--dialect S7-Technology``, the CI test of each dialect).
+ALL_DIALECTS = DIALECTS + ("S7-Technology",)
 
 
 @dataclass
@@ -228,6 +234,8 @@ _TO_KINDS = ("axis", "any_to", "slave", "master", "cam", "table")
 
 def catalog(dialect: str) -> dict[str, dict[str, Any]]:
     """Instruction name -> {input: kind} for a dialect."""
+    if dialect == S7T:
+        return _S7T_CATALOG
     if dialect.startswith("S7-1200"):
         return _MOVE_1200
     if dialect == "S7-1500":
@@ -422,6 +430,11 @@ def _scenarios(rnd: random.Random, ep: Episode, gen: Gen) -> None:
 def generate(seed: int, dialect: str | None = None, *, max_cycles: int = 200) -> Episode:
     rnd = random.Random(seed)
     dialect = dialect or DIALECTS[rnd.randrange(len(DIALECTS))]
+    if dialect == S7T:
+        ep = Episode(seed, dialect, {"servo_cycle": rnd.choice((0.001, 0.002)), "app_cycle": rnd.choice((0.004, 0.008)),
+                                     "family": dialect}, cycles=rnd.randint(30, max_cycles))
+        generate_s7t(rnd, ep)
+        return ep
     if dialect.startswith("S7-1200"):
         ctl = {"servo_cycle": 0.001, "app_cycle": rnd.choice((0.002, 0.004, 0.004)),
                "technology_version": 7 if dialect.endswith("V7") else 6}

@@ -108,11 +108,12 @@ _EPILOGUE = {
 def script(ep: Episode, failure: Failure | None = None) -> str:
     """Python source that replays ``ep`` with plain plcmotion calls (run with PYTHONPATH=src)."""
     is1500 = ep.family() != "S7-1200"
-    mod = "plcmotion.s7_1500" if is1500 else "plcmotion.s7_1200"
+    mod = "plcmotion.s7t" if ep.dialect == "S7-Technology" else "plcmotion.s7_1500" if is1500 else "plcmotion.s7_1200"
     classes = sorted({f["cls"] for f in ep.fbs})
     lines = [
         f"# fuzz episode seed {ep.seed} ({ep.dialect})" + (f": {failure.kind} - {failure.message}" if failure else ""),
-        f"# replay: python -m tests.fuzz --replay {ep.seed}",
+        f"# replay: python -m tests.fuzz --replay {ep.seed}"
+        + (" --dialect 'S7-Technology'" if ep.dialect == "S7-Technology" else ""),
         "import numpy as np",
         "from plcmotion import Controller",
         "from plcmotion.s7_1200 import variables",

@@ -19,6 +19,8 @@ import numpy as np
 
 import plcmotion.s7_1200 as S12
 import plcmotion.s7_1500 as S15
+import plcmotion.s7t as S7T
+from plcmotion.s7t.fb_errors import fb_codes
 from plcmotion import Controller
 from plcmotion.kernel.tag_views import TagAccessError
 from plcmotion.s7_1200 import variables
@@ -32,7 +34,19 @@ STUCK_SECONDS = 2.5            # Busy at standstill longer than this (virtual ti
 # instructions whose Busy at standstill of all their axes cannot be a legitimate wait
 STUCK_CHECKED = {"MC_MoveAbsolute", "MC_MoveRelative", "MC_Halt", "MC_Reset", "MC_MoveSuperimposed",
                  "MC_PhasingRelative", "MC_PhasingAbsolute", "MC_InterpolateCam", "MC_GetCamLeadingValue",
-                 "MC_GetCamFollowingValue", "MC_ChangeDynamic", "MC_WriteParam"}
+                 "MC_GetCamFollowingValue", "MC_ChangeDynamic", "MC_WriteParam",
+                 # S7-Technology V4.1 (the manual's spelling of FB 413)
+                 "MC_MoveSuperImposed", "MC_MoveAdditive"}
+S7T_DIALECT = "S7-Technology"
+#: the float members of an axis technology DB (S7-Technology V4.1 §7.1, §7.2): finite after every cycle
+S7T_DB_REALS = ("CommandVelocity", "CommandAcceleration", "ActualVelocity", "ActualAcceleration", "SpeedOverride",
+                "AccelerationOverride", "ActualPosition", "CommandPosition", "TargetPosition", "Distance",
+                "DecelerationDistance", "FollowingError")
+#: S7-Technology tags of the bounds (§9.4): maximum velocity, acceleration (= deceleration, the state-dependent
+#: model of §4.5.7.4), emergency ramp and jerk
+_S7T_V = ("TypeOfAxis.MaxVelocity.maximum",)
+_S7T_A = ("TypeOfAxis.MaxAcceleration.maximum", "TypeOfAxis.EmergencyRampGenerator.maxDeceleration")
+_S7T_J = ("TypeOfAxis.MaxJerk.maximum",)
 # outputs that show a job progressing although its axes stand still
 PROGRESS_OUTPUTS = ("CoveredPhaseShift", "AbsolutePhaseShift")
 REL_TOL = 1e-3                 # relative tolerance of the dynamic limits
@@ -85,9 +99,10 @@ def _num(x: Any) -> float | None:
 class _AxisWatch:
     """Running bounds of one axis: the largest dynamics the manual lets its setpoint have."""
 
-    def __init__(self, axis: Any, is1500: bool):
+    def __init__(self, axis: Any, is1500: bool, s7t: bool = False):
         self.axis = axis
         self.is1500 = is1500
+        self.s7t = s7t
         self.vlim = 0.0
         self.alim = 0.0
         self.jlim = 0.0
@@ -96,6 +111,7 @@ class _AxisWatch:
         self.inside: tuple | None = None   # SW limits: (min, max, v_ref) while inside
         self.stop_acc = math.inf
         self.last_p: float | None = None
+        self.sp_in = False         # S7-Technology: the setpoint was inside the SW limits at the last check
 
     def _tags(self, paths: tuple[str, ...]) -> list[float]:
         out = []
@@ -108,7 +124,9 @@ class _AxisWatch:
         return out
 
     def update_bounds(self) -> None:
-        if self.is1500:
+        if self.s7t:
+            v, a, j, stop = self._tags(_S7T_V), self._tags(_S7T_A), self._tags(_S7T_J), self._tags(_S7T_A)
+        elif self.is1500:
             v = self._tags(("DynamicLimits.MaxVelocity",))
             a = self._tags(("DynamicLimits.MaxAcceleration", "DynamicLimits.MaxDeceleration",
                             "DynamicDefaults.EmergencyDeceleration"))
@@ -170,6 +188,7 @@ class Run:
         ep = self.ep
         ctl = self.ctl = Controller(**ep.ctl)
         self.is1500 = ep.family() != "S7-1200"
+        self.s7t = ep.dialect == S7T_DIALECT
         for px in ep.proxies:
             src = FuzzLeadingSource(px["velocity"], px["glitch"], px["gap"], px["seed"])
             self.objs[px["name"]] = ctl.add_leading_axis_proxy(px["name"], {}, source_link=src)
@@ -183,7 +202,7 @@ class Run:
                                                boundary_conditions=c["boundary"])
         for t in ep.tables:
             self.objs[t["name"]] = ctl.add_command_table(t["name"], t["commands"])
-        mod = S15 if self.is1500 else S12
+        mod = S7T if self.s7t else S15 if self.is1500 else S12
         for f in ep.fbs:
             fb = getattr(mod, f["cls"])()
             for k, v in f["init"].items():
@@ -191,9 +210,15 @@ class Run:
             self.fbs[f["name"]] = fb
             self.fb_cls[f["name"]] = f["cls"]
         self.axes = [self.objs[a["name"]] for a in ep.axes]
-        self.getters = [[(tag, ax.tag_getter(tag)) for tag in ("Position", "Velocity", "ActualPosition",
-                                                               "ActualVelocity")] for ax in self.axes]
-        self.watch = [_AxisWatch(ax, self.is1500) for ax in self.axes]
+        if self.s7t:                 # the technology DB's REAL members (§7.1, §7.2)
+            self.getters = [[(f"db.{m}", (lambda db=ax.db, m=m: getattr(db, m))) for m in S7T_DB_REALS
+                             if m in ax.db.__dict__] for ax in self.axes]
+        else:
+            self.getters = [[(tag, ax.tag_getter(tag)) for tag in ("Position", "Velocity", "ActualPosition",
+                                                                   "ActualVelocity")] for ax in self.axes]
+        self.watch = [_AxisWatch(ax, self.is1500, self.s7t) for ax in self.axes]
+        # S7-Technology: an Axis input may be the number of the technology DB (also as INT below 0, §6.9.3)
+        self._by_db = {n: ax for ax in self.axes if self.s7t for n in (ax.db_number, ax.db_number - 65536)}
         self.index = np.array([ax.index for ax in self.axes], dtype=int)
         n = len(self.axes)
         self._peak_v = np.zeros(n)
@@ -320,7 +345,8 @@ class Run:
             ex = fb.__dict__.get("Execute")
             if ex is True and not self._prev_exec.get(name):
                 # a job works on the axes wired at its start, whatever is wired later
-                self._job_axes[name] = [a for a in (fb.__dict__.get(k) for k in ("Axis", "Master", "Slave"))
+                self._job_axes[name] = [a for a in (self._by_db.get(a, a) if self.s7t and type(a) is int else a
+                                                    for a in (fb.__dict__.get(k) for k in ("Axis", "Master", "Slave")))
                                         if a is not None and any(a is x for x in self.axes)]
             self._prev_exec[name] = ex is True
             try:
@@ -383,6 +409,9 @@ class Run:
         if out.get("ErrorID") == 0x8FFF:
             self._fail("internal", name, f"{cls} ErrorID 16#8FFF (internal error), ErrorInfo "
                        f"16#{out.get('ErrorInfo', 0):04X}", "", (cls, "8FFF"))
+        if self.s7t:
+            self._check_outputs_s7t(name, cls, fb, out, outs)
+            return
         finals = [k for k in ("Done", "CommandAborted", "Error") if k in outs and out[k]]
         if "Done" in outs or "CommandAborted" in outs:
             if len(finals) > 1 or (finals and out.get("Busy")):
@@ -405,6 +434,42 @@ class Run:
             moved = progress != self._progress.get(name, progress)
             self._progress[name] = progress
             if still and override and not moved:
+                n = self._busy_still.get(name, 0) + 1
+                self._busy_still[name] = n
+                if n * self.ctl.app_cycle > STUCK_SECONDS:
+                    self._fail("stuck", name, f"{cls} Busy for {STUCK_SECONDS} s with its axes at standstill",
+                               "", (cls,))
+                return
+        self._busy_still.pop(name, None)
+
+    def _check_outputs_s7t(self, name: str, cls: str, fb: Any, out: dict, outs: dict) -> None:
+        """S7-Technology V4.1 §5.8: at most one of Done / CommandAborted / Error (MC_MoveVelocity: InVelocity
+        in place of Done once the command is complete), none of them with Busy except InVelocity (reached,
+        still running); ErrorID only from the FB's table of §6 (fb_errors.fb_codes), 0 without Error/a
+        warning; internal errors (16#8001) are defects."""
+        eid = out.get("ErrorID", 0)
+        if eid == 0x8001 or fb.__dict__.get("_internal_fault") is not None:
+            self._fail("internal", name, f"{cls} ErrorID 16#{eid:04X} (internal error): "
+                       f"{getattr(fb.__dict__.get('_internal_fault'), 'message', '')}", "", (cls, "8001"))
+        if not isinstance(eid, int) or eid not in fb_codes(cls):
+            self._fail("errorid", name, f"{cls} ErrorID {eid!r} is not in its table of §6", "",
+                       (cls, eid if isinstance(eid, int) else type(eid).__name__))
+        if out.get("Error") and not (isinstance(eid, int) and eid >= 0x8000):
+            self._fail("errorid", name, f"{cls} Error with ErrorID 16#{eid:04X}", "", (cls, "error-no-id"))
+        if "Done" in outs or "CommandAborted" in outs:
+            finals = [k for k in ("Done", "CommandAborted", "Error") if k in outs and out[k]]
+            if cls == "MC_MoveVelocity" and out.get("InVelocity") and not out.get("Busy"):
+                finals.append("InVelocity")          # complete (Velocity 0 reached or ended): its Done
+            if len(finals) > 1 or (finals and out.get("Busy")):
+                self._fail("exclusive", name, f"{cls} shows {finals + (['Busy'] if out.get('Busy') else [])} "
+                           f"at once", "", (cls, tuple(finals)))
+        if cls in STUCK_CHECKED and out.get("Busy"):
+            axes = self._job_axes.get(name, [])
+            b = self.ctl.bank
+            still = all(b.sp_v[a.index] == 0.0 and b.sp_a[a.index] == 0.0 and abs(b.act_v[a.index]) < 1e-6
+                        and self._basic_velocity(a.index) == 0.0 for a in axes)
+            override = all(_num(a.cfg.get("override.velocity", 100.0)) not in (None, 0.0) for a in axes)
+            if axes and still and override:
                 n = self._busy_still.get(name, 0) + 1
                 self._busy_still[name] = n
                 if n * self.ctl.app_cycle > STUCK_SECONDS:
@@ -466,8 +531,11 @@ class Run:
                     and abs(b.sp_a[ax.index]) <= w.alim * (1 + REL_TOL) + ABS_TOL):
                 w.grace = False
             return
-        kind = f"actor {ax.cfg.get('Actor.Type')}" + (" virtual" if ax.cfg.get("VirtualAxis.Mode") else "") \
-            + (" simulated" if ax.cfg.get("Simulation.Mode") else "")
+        if self.s7t:
+            kind = f"technology {ax.technology}" + (" virtual" if ax.virtual else "")
+        else:
+            kind = f"actor {ax.cfg.get('Actor.Type')}" + (" virtual" if ax.cfg.get("VirtualAxis.Mode") else "") \
+                + (" simulated" if ax.cfg.get("Simulation.Mode") else "")
         if v > vlim:
             self._fail("velocity", ax.name, f"|setpoint velocity| {v:.6g} > MaxVelocity {w.vlim:.6g} "
                        f"({v / w.vlim:.3g} x), {kind}", "", (self.ep.family(), kind.split()[1]))
@@ -487,8 +555,13 @@ class Run:
             on = False
         if not on or w.coupled():
             w.inside = w.last_p = None
+            w.sp_in = False
             return
-        lo, hi = _num(ax.eff.get("PositionLimits_SW.MinPosition")), _num(ax.eff.get("PositionLimits_SW.MaxPosition"))
+        if self.s7t:
+            lo, hi = _num(ax.eff.get("swlimit.minusposition")), _num(ax.eff.get("swlimit.plusposition"))
+        else:
+            lo = _num(ax.eff.get("PositionLimits_SW.MinPosition"))
+            hi = _num(ax.eff.get("PositionLimits_SW.MaxPosition"))
         if lo is None or hi is None or lo >= hi:
             w.inside = None
             return
@@ -498,12 +571,20 @@ class Run:
         v = abs(b.sp_v[i])
         jump = w.last_p is not None and abs(p - w.last_p) > self._peak_v[k] * self.ctl.app_cycle * 1.01 + 1e-6
         w.last_p = p
+        sp_was_in, w.sp_in = w.sp_in, lo <= p <= hi
         if lo <= p <= hi and lo <= act <= hi:
             w.inside = (lo, hi, v, abs(b.fe[i]))
             return
         if w.inside is None or w.inside[:2] != (lo, hi) or jump:
             w.inside = None            # limits changed, or the coordinate was set (homing): not a motion
             return
+        if self.s7t and sp_was_in and ax.state == "enabled" and not b.follow_act[i] \
+                and max(lo - p, p - hi) > 1e-9 * (1.0 + abs(lo) + abs(hi)):
+            # S7-Technology V4.1 §4.5.7.3: a motion travels up to the software limit switch, not beyond it.  Not
+            # MC_Power's stop programs (disabling): TimeStop brakes in its time, the braking-distance rule
+            # above bounds them (fuzz seed 202479)
+            self._fail("swlimit", ax.name, f"setpoint {p:.9g} beyond the SW limit [{lo:g}, {hi:g}] "
+                       f"(S7-Technology: up to the switch)", "", (self.ep.family(), "setpoint"))
         _, _, v_in, fe_in = w.inside
         app = self.ctl.app_cycle
         v_ref = v_in + w.alim * app    # not capped at MaxVelocity: a superimposed part may add to it

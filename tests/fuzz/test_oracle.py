@@ -116,3 +116,47 @@ def test_fuzz_a_settling_segment_is_out_of_the_jerk_checks_scope():
     run = Run(_episode(jerk=1000.0))
     _plant_segment(run, 0.03, -1.0)
     assert run.run() is None
+
+
+def _s7t_episode() -> Episode:
+    ep = Episode(0, "S7-Technology", {"servo_cycle": 0.002, "app_cycle": 0.004, "family": "S7-Technology"})
+    ep.axes = [{"name": "Axis_1", "kind": "pos", "params": {
+        "DBNumber": 10, "Wizard.Virtual": 1, "TypeOfAxis.Homing.referencingNecessary": 0,
+        "swlimit.state": 1, "swlimit.minusposition": -100.0, "swlimit.plusposition": 100.0}}]
+    ep.fbs = [{"name": "power", "cls": "MC_Power", "init": {"Axis": Ref("Axis_1"), "Enable": True}},
+              {"name": "move", "cls": "MC_MoveRelative", "init": {"Axis": 10, "Distance": 20.0, "Velocity": 40.0}}]
+    ep.ops = [Op(5, "in", "move", "Execute", True)]
+    ep.cycles = 400
+    return ep
+
+
+def test_fuzz_s7t_a_good_episode_passes():
+    """S7-Technology V4.1: an axis addressed by its DB number moves and the episode passes every check."""
+    run = Run(_s7t_episode())
+    assert run.run() is None
+    assert run.fbs["move"].Done and abs(run.ctl.bank.sp_p[0] - 20.0) < 1e-9
+
+
+def test_fuzz_s7t_an_errorid_outside_the_table_and_a_limit_overrun_are_reported():
+    """The S7-Technology checks: an ErrorID MC_MoveRelative's table (§6.2.7) does not list, and a setpoint
+    beyond the active software limit switch."""
+    run = Run(_s7t_episode())
+    inst = run.fbs["move"]
+    evaluate = inst._evaluate
+
+    def planted() -> None:
+        evaluate()
+        if run.ctl.time > 0.2:
+            inst.__dict__["ErrorID"] = 0x8041        # an ErrorID of the technology DB, not of the FB
+    object.__setattr__(inst, "_evaluate", planted)
+    f = run.run()
+    assert f is not None and f.kind == "errorid", f
+    run = Run(_s7t_episode())
+
+    def runaway(t: float) -> None:                    # a setpoint running at 500 mm/s through the limit at 100
+        if t > 0.2:
+            b = run.ctl.bank
+            b.sp_p[0], b.sp_v[0] = 20.0 + 500.0 * (t - 0.2), 500.0
+    run.ctl._post_servo.insert(0, runaway)
+    f = run.run()
+    assert f is not None and f.kind == "swlimit", f

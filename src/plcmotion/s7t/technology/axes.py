@@ -13,7 +13,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any, Iterator, Mapping
 
 from ...kernel import faults as F
-from ...kernel.axis import DISABLED, ENABLING
+from ...kernel.axis import DISABLED, ENABLED, ENABLING
 from ...kernel.faults import Fault, Reaction
 from ...kernel.follower import Follower
 from ...kernel.jobs import Job, JobKind, JobState
@@ -197,14 +197,22 @@ class AxisT(LayeredAxis):
             super()._enable(start_mode)
 
     # --- start conditions -------------------------------------------------------------------------------
+    def _stop_only_locks(self) -> bool:
+        """MC_Stop cannot brake the axis (disabled, being enabled or disabled, an error reaction stops it):
+        it only locks it.  §6.2.3: the lock holds whatever MC_Power does, and MC_Stop's ErrorID table has
+        no 8040/8045 (fuzz seeds 6, 49 of the S7-Technology campaign)."""
+        return self.state != ENABLED or any(a.reaction != Reaction.NONE for a in self.alarms)
+
     def check_start(self, job: Job) -> Fault | None:
+        if job.kind == JobKind.STOP and self.ctl.mode == "RUN" and self._stop_only_locks():
+            return None                          # MC_Stop locks a disabled axis too (§6.2.3)
         if self.restarting:
             return F.reject(F.REJECTED, "restarting")
-        if job.kind == JobKind.STOP and self.state == DISABLED and self.ctl.mode == "RUN":
-            return None                          # MC_Stop locks a disabled axis too (§6.2.3)
         if self.following_mode and job.kind != JobKind.STOP and self.state == "enabled":
             return F.reject(F.NOT_ENABLED, "following_mode")      # MC_Power Mode 2: no motion (8040)
         fault = super().check_start(job)
+        if fault is not None and job.kind == JobKind.STOP and fault.kind == F.PENDING_ALARM:
+            return None                          # an alarm without a stop reaction: MC_Stop brakes the axis
         if fault is not None and fault.kind == F.NOT_HOMED and not self.homing_required:
             # §3.1.8: absolute motion on an axis that is not homed when "Homing required" = NO
             if self.servo and not self.sensor_valid:
@@ -213,8 +221,8 @@ class AxisT(LayeredAxis):
         return fault
 
     def _begin(self, job: Job, t: float) -> None:
-        if job.kind == JobKind.STOP and self.state == DISABLED:
-            self.stop_job = job                  # nothing to brake: done at once, the lock stays
+        if job.kind == JobKind.STOP and self._stop_only_locks():
+            self.stop_job = job                  # nothing it may brake: done at once, the lock stays
             self._finish_job(job, JobState.DONE, t)
             return
         super()._begin(job, t)

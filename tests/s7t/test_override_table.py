@@ -115,8 +115,10 @@ rule("MC_Phasing", ["MC_GearIn d", "MC_CamIn d", "MC_GearOut w"], K)
 rule("MC_PhasingSuperImposed", ["MC_GearInSuperImposed d", "MC_CamInSuperImposed d"], K)
 # R16 (L15568-15570): a repeated MC_SetCharacteristic cancels the previous one
 rule("MC_SetCharacteristic", "MC_SetCharacteristic", A)
-# R17 (L21260-21261, L21381): the restarting TO accepts no command; a second MC_Reset gets 8045
-rule([r for r in O.ROWS if r != "MC_Power Enable=FALSE"], "MC_Reset Restart", 0x8045)
+# R17 (L21260-21261, L21381): the restarting TO accepts no command; a second MC_Reset gets 8045 - except MC_Stop,
+# whose table (L12876-12985) has no 8045 and whose lock holds through the restart (decision D28)
+rule([r for r in O.ROWS if r not in ("MC_Power Enable=FALSE", "MC_Stop")], "MC_Reset Restart", 0x8045)
+rule("MC_Stop", "MC_Reset Restart", K)
 # 8056: a clamped axis refuses what does not release it (list above); MC_Stop still stops (no 8056, L12876-12985)
 rule(CLAMP_8056, "MC_MoveToEndPos InClamping", 0x8056)
 rule("MC_Stop", "MC_MoveToEndPos InClamping", A)

@@ -257,6 +257,9 @@ _SYNC = table(COLUMNS_1, {
 _TABLE_3 = table(COLUMNS_3, {
     **{row: "-  -  -  R" for row in ROWS},
     #                    ChangeDataset SetTorqueLimit SetCharacteristic Restart
+    # MC_Stop is accepted while the TO restarts and keeps its lock afterwards: its ErrorID table (§6.2.3) has no
+    # 8045 and its lock holds whatever happens to the enable (fuzz seed 49 of the S7-Technology campaign)
+    STOP:               "-             -              -                 -",
     POWER_OFF:          "A             A              A                 -",
     SET_TORQUE_LIMIT:   "-             A              -                 R",
     SET_CHARACTERISTIC: "-             -              A                 R",

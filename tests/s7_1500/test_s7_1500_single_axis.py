@@ -380,3 +380,33 @@ def test_s7_1500_superimposed_distance_during_positioning_on_a_drive_axis():
     assert abs(ax.ActualPosition - 340.0) <= ax.tag("PositioningMonitoring.Window")    # Done: inside the window
     ctl.run(1.0)
     assert abs(ax.ActualPosition - 340.0) < 1e-3 and ax.ErrorDetail.Number == 0
+
+
+def test_s7_1500_move_velocity_keeps_its_dynamics_with_active_software_limits():
+    """S7-1500T V5 §6.1.5.1 / §9.1 (MC_MoveVelocity accelerates with its Acceleration input) with the software
+    limit switches active (§5.4.3): far from the limits the job's own Acceleration applies - 10 mm/s² from
+    standstill gives 10 mm/s after 1 s, the same as without limits (defect: the limit guard re-planned the
+    motion towards the limit with the dynamic defaults and the axis was at 50 mm/s)."""
+    from plcmotion import Controller
+    from plcmotion.s7_1500 import MC_Home, MC_MoveVelocity, MC_Power
+    velocities = []
+    for active in (False, True):
+        ctl = Controller(family="S7-1500")
+        ax = ctl.add_positioning_axis("A", {"VirtualAxis": {"Mode": 1}, "PositionLimits_SW": {
+            "Active": active, "MinPosition": -1.0e6, "MaxPosition": 1.0e6}})
+        power, home, move = MC_Power(), MC_Home(), MC_MoveVelocity()
+        started = []
+
+        @ctl.program
+        def main():
+            power(Axis=ax, Enable=True)
+            home(Axis=ax, Execute=power.Status, Mode=0, Position=0.0)
+            move(Axis=ax, Execute=home.Done, Velocity=50.0, Acceleration=10.0, Jerk=0.0)   # Jerk 0: trapezoid
+            if move.Busy and not started:
+                started.append(ctl.time)
+
+        ctl.run_until(lambda: bool(started), timeout=2.0)
+        ctl.run(1.0)
+        velocities.append(ax.Velocity)
+    assert velocities[0] == pytest.approx(velocities[1], abs=1e-9)
+    assert 9.0 < velocities[1] < 11.5

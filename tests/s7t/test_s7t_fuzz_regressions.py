@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from plcmotion.s7t import MC_MoveVelocity, MC_Power, MC_Reset, MC_Stop
 
+import pytest
 from _s7t_rig import VIRTUAL, controller
 
 
@@ -59,3 +60,25 @@ def test_s7t_stop_accepted_during_a_restart():
     assert power(Enable=True).Status
     move(Axis=axis, Execute=True, Velocity=10.0)
     assert move.Error and move.ErrorID == 0x8045
+
+
+def test_s7t_move_velocity_keeps_its_dynamics_with_active_software_limits():
+    """S7-Technology V4.1 §6.2.10 (MC_MoveVelocity's Acceleration) with software limit switches active
+    (§4.5.7.3, parameter 4 swlimit.state): far from the limits the axis accelerates at the command's 10 /s²,
+    as without limits (defect reported by the parameter-FB branch: the limit guard used the defaults)."""
+    from plcmotion.s7t import MC_MoveVelocity, MC_Power
+    velocities = []
+    for state in (0, 1):
+        ctl = controller()
+        ax = ctl.add_positioning_axis("A", {"Wizard.Virtual": 1, "TypeOfAxis.Homing.referencingNecessary": 0,
+                                            "swlimit.state": state, "swlimit.minusposition": -1.0e6,
+                                            "swlimit.plusposition": 1.0e6})
+        power, move = MC_Power(), MC_MoveVelocity()
+        power(Axis=ax, Enable=True)
+        ctl.run_until(lambda: power(Axis=ax, Enable=True).Status, timeout=1.0)
+        move(Axis=ax, Execute=True, Velocity=50.0, Acceleration=10.0, Jerk=0.0)
+        ctl.run(1.0)
+        move(Axis=ax, Execute=True)
+        velocities.append(ax.db.CommandVelocity)
+    assert velocities[0] == pytest.approx(velocities[1], abs=1e-6)
+    assert 8.0 < velocities[1] < 11.5

@@ -206,7 +206,8 @@ class MotionPlanner:
             if ax.pto and profile.duration < SHORT_POSITIONING and abs(v) <= 1e-12 and target != p and not blend:
                 # §12.5: a positioning shorter than 2 ms runs at pulses x 500 Hz, i.e. takes 2 ms
                 profile = Planner.constant_move(t, p, target, SHORT_POSITIONING)
-            return self._guard(Plan(profile), t, p, v, a, lim, cruise=abs(job.velocity), passes_on=bool(blend))
+            return self._guard(Plan(profile), t, p, v, a, lim, cruise=abs(job.velocity), passes_on=bool(blend),
+                               job=job)
         if kind in (JobKind.VELOCITY, JobKind.JOG):
             target_v = 0.0 if job.jog_released else ax.commanded_velocity(job.velocity)
             lim = _strict(limits(ax, None, job=job), replan, reach)
@@ -216,12 +217,13 @@ class MotionPlanner:
             profile = pl.velocity(t, p, v, a, target_v, lim)
             if target_v != 0.0:
                 self._check_direction(profile, p)
-            plan = self._guard(Plan(profile, reach_time=profile.t_end), t, p, v, a, lim, cruise=abs(target_v))
+            plan = self._guard(Plan(profile, reach_time=profile.t_end), t, p, v, a, lim, cruise=abs(target_v),
+                               job=job)
             return plan
         if kind in (JobKind.HALT, JobKind.STOP):
             lim = _strict(max_dynamics(ax) if job.extra.get("max_dynamics") else limits(ax, None, job=job), replan, reach)
             self.last_limits = lim
-            return self._guard(Plan(pl.stop(t, p, v, a, lim)), t, p, v, a, lim, cruise=abs(v))
+            return self._guard(Plan(pl.stop(t, p, v, a, lim)), t, p, v, a, lim, cruise=abs(v), job=job)
         raise ValueError(f"no motion plan for {kind}")
 
     def stop(self, t: float, p: float, v: float, a: float, *, emergency: bool, jerk: bool) -> Plan:
@@ -258,9 +260,10 @@ class MotionPlanner:
 
     # --- software limit switches (§2.3, §5.4.4.3, §12.4) -------------------------------------------
     def _guard(self, plan: Plan, t: float, p: float, v: float, a: float, lim: Limits, cruise: float,
-               passes_on: bool = False) -> Plan:
+               passes_on: bool = False, job: Job | None = None) -> Plan:
         """``passes_on``: the motion beyond the profile's end belongs to the next job, which is guarded
-        when it starts; only the way to the target counts here."""
+        when it starts; only the way to the target counts here.  ``job``: the motion runs towards the limit
+        with the job's own dynamics (S7-1500, S7-Technology), where the job brings them."""
         ax = self.axis
         if not ax.sw_limits_effective():
             return plan
@@ -295,12 +298,12 @@ class MotionPlanner:
                                    lim.start_stop), side, "exceeded", cross_time=t)
         moving_out = v * sign > 1e-12
         if moving_out:
-            stop = pl.stop_position(p, v, a, limits(ax, None))
+            stop = pl.stop_position(p, v, a, limits(ax, None, job=job))
         else:
             stop = p
         if (stop - limit) * sign <= _TOL:
             speed = max(min(cruise, ax.config.limits.max_velocity), lim.start_stop, 1e-12)
-            lim2 = limits(ax, speed)
+            lim2 = limits(ax, speed, job=job)
             try:
                 profile = pl.position(t, p, v, a, limit, lim2)
             except ReversalRequired:  # pragma: no cover - position() reverses when allowed

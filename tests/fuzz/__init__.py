@@ -29,6 +29,8 @@ Invariants and their scope
    so every STOP, e.g. "internal error in the servo cycle", is a failure).
 3. internal: no instruction shows ErrorID 16#8FFF and no axis records an internal error
    (``PositioningAxis.last_internal_error``: a kernel exception isolated to one axis).
+   S7-1500/S7-1500T (kind "errorid"): an instruction's ErrorID is 0 or a code of the CPU's list that
+   instruction can give (``plcmotion.s7_1500.errors.INSTRUCTION_CODES``), and Error never shows 0.
 4. nonfinite: every servo cycle, the bank arrays sp_p, sp_v, sp_a, act_p, act_v, cmd_v, fe
    (kernel/bank.py) are finite for the episode's axes; after each application cycle the tags Position,
    Velocity, ActualPosition, ActualVelocity are finite.

@@ -19,6 +19,7 @@ import numpy as np
 
 import plcmotion.s7_1200 as S12
 import plcmotion.s7_1500 as S15
+import plcmotion.s7_1500.errors as S15_ERRORS
 import plcmotion.s7t as S7T
 from plcmotion.s7t.fb_errors import fb_codes
 from plcmotion import Controller
@@ -412,6 +413,8 @@ class Run:
         if self.s7t:
             self._check_outputs_s7t(name, cls, fb, out, outs)
             return
+        if self.is1500:
+            self._check_errorid_1500(name, cls, out)
         finals = [k for k in ("Done", "CommandAborted", "Error") if k in outs and out[k]]
         if "Done" in outs or "CommandAborted" in outs:
             if len(finals) > 1 or (finals and out.get("Busy")):
@@ -441,6 +444,17 @@ class Run:
                                "", (cls,))
                 return
         self._busy_still.pop(name, None)
+
+    def _check_errorid_1500(self, name: str, cls: str, out: dict) -> None:
+        """S7-1500: ErrorID is 0 or a code of the CPU's list this instruction can give
+        (``plcmotion.s7_1500.errors.INSTRUCTION_CODES``), Error never with 0."""
+        eid = out.get("ErrorID", 0)
+        codes = S15_ERRORS.INSTRUCTION_CODES.get(cls)
+        if codes is not None and eid != 0 and eid not in codes:
+            self._fail("errorid", name, f"{cls} ErrorID {eid!r} is not in its list", "",
+                       (cls, eid if isinstance(eid, int) else type(eid).__name__))
+        if out.get("Error") and not eid:
+            self._fail("errorid", name, f"{cls} Error with ErrorID 0", "", (cls, "error-no-id"))
 
     def _check_outputs_s7t(self, name: str, cls: str, fb: Any, out: dict, outs: dict) -> None:
         """S7-Technology V4.1 §5.8: at most one of Done / CommandAborted / Error (MC_MoveVelocity: InVelocity

@@ -116,7 +116,7 @@ def test_s7_1500_get_cam_following_value_and_restart_in_the_same_cycle_defect3b(
     ctl.run(0.02)
     assert ctl.mode == "RUN", ctl.stop_reason
     assert fbs["rs"].Done
-    assert fbs["gf"].Error and fbs["gf"].ErrorID == E.CAM_NOT_INTERPOLATED
+    assert fbs["gf"].Error and fbs["gf"].ErrorID == E.NO_FOLLOWING_VALUE
     assert not cam.StatusWord.X5                         # not interpolated after the restart
 
 
@@ -151,7 +151,7 @@ def test_s7_1500_cam_jobs_in_the_same_cycle_never_stop_the_controller_defect3b(c
 
 def test_s7_1500_interpolate_and_cam_in_in_the_same_cycle_s9_2_1():
     """MC_CamIn takes the cam into use: an MC_InterpolateCam given in the same cycle after it is
-    rejected (16#8401); given before it, the interpolation finds the cam in use when it runs."""
+    rejected (16#80AB); given before it, the interpolation finds the cam in use when it runs."""
     rig = Rig()
     cam = rig.ctl.add_cam("Cam", points=[(0, 0), (100, 10), (200, 0)], interpolation_mode=1)
     ic0, ic, ci, mv = MC_InterpolateCam(), MC_InterpolateCam(), MC_CamIn(), MC_MoveVelocity()

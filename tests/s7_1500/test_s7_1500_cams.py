@@ -73,12 +73,12 @@ def test_s7_1500_interpolate_cam_definition_error_s9_2_1():
 def test_s7_1500_get_cam_following_value_and_derivatives_s9_2_3():
     ctl, cam = cam_rig(interpolation_mode=0)
     get = MC_GetCamFollowingValue()
-    assert run_fb(ctl, get, Cam=cam, LeadingValue=45.0).ErrorID == E.CAM_NOT_INTERPOLATED
+    assert run_fb(ctl, get, Cam=cam, LeadingValue=45.0).ErrorID == E.NO_FOLLOWING_VALUE
     run_fb(ctl, MC_InterpolateCam(), Cam=cam)
     run_fb(ctl, get, Cam=cam, LeadingValue=45.0)
     assert get.Done and get.Value == pytest.approx(20.0) and get.FirstDerivative == pytest.approx(40.0 / 90.0)
     assert get.SecondDerivative == 0.0
-    assert run_fb(ctl, get, Cam=cam, LeadingValue=400.0).ErrorID == E.CAM_OUT_OF_RANGE
+    assert run_fb(ctl, get, Cam=cam, LeadingValue=400.0).ErrorID == E.NO_FOLLOWING_VALUE
 
 
 def test_s7_1500_get_cam_leading_value_with_approach_value_s9_2_2():
@@ -89,7 +89,7 @@ def test_s7_1500_get_cam_leading_value_with_approach_value_s9_2_2():
     assert get.Done and get.Value == pytest.approx(135.0)
     run_fb(ctl, get, Cam=cam, FollowingValue=70.0, ApproachLeadingValue=300.0)
     assert get.Value == pytest.approx(225.0)
-    assert run_fb(ctl, get, Cam=cam, FollowingValue=150.0).ErrorID == E.CAM_NO_SOLUTION
+    assert run_fb(ctl, get, Cam=cam, FollowingValue=150.0).ErrorID == E.NO_LEADING_VALUE
 
 
 def _camming(app_mode, spr, cam_points=HUMP, velocity=180.0, **inputs):
@@ -174,7 +174,7 @@ def test_s7_1500_cam_in_rejections_s9_1_5():
                                 SyncProfileReference=inputs["spr"], MasterSyncPosition=inputs["msp"],
                                 MasterOffset=500.0, MasterStartDistance=10.0))
     rig.run_until(lambda: ci.Error, timeout=1.0)
-    assert ci.ErrorID == E.CAM_NOT_INTERPOLATED
+    assert ci.ErrorID == E.TO_ALARM
     run_fb(rig.ctl, MC_InterpolateCam(), Cam=cam)
     ci(Execute=False)
     inputs["msp"] = 400.0                                      # beyond the cam (0 .. 360)

@@ -52,7 +52,7 @@ def test_s7_1500_a_cycle_of_couplings_is_rejected_s8_1_3():
         ga(Master=b, Slave=a, Execute=pa.Status and pb.Status)
         gb(Master=a, Slave=b, Execute=ga.InGear)
     ctl.run_until(lambda: gb.Error or gb.InGear, timeout=2.0)
-    assert gb.Error and gb.ErrorID == 0x8306 and ga.InGear
+    assert gb.Error and gb.ErrorID == 0x8019 and ga.InGear
 
 
 def test_s7_1500_master_not_configured_sets_synchronous_error_s3_3():
@@ -64,7 +64,7 @@ def test_s7_1500_master_not_configured_sets_synchronous_error_s3_3():
     rig.steps.append(lambda: gear(Master=other, Slave=rig.slave, Execute=rig.enabled()))
     rig.steps.append(lambda: reset(Axis=rig.slave, Execute=go["reset"]))
     rig.run_until(lambda: gear.Error, timeout=1.0)
-    assert gear.ErrorID == 0x8301
+    assert gear.ErrorID == 0x8001
     assert rig.slave.ErrorWord.X14 and rig.slave.ErrorWord.SynchronousError
     assert rig.slave.StatusWord.Error
     go["reset"] = True
@@ -125,7 +125,7 @@ def test_s7_1500_actual_value_coupling_needs_the_t_cpu_s2_2():
         ps(Axis=s, Enable=True)
         gear(Master=m, Slave=s, Execute=pm.Status and ps.Status)
     ctl.run_until(lambda: gear.Error, timeout=2.0)
-    assert gear.ErrorID == 0x8302
+    assert gear.ErrorID == 0x8002
 
 
 def test_s7_1500_gear_in_pos_needs_the_t_cpu_s2_2():
@@ -133,7 +133,7 @@ def test_s7_1500_gear_in_pos_needs_the_t_cpu_s2_2():
     gip = MC_GearInPos()
     rig.steps.append(lambda: gip(Master=rig.master, Slave=rig.slave, Execute=rig.enabled()))
     rig.run_until(lambda: gip.Error, timeout=1.0)
-    assert gip.ErrorID == 0x8302
+    assert gip.ErrorID == 0x8002
     with pytest.raises(ValueError):
         rig.ctl.add_cam("Cam")
 
@@ -514,7 +514,7 @@ def test_s7_1500_the_leading_value_of_a_proxy_cannot_be_delayed_s3_3_3():
         ps(Axis=s, Enable=True)
         g(Master=proxy, Slave=s, Execute=ps.Status)
     ctl.run_until(lambda: g.Error or g.InGear, timeout=1.0)
-    assert g.Error and g.ErrorID == 0x8309
+    assert g.Error and g.ErrorID == 0x8002
 
 
 def test_s7_1500_cascade_keeps_all_followers_in_step_with_interpolation_s8_1_3():

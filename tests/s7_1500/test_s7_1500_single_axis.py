@@ -78,7 +78,7 @@ def test_s7_1500_jerk_zero_gives_a_trapezoidal_profile_and_jerk_limits_otherwise
     (MC_Halt, {"Deceleration": 0.0}, E.parameter("Deceleration")),
     (MC_Stop, {"Mode": 1}, E.parameter("Mode")),
     (MC_Home, {"Mode": 4}, E.parameter("Mode")),
-    (MC_Home, {"Mode": 6}, E.parameter("Mode")),          # absolute encoder adjustment, incremental encoder
+    (MC_Home, {"Mode": 6}, E.MODE_NEEDS_ABSOLUTE),            # absolute encoder adjustment, incremental encoder
     (MC_MoveSuperimposed, {"Distance": 1.0, "VelocityDiff": 0.0}, E.parameter("VelocityDiff")),
 ])
 def test_s7_1500_invalid_inputs_give_the_errorid_of_the_input(fb, inputs, code):

@@ -77,7 +77,8 @@ NOT_AVAILABLE = "not_available"          # function of the S7-1500T used on an S
 STOP_ACTIVE = "stop_active"              # S7-1500: the axis is locked by MC_Stop
 SYNC_ACTIVE = "sync_active"              # active homing while a GearInPos/CamIn is active (docs/decisions)
 SYNC_SIMULATION = "sync_simulation"      # synchronous operation jobs while it is simulated
-NOT_SYNCHRONOUS = "not_synchronous"      # phasing / simulation need status Synchronous (detail: gearing, master)
+NOT_SYNCHRONOUS = "not_synchronous"      # phasing / simulation need status Synchronous (detail: none,
+#                                          simulated, camming, not_in_sync, master, simulation)
 COUPLING_CYCLE = "coupling_cycle"        # the leading axis would follow its own leading value
 START_DISTANCE = "start_distance"        # SyncProfileReference 1: master closer than MasterStartDistance
 SYNC_POSITION_RANGE = "sync_position_range"  # MasterSyncPosition outside the cam

@@ -281,8 +281,15 @@ class Follower:
             return F.reject(F.SYNC_SIMULATION)
         if job.kind == JobKind.PHASING:
             c = self.coupling
-            if c is None or not c.job.in_sync or c.job.kind == JobKind.CAM_IN or c.simulated:
-                return F.reject(F.NOT_SYNCHRONOUS, "gearing")
+            # the detail says what is missing, so a family can name the case
+            if c is None:
+                return F.reject(F.NOT_SYNCHRONOUS, "none")
+            if c.simulated:
+                return F.reject(F.NOT_SYNCHRONOUS, "simulated")
+            if c.job.kind == JobKind.CAM_IN:
+                return F.reject(F.NOT_SYNCHRONOUS, "camming")
+            if not c.job.in_sync:
+                return F.reject(F.NOT_SYNCHRONOUS, "not_in_sync")
             if job.extra.get("master") is not c.source:
                 return F.reject(F.NOT_SYNCHRONOUS, "master")
         return None

@@ -22,17 +22,25 @@ class _S71500:
         return True
 
     def _axis_error(self, kind: str) -> InstructionError:
-        return InstructionError(E.WRONG_TO if kind == "other_type" else E.NOT_A_TO)
+        return InstructionError(E.WRONG_TO)          # no technology object, or one of another type
+
+    @classmethod
+    def _instruction_name(cls) -> str:
+        """The name of the manual's instruction this class is (a user subclass keeps its codes)."""
+        return next((k.__name__ for k in cls.__mro__ if k.__name__ in E.INSTRUCTION_CODES), cls.__name__)
+
+    def _rejected_at(self) -> object:
+        """The technology object a rejected job is noted at."""
+        return getattr(self, "Axis", None) or getattr(self, "Slave", None)
 
     def _fault_codes(self, fault: Fault) -> tuple[int, int]:
         """ErrorID of a fault that ended a job of this instruction.  A job the technology object rejected
         (a fault without acknowledgement) is also shown there as WarningWord.X3 (§7.1.1 "Job rejected")."""
         if not fault.ack:
-            to = getattr(self, "Axis", None) or getattr(self, "Slave", None)
-            note = getattr(to, "note_rejected", None)
+            note = getattr(self._rejected_at(), "note_rejected", None)
             if note is not None:
                 note(fault)
-        return E.code(fault), 0
+        return E.code(fault, self._instruction_name()), 0
 
 
 class Instruction(_S71500, fb.Instruction):

@@ -35,10 +35,10 @@ class MC_Home(fb.ReferenceMarkOutput, ExecuteInstruction):  # noqa: N801
             position = axis.ueff["Homing.HomePosition"]
         absolute = axis.absolute_encoder()
         if mode in (6, 7) and not absolute:
-            raise InstructionError(E.parameter("Mode"))
+            raise InstructionError(E.MODE_NEEDS_ABSOLUTE)      # absolute encoder adjustment
         if mode in (2, 3, 5, 8, 10):
             if absolute and not axis.sim:
-                raise InstructionError(E.parameter("Mode"))
+                raise InstructionError(E.MODE_NOT_ABSOLUTE)    # homing with an incremental encoder only
             if not axis.homing_configured(3 if mode in (3, 5) else 2):
                 raise InstructionError(E.parameter("Mode"))
         if mode == 9:

@@ -34,22 +34,16 @@ class _SyncInstruction(ExecuteInstruction):
         object.__setattr__(self, "_job_slave", slave)     # the job belongs to this axis until it ends
         return slave
 
-    def _fault_codes(self, fault):
+    def _rejected_at(self) -> Any:
         # a rejected job is noted at the axis it was given to, whatever the Slave input shows now
-        if not fault.ack:
-            note = getattr(getattr(self, "_job_slave", None), "note_rejected", None)
-            if note is not None:
-                note(fault)
-        return E.code(fault), 0
+        return getattr(self, "_job_slave", None)
 
     def _master(self) -> Any:
         master = getattr(self, "Master", None)
         if _is_leading_value_source(master):
             self._register(master)
             return master
-        if master is not None and hasattr(master, "ctl") and hasattr(master, "tag"):
-            raise InstructionError(E.WRONG_TO)
-        raise InstructionError(E.NOT_A_TO)
+        raise InstructionError(E.WRONG_TO)             # no technology object, or one that gives no leading value
 
     @staticmethod
     def _ratio(numerator: Any, denominator: Any) -> float:
@@ -159,7 +153,7 @@ class MC_CamIn(_PositionedSync):  # noqa: N801
         master = self._master()
         cam = self.Cam
         if not isinstance(cam, CamTO):
-            raise InstructionError(E.WRONG_TO if hasattr(cam, "ctl") else E.NOT_A_TO)
+            raise InstructionError(E.WRONG_TO)
         self._register(cam)
         x = self._sync_inputs(slave, (0, 1, 2, 3, 4))
         # with direct synchronous setting the offsets come from the present positions (§5.4.4)
@@ -297,7 +291,7 @@ class MC_SynchronizedMotionSimulation(Instruction):  # noqa: N801
             job = Job(JobKind.SYNC_SIMULATION, owner=self)
             fault = slave.start_simulation(job)
             if fault is not None:
-                self._out(InSimulation=False, Busy=False, Error=True, ErrorID=E.code(fault))
+                self._out(InSimulation=False, Busy=False, Error=True, ErrorID=E.code(fault, self._instruction_name()))
                 return
             object.__setattr__(self, "_sim", job)
             object.__setattr__(self, "_sim_axis", slave)
@@ -353,7 +347,7 @@ class MC_LeadingValueAdditive(Instruction):  # noqa: N801
                 axis = self._axis()
                 values = self._values()
                 if not axis.ctl.offers_job(JobKind.LV_ADDITIVE):
-                    raise InstructionError(E.T_ONLY)
+                    raise InstructionError(E.WRONG_TO)   # a function of the S7-1500T (decisions #56)
                 object.__setattr__(self, "_add", Job(JobKind.LV_ADDITIVE, owner=self))
                 object.__setattr__(self, "_add_axis", axis)
             elif self._add is None:
@@ -372,7 +366,7 @@ class MC_LeadingValueAdditive(Instruction):  # noqa: N801
         if fault is not None:
             object.__setattr__(self, "_add", None)
             object.__setattr__(self, "_add_axis", None)
-            self._out(Busy=False, Error=True, ErrorID=E.code(fault))
+            self._out(Busy=False, Error=True, ErrorID=E.code(fault, self._instruction_name()))
             return
         self._out(Busy=True, Error=False, ErrorID=0)
 

@@ -26,17 +26,17 @@ def _rejected(fb, code=None):
 
 
 @pytest.mark.parametrize("inp,code", [
-    ({"RatioNumerator": 0}, 0x810B),
-    ({"RatioDenominator": 0}, 0x810C),
-    ({"RatioDenominator": -1}, 0x810C),
-    ({"RatioNumerator": 2**31}, 0x810B),
-    ({"RatioDenominator": 2**31}, 0x810C),
-    ({"RatioNumerator": 1.5}, 0x810B),
-    ({"Acceleration": 0.0}, 0x8104),
-    ({"Deceleration": 0.0}, 0x8105),
-    ({"Acceleration": math.nan}, 0x8104),
-    ({"Deceleration": math.inf}, 0x8105),
-    ({"Jerk": math.nan}, 0x8106),
+    ({"RatioNumerator": 0}, 0x8017),
+    ({"RatioDenominator": 0}, 0x8018),
+    ({"RatioDenominator": -1}, 0x8018),
+    ({"RatioNumerator": 2**31}, 0x8017),
+    ({"RatioDenominator": 2**31}, 0x8018),
+    ({"RatioNumerator": 1.5}, 0x8017),
+    ({"Acceleration": 0.0}, 0x8004),
+    ({"Deceleration": 0.0}, 0x8005),
+    ({"Acceleration": math.nan}, 0x8004),
+    ({"Deceleration": math.inf}, 0x8005),
+    ({"Jerk": math.nan}, 0x8006),
 ])
 def test_s7_1500_gear_in_invalid_inputs(inp, code):
     h = H()
@@ -63,19 +63,19 @@ def test_s7_1500_gear_in_negative_dynamics_use_defaults_no_error():
 
 
 @pytest.mark.parametrize("inp,code", [
-    ({"RatioNumerator": 0}, 0x810B),
-    ({"RatioDenominator": 0}, 0x810C),
-    ({"SyncProfileReference": 2}, 0x810F),
-    ({"SyncProfileReference": 4}, 0x810F),
-    ({"SyncProfileReference": -1}, 0x810F),
-    ({"SyncProfileReference": 5}, 0x810F),
-    ({"MasterStartDistance": -1.0, "SyncProfileReference": 1}, 0x8110),
-    ({"MasterStartDistance": -1.0, "SyncProfileReference": 3}, 0x8110),
-    ({"MasterSyncPosition": math.nan}, 0x810D),
-    ({"SlaveSyncPosition": math.inf}, 0x810E),
-    ({"SyncProfileReference": 0, "Velocity": 0.0}, 0x8103),
-    ({"SyncProfileReference": 0, "Acceleration": 0.0}, 0x8104),
-    ({"SyncProfileReference": 0, "Deceleration": 0.0}, 0x8105),
+    ({"RatioNumerator": 0}, 0x8017),
+    ({"RatioDenominator": 0}, 0x8018),
+    ({"SyncProfileReference": 2}, 0x8036),
+    ({"SyncProfileReference": 4}, 0x8036),
+    ({"SyncProfileReference": -1}, 0x8036),
+    ({"SyncProfileReference": 5}, 0x8036),
+    ({"MasterStartDistance": -1.0, "SyncProfileReference": 1}, 0x8026),
+    ({"MasterStartDistance": -1.0, "SyncProfileReference": 3}, 0x8026),
+    ({"MasterSyncPosition": math.nan}, 0x8034),
+    ({"SlaveSyncPosition": math.inf}, 0x8035),
+    ({"SyncProfileReference": 0, "Velocity": 0.0}, 0x8003),
+    ({"SyncProfileReference": 0, "Acceleration": 0.0}, 0x8004),
+    ({"SyncProfileReference": 0, "Deceleration": 0.0}, 0x8005),
 ])
 def test_s7_1500_gear_in_pos_invalid_inputs(inp, code):
     h = H()
@@ -90,12 +90,12 @@ def test_s7_1500_gear_in_pos_invalid_inputs(inp, code):
 
 @pytest.mark.parametrize("direction", [0, 4, -1])
 def test_s7_1500_gear_in_pos_invalid_sync_direction_on_modulo_axes(direction):
-    """§9.1.2.1: SyncDirection 1, 2, 3 with modulo axes; another value is rejected (16#8111)."""
+    """§9.1.2.1: SyncDirection 1, 2, 3 with modulo axes; another value is rejected (16#8007)."""
     h = H(mp=merge(VIRTUAL, modulo()), sp=merge(VIRTUAL, modulo()))
     fb = MC_GearInPos()
     _start(h, fb, MasterSyncPosition=200.0, SlaveSyncPosition=0.0, MasterStartDistance=100.0,
            SyncDirection=direction)
-    _rejected(fb, 0x8111)
+    _rejected(fb, 0x8007)
 
 
 def test_s7_1500_gear_in_pos_sync_direction_not_read_between_linear_axes():
@@ -149,7 +149,7 @@ def test_s7_1500_slave_not_enabled():
     h.until(lambda: h.power["M1"].Status, 1.0)
     base["Execute"] = True
     h.step()
-    _rejected(fb, 0x8201)
+    _rejected(fb, 0x800F)
 
 
 def test_s7_1500_gear_in_pos_slave_not_enabled():
@@ -161,7 +161,7 @@ def test_s7_1500_gear_in_pos_slave_not_enabled():
     h.until(lambda: h.power["M1"].Status, 1.0)
     base["Execute"] = True
     h.step()
-    _rejected(fb, 0x8201)
+    _rejected(fb, 0x800F)
 
 
 def test_s7_1500_master_not_configured_as_leading_value():
@@ -202,7 +202,7 @@ def test_s7_1500_gear_in_pos_needs_t_family():
     h = H(family="S7-1500")
     fb = MC_GearInPos()
     _start(h, fb, MasterSyncPosition=500.0, MasterStartDistance=100.0)
-    _rejected(fb, 0x8302)
+    _rejected(fb, 0x8002)
 
 
 def test_s7_1500_gear_in_works_on_s7_1500_non_t():
@@ -230,8 +230,8 @@ def test_s7_1500_phasing_needs_t_family(cls):
 
 
 @pytest.mark.parametrize("cls", [MC_PhasingRelative, MC_PhasingAbsolute])
-@pytest.mark.parametrize("inp,code", [({"Velocity": 0.0}, 0x8103), ({"Acceleration": 0.0}, 0x8104),
-                                      ({"Deceleration": 0.0}, 0x8105), ({"PhaseShift": math.nan}, 0x8117)])
+@pytest.mark.parametrize("inp,code", [({"Velocity": 0.0}, 0x8003), ({"Acceleration": 0.0}, 0x8004),
+                                      ({"Deceleration": 0.0}, 0x8005), ({"PhaseShift": math.nan}, 0x8070)])
 def test_s7_1500_phasing_invalid_inputs_keep_gearing(cls, inp, code):
     h = H()
     h.move_master(50.0)
@@ -258,7 +258,7 @@ def test_s7_1500_phasing_while_gear_in_pos_only_synchronizing_rejected():
     assert not g.InSync
     ph = MC_PhasingRelative()
     _start(h, ph, PhaseShift=10.0)
-    _rejected(ph, 0x8303)
+    _rejected(ph, 0x80A9)
     assert g.Busy and not g.CommandAborted
 
 

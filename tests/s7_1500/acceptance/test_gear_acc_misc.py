@@ -65,7 +65,7 @@ def test_s7_1500_error_latched_while_execute_then_cleared():
     h.until(h.enabled, 1.0)
     d["Execute"] = True
     h.step(5)
-    assert fb.Error and fb.ErrorID == 0x810C and not fb.Busy
+    assert fb.Error and fb.ErrorID == 0x8018 and not fb.Busy
     d["Execute"] = False
     h.step()
     assert not fb.Error and fb.ErrorID == 0

@@ -196,7 +196,7 @@ def test_s7_1500_three_axis_cycle_rejected_s8_1_3():
         gc(Master=b, Slave=c, Execute=ok)
         ga(Master=c, Slave=a, Execute=gb.InGear and gc.InGear)
     ctl.run_until(lambda: ga.Error or ga.InGear, timeout=2.0)
-    assert ga.Error and ga.ErrorID == 0x8306 and gb.InGear and gc.InGear
+    assert ga.Error and ga.ErrorID == 0x8019 and gb.InGear and gc.InGear
 
 
 def test_s7_1500_waiting_gearinpos_cycle_rejected_s8_1_3():
@@ -214,7 +214,7 @@ def test_s7_1500_waiting_gearinpos_cycle_rejected_s8_1_3():
            MasterStartDistance=10.0)
         gb(Master=a, Slave=b, Execute=ga.Busy)
     ctl.run_until(lambda: gb.Error or gb.InGear, timeout=2.0)
-    assert gb.Error and gb.ErrorID == 0x8306
+    assert gb.Error and gb.ErrorID == 0x8019
 
 
 def test_s7_1500_actual_value_coupling_to_a_virtual_positioning_axis_s3_3_2():

@@ -218,7 +218,7 @@ def test_s7_1500_active_homing_aborts_a_superimposed_motion_virtual_axis_s9_3_1(
 
 def test_s7_1500_active_homing_is_rejected_while_mc_stop_holds_the_axis_virtual_axis():
     """§9.3.1: running MC_Stop vs new MC_Home Mode 3/5 = '-' (MC_Stop continues); decisions #24: the axis stays
-    locked while MC_Stop.Execute is TRUE (new jobs rejected, 16#8204)."""
+    locked while MC_Stop.Execute is TRUE (new jobs rejected, 16#800F)."""
     r = AxisRig()
     ax = r.axis
     stop = MC_Stop()

@@ -381,7 +381,10 @@ class CamTO:
                 curve = interpolate(self.valid_points(), self.valid_segments(), self._mode, self._bc)
             except CamDefinitionError as exc:
                 self.last_definition_error = str(exc)
-                job.finish(JobState.ERROR, F.reject(F.CAM_DEFINITION, exc.reason, str(exc)))
+                # "empty" with one valid point is a bad definition, not a cam without elements
+                reason = "too_few" if exc.reason == "empty" and (
+                    self.valid_points() or self.valid_segments()) else exc.reason
+                job.finish(JobState.ERROR, F.reject(F.CAM_DEFINITION, reason, str(exc)))
                 return
             self.curve = curve
             self.data_changed = False

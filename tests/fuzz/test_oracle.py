@@ -160,3 +160,30 @@ def test_fuzz_s7t_an_errorid_outside_the_table_and_a_limit_overrun_are_reported(
     run.ctl._post_servo.insert(0, runaway)
     f = run.run()
     assert f is not None and f.kind == "swlimit", f
+
+
+def _s7_1500_episode() -> Episode:
+    ep = Episode(0, "S7-1500", {"servo_cycle": 0.001, "app_cycle": 0.004, "family": "S7-1500"})
+    ep.axes = [{"name": "Axis_1", "kind": "pos", "params": {}}]
+    ep.fbs = [{"name": "power", "cls": "MC_Power", "init": {"Axis": Ref("Axis_1"), "Enable": True}},
+              {"name": "move", "cls": "MC_MoveRelative", "init": {"Axis": Ref("Axis_1"), "Distance": 20.0}}]
+    ep.ops = [Op(5, "in", "move", "Execute", True), Op(80, "in", "move", "Execute", False)]
+    ep.cycles = 150
+    return ep
+
+
+def test_fuzz_s7_1500_an_errorid_outside_the_instruction_list_is_reported():
+    """The S7-1500 check: MC_MoveRelative showing 16#8009 (illegal Position, a code of MC_MoveAbsolute, not
+    of MC_MoveRelative) is reported; the good episode passes."""
+    assert Run(_s7_1500_episode()).run() is None
+    run = Run(_s7_1500_episode())
+    inst = run.fbs["move"]
+    evaluate = inst._evaluate
+
+    def planted() -> None:
+        evaluate()
+        if run.ctl.time > 0.2:
+            inst.__dict__["ErrorID"] = 0x8009
+    object.__setattr__(inst, "_evaluate", planted)
+    f = run.run()
+    assert f is not None and f.kind == "errorid", f

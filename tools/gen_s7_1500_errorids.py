@@ -49,8 +49,9 @@ def render() -> str:
              "| ErrorID | Meaning | Where it arises | Remedy | Instructions | Basis |",
              "|---|---|---|---|---|---|"]
     for c in E.CODES:
+        shown = ", ".join(E.instructions_of(c.number)) or f"none: {c.unreachable}"
         lines.append(f"| 16#{c.number:04X} | {_cell(c.meaning)} | {_cell(c.where)} | {_cell(c.remedy)} | "
-                     f"{', '.join(E.instructions_of(c.number))} | {_cell(c.basis)} |")
+                     f"{_cell(shown)} | {_cell(c.basis)} |")
     lines += ["", "## Codes of the CPU's list plcmotion does not give", "", "| ErrorIDs | Why |", "|---|---|"]
     lines += [f"| {codes} | {_cell(why)} |" for codes, why in E.NOT_PRODUCED]
     return "\n".join(lines) + "\n"

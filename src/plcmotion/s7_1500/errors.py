@@ -28,6 +28,7 @@ class Code:
     where: str
     remedy: str
     basis: str = "list"
+    unreachable: str = ""      # why no situation in plcmotion gives it (the kernel still maps to it)
 
 
 TO_ALARM = 0x8001
@@ -140,13 +141,15 @@ CODES: tuple[Code, ...] = (
        "MC_Home Mode 2, 3, 5, 8 or 10 on a real axis with an absolute encoder", "use mode 0, 1, 6 or 7"),
     _C(TOO_MANY_JOBS, "too many jobs at once at the technology object",
        "a job while the axis already has as many busy instructions as it can keep",
-       "wait until running jobs have ended"),
+       "wait until running jobs have ended", "list; #78",
+       "an S7-1500 job of each kind aborts the one before it, so no axis reaches 100 busy instructions"),
     _C(CONFIG_NOT_ACKNOWLEDGEABLE, "the alarm cannot be acknowledged: the configuration itself is invalid",
        "MC_Reset while a configuration alarm persists (a tag value still out of range)",
        "correct the configuration, then acknowledge"),
     _C(ACTUAL_INVALID, "the actual values are not valid",
        "a position-controlled job or homing on a drive axis whose encoder reports no valid actual value",
-       "restore the encoder, wait for StatusSensor.State = 2", "list; #75"),
+       "restore the encoder, wait for StatusSensor.State = 2", "list; #75",
+       "an encoder fault is alarm 203 until it is gone, so a job meets the alarm (16#8001) first"),
     _C(NUMERATOR, "invalid gear ratio numerator", "RatioNumerator 0, not whole or outside the DINT range",
        "give a whole number other than 0"),
     _C(DENOMINATOR, "invalid gear ratio denominator", "RatioDenominator < 1, not whole or outside the DINT range",
@@ -297,24 +300,23 @@ def code(fault: Fault, instruction: str = "") -> int:
 
 # --- which instruction shows which code -----------------------------------------------------------------
 _ANY = (TO_ALARM, WRONG_TO, NOT_NOW, INTERNAL)
-_JOB = _ANY + (LOCKED, TOO_MANY_JOBS)
-_CONTROLLED = _JOB + (ACTUAL_INVALID,)            # jobs that need position control (decisions #75)
+_JOB = _ANY + (LOCKED,)
 _DYN = (ACCELERATION, DECELERATION, JERK)
-_SYNC = _ANY + (LOCKED, TOO_MANY_JOBS, SYNC_SIMULATED, RECURSION) + _DYN
+_SYNC = _ANY + (LOCKED, SYNC_SIMULATED, RECURSION) + _DYN
 _POSITIONED = _SYNC + (VELOCITY, DIRECTION, START_DISTANCE, MASTER_SYNC_POSITION, SYNC_PROFILE)
-_PHASING = _ANY + (LOCKED, TOO_MANY_JOBS, SYNC_SIMULATED, VELOCITY, PHASE_SHIFT, NO_SYNC, CAMMING_ACTIVE,
+_PHASING = _ANY + (LOCKED, SYNC_SIMULATED, VELOCITY, PHASE_SHIFT, NO_SYNC, CAMMING_ACTIVE,
                    NOT_IN_SYNC) + _DYN
 _CAM = (WRONG_TO, NOT_NOW, INTERNAL)
 INSTRUCTION_CODES: dict[str, frozenset[int]] = {name: frozenset(codes) for name, codes in {
     "MC_Power": (TO_ALARM, WRONG_TO, NOT_NOW, INTERNAL, MODE, STOP_MODE, SECOND_INSTANCE),
     "MC_Reset": (TO_ALARM, WRONG_TO, INTERNAL, RESTART_WHILE_ENABLED, CONFIG_NOT_ACKNOWLEDGEABLE),
-    "MC_Home": _CONTROLLED + (POSITION, MODE, MODE_NEEDS_ABSOLUTE, MODE_NOT_ABSOLUTE, HOMING_IN_SYNC),
+    "MC_Home": _JOB + (POSITION, MODE, MODE_NEEDS_ABSOLUTE, MODE_NOT_ABSOLUTE, HOMING_IN_SYNC),
     "MC_Halt": _JOB + (DECELERATION, JERK),
     "MC_Stop": _JOB + (MODE,),
-    "MC_MoveAbsolute": _CONTROLLED + (POSITION, VELOCITY, DIRECTION) + _DYN,
-    "MC_MoveRelative": _CONTROLLED + (DISTANCE, VELOCITY) + _DYN,
-    "MC_MoveVelocity": _CONTROLLED + (VELOCITY, DIRECTION) + _DYN,
-    "MC_MoveJog": _CONTROLLED + (VELOCITY, DIRECTION) + _DYN,
+    "MC_MoveAbsolute": _JOB + (POSITION, VELOCITY, DIRECTION) + _DYN,
+    "MC_MoveRelative": _JOB + (DISTANCE, VELOCITY) + _DYN,
+    "MC_MoveVelocity": _JOB + (VELOCITY, DIRECTION) + _DYN,
+    "MC_MoveJog": _JOB + (VELOCITY, DIRECTION) + _DYN,
     "MC_MoveSuperimposed": _JOB + (DISTANCE, VELOCITY) + _DYN,
     "MC_GearIn": _SYNC + (NUMERATOR, DENOMINATOR),
     "MC_GearInPos": _POSITIONED + (NUMERATOR, DENOMINATOR, SLAVE_SYNC_POSITION),

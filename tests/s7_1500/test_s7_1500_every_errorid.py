@@ -52,6 +52,12 @@ class Cell:
         self.until(lambda: _final(fb), timeout)
         return fb
 
+    def refused(self, fb: Any, **inputs: Any) -> Any:
+        """Call an instruction without Execute (MC_Power, MC_MoveJog, Enable types) until it shows Error."""
+        self.call(fb, **inputs)
+        self.until(lambda: fb.Error)
+        return fb
+
     def interpolated(self) -> None:
         self.job(MC_InterpolateCam(), Cam=self.cam, Execute=True)
 
@@ -134,24 +140,18 @@ def s_t_function_on_s7_1500() -> Any:
 
 def s_jog_both() -> Any:
     c = Cell(cam=None)
-    jog = c.call(MC_MoveJog(), Axis=c.m, JogForward=True, JogBackward=True)
-    c.until(lambda: jog.Error)
-    return jog
+    return c.refused(MC_MoveJog(), Axis=c.m, JogForward=True, JogBackward=True)
 
 
 def s_stop_mode() -> Any:
     c = Cell(cam=None)
     extra = c.extra_axis()
-    power = c.call(MC_Power(), Axis=extra, Enable=True, StopMode=7)
-    c.until(lambda: power.Error)
-    return power
+    return c.refused(MC_Power(), Axis=extra, Enable=True, StopMode=7)
 
 
 def s_second_power() -> Any:
     c = Cell(cam=None)
-    power = c.call(MC_Power(), Axis=c.m, Enable=True)
-    c.until(lambda: power.Error)
-    return power
+    return c.refused(MC_Power(), Axis=c.m, Enable=True)
 
 
 def s_direct_homing_during_active_homing() -> Any:
@@ -172,9 +172,7 @@ def s_relative_target_out_of_range() -> Any:
 
 def s_additive_position() -> Any:
     c = Cell(cam=None)
-    add = c.call(MC_LeadingValueAdditive(), Axis=c.s, Enable=True, Position=NAN)
-    c.until(lambda: add.Error)
-    return add
+    return c.refused(MC_LeadingValueAdditive(), Axis=c.s, Enable=True, Position=NAN)
 
 
 def s_job_in_stop() -> Any:
@@ -271,9 +269,7 @@ def s_phasing_without_gearing() -> Any:
 
 def s_simulation_without_sync() -> Any:
     c = Cell(cam=None)
-    sim = c.call(MC_SynchronizedMotionSimulation(), Slave=c.s, Enable=True)
-    c.until(lambda: sim.Error)
-    return sim
+    return c.refused(MC_SynchronizedMotionSimulation(), Slave=c.s, Enable=True)
 
 
 def s_gear_in_while_simulated() -> Any:

@@ -284,3 +284,63 @@ def test_s7_1500_alarm_541_positioning_monitoring_removes_enable_s6_1_5_6():
     r.call(mr, Execute=True, Distance=5.0, Velocity=50.0)
     r.ctl.run_until(lambda: mr.Error, timeout=3.0)
     assert mr.ErrorID == 0x8001 and r.detail() == (541, 4) and r.axis.ErrorWord.PositioningFault
+
+
+HW = {"PositionLimits_HW.Active": True, "PositionLimits_HW.MinSwitchAddress": "I0.1",
+      "PositionLimits_HW.MaxSwitchAddress": "I0.2", "PositionLimits_HW.MinSwitchLevel": True,
+      "PositionLimits_HW.MaxSwitchLevel": True}
+
+
+def _hw_rig() -> Rig:
+    r = Rig({**DRIVE, **HW})
+    r.ctl.plant.place_switch("I0.1", axis=r.axis, high=-500.0, name="low limit switch")
+    r.ctl.plant.place_switch("I0.2", axis=r.axis, low=5.0, name="high limit switch")
+    return r
+
+
+def test_s7_1500_alarm_531_hardware_limit_switch_removes_enable_s6_1_5_3():
+    """§6.1.5.3 "If a hardware limit switch is reached, technology alarm 531 is output, and the technology
+    object is disabled": ErrorWord.X9, reaction 4; MC_Reset acknowledges (no restart)."""
+    r = _hw_rig()
+    mv = r.moving(40.0)
+    r.ctl.run_until(lambda: not r.power.Status, timeout=2.0)
+    assert r.detail() == (531, 4) and r.axis.ErrorWord.HWLimit and mv.ErrorID == 0x8001
+    assert not r.axis.StatusWord.RestartRequired
+
+
+def test_s7_1500_alarm_531_with_both_switches_actuated_needs_a_restart_s6_1_5_3():
+    """Both hardware limit switches at once (wiring): alarm 531 that only a restart clears (StatusWord.X3)."""
+    r = _hw_rig()
+    r.ctl.plant.switch("I0.1").stick(True)
+    r.ctl.plant.switch("I0.2").stick(True)
+    r.ctl.run_until(lambda: r.axis.StatusWord.Error, timeout=1.0)
+    assert r.detail() == (531, 4) and r.axis.StatusWord.RestartRequired
+    r.ctl.plant.switch("I0.1").repair()
+    r.ctl.plant.switch("I0.2").repair()
+    assert r.reset().Error and r.detail() == (531, 4)
+    r.enable = False
+    r.ctl.run(0.01)
+    assert r.reset(restart=True).Done and r.detail() == (0, 0)
+
+
+def test_s7_1500_alarm_341_homing_velocity_zero_stops_with_maximum_dynamics_s7_1_1():
+    """Active homing with Homing.ReferencingVelocity 0: alarm 341 (ErrorWord.X10 HomingError), reaction 2."""
+    r = Rig({**VIRTUAL, "VirtualAxis": {"Mode": 0}, "Actor": {"Type": 1},
+             "DynamicLimits": {**DYN["DynamicLimits"], "MaxDeceleration": 3000.0},
+             "Homing": {"ReferencingVelocity": 0.0}, "Sensor": {"Sensor[1]": {"ActiveHoming": {"Mode": 0}}}})
+    mv = r.moving(50.0)
+    n = len(r.v)
+    home = r.call(MC_Home(), Execute=True, Mode=3)
+    r.ctl.run(0.05)
+    assert home.Error and home.ErrorID == 0x8001 and r.detail() == (341, 2) and r.axis.ErrorWord.HomingError
+    assert mv.Error and braking(r.v, n) == pytest.approx(3000.0, rel=1e-6) and r.v[-1] == 0.0
+
+
+def test_s7_1500_alarm_412_modulo_actual_value_jump_removes_enable_s7_1_1():
+    """The actual value of a modulo axis jumps by more than one modulo length in a servo cycle: alarm 412
+    (ErrorWord.X5 SensorFault), reaction 4."""
+    r = Rig({**DRIVE, "Properties.MotionType": 1, "Units.LengthUnit": 1005, "Modulo.Enable": True,
+             "Modulo.Length": 360.0, "FollowingError.MaxValue": 1e6, "FollowingError.MinValue": 1e6})
+    r.axis.disturb_load(jump=400.0)
+    r.ctl.run(0.02)
+    assert r.detail() == (412, 4) and r.axis.ErrorWord.SensorFault and not r.power.Status

@@ -344,3 +344,18 @@ def test_s7_1500_alarm_412_modulo_actual_value_jump_removes_enable_s7_1_1():
     r.axis.disturb_load(jump=400.0)
     r.ctl.run(0.02)
     assert r.detail() == (412, 4) and r.axis.ErrorWord.SensorFault and not r.power.Status
+
+
+def test_s7_1500_alarm_342_homing_mark_not_found_between_the_limit_switches_s6_1_5_5():
+    """Active homing with reversal at the hardware limit switches that finds no homing mark between them:
+    alarm 342 (ErrorWord.X10), reaction 3 emergency stop ramp; the job ends with 16#8001."""
+    r = Rig({**DRIVE, **HW, "Homing.AutoReversal": True, "Homing.ApproachVelocity": 20.0,
+             "Sensor[1].ActiveHoming.Mode": 2, "Sensor[1].ActiveHoming.DigitalInputAddress": "I0.3",
+             "Plant.HomingSwitchPosition": 1.0e6})
+    r.ctl.plant.place_switch("I0.1", axis=r.axis, high=-5.0, name="low limit switch")
+    r.ctl.plant.place_switch("I0.2", axis=r.axis, low=5.0, name="high limit switch")
+    home = r.call(MC_Home(), Execute=True, Mode=3)
+    r.ctl.run_until(lambda: home.Error, timeout=5.0)
+    assert home.ErrorID == 0x8001 and r.detail() == (342, 3) and r.axis.ErrorWord.HomingError
+    r.ctl.run(0.1)
+    assert r.v[-1] == 0.0

@@ -255,14 +255,15 @@ def test_drives_cia402_homing_mode_from_the_master(rigs):
 
 
 def test_drives_cia402_s7_1500_drive_fault():
-    """Family-neutral: on an S7-1500 axis the same EMCY is that family's drive fault - technology alarm 202
-    with ErrorWord bit 4 and StatusDrive.Error (S7-1500T V5 technology alarm 202 "drive fault"; the
+    """Family-neutral: on an S7-1500 axis the same EMCY is that family's drive fault - technology alarm 421
+    with ErrorWord bit 4 and StatusDrive.Error (the CPU's technology alarm 421 "drive error"; the
     reaction remove enable); a heartbeat loss sets ErrorWord bit 7 (communication fault) and
     StatusDrive.CommunicationOK = FALSE; MC_Reset with the causes gone re-enables."""
     from plcmotion import Controller
     from plcmotion.drives.cia402 import Cia402Link
     from plcmotion.s7_1500 import MC_Power, MC_Reset
-    from plcmotion.s7_1500.technology.tags import ALARM_NUMBERS, error_word
+    from plcmotion.s7_1500.technology.alarms import number
+    from plcmotion.s7_1500.technology.tags import error_word
 
     from _cia402_rig import channel
 
@@ -281,7 +282,7 @@ def test_drives_cia402_s7_1500_drive_fault():
         assert power.Status
         ax.drive.simulated.inject_fault(EMCY_OVERCURRENT)
         cycles(5)
-        assert [ALARM_NUMBERS[a.kind] for a in ax.alarms] == [202]
+        assert [number(a) for a in ax.alarms] == [421]
         assert error_word(ax) & (1 << 4) and ax.StatusDrive.Error and not power.Status
         ax.drive.simulated.heartbeat(False)
         cycles(15)

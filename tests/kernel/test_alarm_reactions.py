@@ -9,6 +9,8 @@ from __future__ import annotations
 
 from types import SimpleNamespace
 
+import pytest
+
 from plcmotion import Controller
 from plcmotion.kernel import faults as F
 from plcmotion.kernel.alarm_reactions import AlarmReactions
@@ -91,4 +93,34 @@ def test_kernel_alarm_reactions_controller_axis_acknowledge_and_enable_again():
     assert axis.acknowledge() is None and axis.alarms == []
     axis.power(owner, True, 1, 0)
     ctl.run(0.1)
+    assert axis.state == "enabled"
+
+
+def test_kernel_alarm_reactions_max_dynamics_brakes_with_the_configured_limits():
+    """A family's reaction "stop with the maximum dynamic values" (kernel ``Reaction.MAX_DYNAMICS``): the
+    running job ends with the alarm and the axis brakes with the configured maximum deceleration (here a
+    family with dynamic limits of its own), not with the deceleration of the defaults or the emergency ramp."""
+    ctl = Controller(servo_cycle=0.001, app_cycle=0.001, family="S7-1500")
+    axis = ctl.add_positioning_axis("Axis_1", {"VirtualAxis.Mode": 1, "DynamicLimits.MaxDeceleration": 700.0,
+                                               "DynamicLimits.MaxJerk": 0.0,
+                                               "DynamicDefaults.Deceleration": 100.0,
+                                               "DynamicDefaults.EmergencyDeceleration": 300.0,
+                                               "DynamicDefaults.Jerk": 0.0})
+    owner = object()
+    axis.power(owner, True, 1, 0)
+    ctl.run(0.05)
+    job = Job(JobKind.VELOCITY, velocity=50.0)
+    axis.submit(job)
+    ctl.run(1.0)
+    dec = 700.0
+    v0 = axis.ctl.bank.sp_v[axis.index]
+    fault = F.alarm(F.INTERNAL, "test", Reaction.MAX_DYNAMICS)
+    axis.alarm_reactions.raise_alarm(fault)           # the kernel component, without the family's table
+    assert job.state == JobState.ERROR and job.fault is fault
+    velocities = []
+    for _ in range(int(v0 / dec / 0.001) + 20):
+        ctl.step()
+        velocities.append(float(axis.ctl.bank.sp_v[axis.index]))
+    drops = [a - b for a, b in zip([v0] + velocities, velocities)]
+    assert max(drops) == pytest.approx(dec * 0.001, rel=1e-6) and velocities[-1] == 0.0
     assert axis.state == "enabled"

@@ -12,8 +12,8 @@ Manual sections:
   S7-1500T synchronous operation V5 (seeds/001): §6.1.5.6 / §A.1 alarm 521 following error and 541
   positioning monitoring (remove enable), §6.1.5.3 alarm 531 hardware limit switch (remove enable), §7.1.1
   ErrorWord X4 DriveFault, X5 SensorFault, X7 CommunicationFault, X9 HWLimit, X11 FollowingErrorFault,
-  X12 PositioningFault; ErrorDetail.Number/Reaction; drive/encoder alarm numbers 202/203 are plcmotion's
-  (docs/s7_1500/errorids.md).
+  X12 PositioningFault; ErrorDetail.Number/Reaction; a drive or encoder station failure is the CPU's
+  communication alarm 431 (ErrorWord.X7 only, docs/s7_1500/alarms.md).
 """
 from __future__ import annotations
 
@@ -131,8 +131,8 @@ FOLLOWING = {"S7-1200": (0x800D, 0x0001), "S7-1500": (521, 4)}
 NOT_REACHED = {"S7-1200": (0x800F, 0x0045), "S7-1500": (541, 4)}
 LEFT = {"S7-1200": (0x800F, 0x0046), "S7-1500": (541, 4)}
 HW_MAX = {"S7-1200": (0x8004, 0x000E), "S7-1500": (531, 4)}
-ENCODER_LOST = {"S7-1200": (0x800A, 0x0040), "S7-1500": (203, 4)}
-BUS_LOST = {"S7-1200": (0x800C, 0x003E), "S7-1500": (202, 4)}
+ENCODER_LOST = {"S7-1200": (0x800A, 0x0040), "S7-1500": (431, 4)}
+BUS_LOST = {"S7-1200": (0x800C, 0x003E), "S7-1500": (431, 4)}
 
 
 # ---------------------------------------------------------------------------------------------------------
@@ -340,8 +340,8 @@ def test_kernel_defect11_place_switch_rejects_bad_placements():
 # (3) encoder loss, (4) bus loss
 @pytest.mark.parametrize("family", FAMILIES)
 def test_kernel_defect11_encoder_loss(family):
-    """The encoder on the bus fails (station failure): S7-1200 §12.8 16#800A/16#0040, S7-1500 encoder alarm
-    (203, ErrorWord.X5 SensorFault, X7 CommunicationFault), remove enable; actual values invalid
+    """The encoder on the bus fails (station failure): S7-1200 §12.8 16#800A/16#0040 (SensorFault and
+    CommunicationFault), S7-1500 communication alarm 431 (ErrorWord.X7 CommunicationFault), remove enable; actual values invalid
     (StatusSensor.State 0), CommunicationOK FALSE, 'homed' lost (§2.5).  While the encoder is gone,
     position-controlled enabling is refused; once back, MC_Reset acknowledges and the axis is enabled."""
     b = Bench(family)
@@ -352,7 +352,7 @@ def test_kernel_defect11_encoder_loss(family):
     b.until(lambda: not b.power.Status, 0.05, "remove enable")
     b.ctl.step()
     assert b.disabled() and b.alarm() == ENCODER_LOST[family]
-    assert b.error_bit("SensorFault") and b.error_bit("CommunicationFault")
+    assert b.error_bit("CommunicationFault") and b.error_bit("SensorFault") == (family == "S7-1200")
     sensor = b.axis.StatusSensor if family == "S7-1200" else b.axis.StatusSensor[1]
     homed = b.axis.StatusBits.HomingDone if family == "S7-1200" else b.axis.StatusWord.X5
     assert sensor.State == 0 and not sensor.CommunicationOK and not homed
@@ -377,8 +377,8 @@ def test_kernel_defect11_encoder_loss_of_an_hsc_encoder_is_a_hardware_error_s7_1
 @pytest.mark.parametrize("family", FAMILIES)
 def test_kernel_defect11_bus_loss(family):
     """The drive's telegram fails (station failure) - S7-1200 §12.8 16#800C/16#003E with ErrorBits.DriveFault
-    and CommunicationFault; S7-1500 drive alarm (202, ErrorWord.X4, X7); the encoder in the same telegram is
-    lost too (SensorFault, StatusSensor.CommunicationOK FALSE).  Remove enable; MC_Reset does not help while
+    and CommunicationFault; S7-1500 communication alarm 431 (ErrorWord.X7); the encoder in the same telegram is
+    lost too (S7-1200 SensorFault, StatusSensor.CommunicationOK FALSE).  Remove enable; MC_Reset does not help while
     the bus is down; with the bus back it acknowledges and the axis is enabled again."""
     b = Bench(family)
     mv = b.moving()
@@ -387,7 +387,8 @@ def test_kernel_defect11_bus_loss(family):
     b.ctl.step()
     assert b.disabled() and b.alarm() == BUS_LOST[family]
     assert mv.Error
-    assert b.error_bit("DriveFault") and b.error_bit("SensorFault") and b.error_bit("CommunicationFault")
+    assert b.error_bit("CommunicationFault")
+    assert b.error_bit("DriveFault") == b.error_bit("SensorFault") == (family == "S7-1200")
     sensor = b.axis.StatusSensor if family == "S7-1200" else b.axis.StatusSensor[1]
     assert not b.axis.StatusDrive.CommunicationOK and not sensor.CommunicationOK
     rs = b.reset()

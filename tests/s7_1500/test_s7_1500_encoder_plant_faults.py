@@ -64,7 +64,7 @@ BAD = [math.nan, math.inf, -math.inf, 1e300, -2e12, "12.5", None, 10 ** 400, Tru
 @pytest.mark.parametrize("bad", BAD, ids=["nan", "inf", "-inf", "1e300", "-2e12", "str", "None", "10e400", "bool"])
 def test_s7_1500_bad_measured_value_is_an_encoder_fault_not_a_stop_s7_1_1(bad):
     """§7.1.1 / §A.1.31: a measured value that is no number in range is an error of the encoder system:
-    alarm 203, reaction 4 (remove enable), StatusWord.X1, ErrorWord.X5 (SensorFault), StatusSensor[1].State
+    alarm 411, reaction 4 (the encoder is disabled), StatusWord.X1, ErrorWord.X5 (SensorFault), StatusSensor[1].State
     0 and StatusSensor[1].Error; the controller stays in RUN and no value becomes non-finite.  Before the
     fix ``math.floor(nan)`` stopped the controller with an internal error (1e300 was taken as a position)."""
     b = Bench()
@@ -72,7 +72,7 @@ def test_s7_1500_bad_measured_value_is_an_encoder_fault_not_a_stop_s7_1_1(bad):
     rows = b.run(20)
     e = b.enc
     assert b.ctl.mode == "RUN", b.ctl.stop_reason
-    assert e.ErrorDetail.Number == 203 and e.ErrorDetail.Reaction == 4
+    assert e.ErrorDetail.Number == 411 and e.ErrorDetail.Reaction == 4
     assert e.StatusWord.Error and not e.StatusWord.Enable and e.ErrorWord.X5
     assert e.StatusSensor[1].State == 0 and e.StatusSensor[1].Error
     assert not b.pe.Status and b.pe.Error
@@ -98,7 +98,7 @@ def test_s7_1500_injected_encoder_fault_also_stops_the_followers_s3_3_2():
     b = Bench()
     b.enc.inject_fault()
     rows = b.run(200)
-    assert b.enc.ErrorWord.X5 and b.enc.ErrorDetail.Number == 203
+    assert b.enc.ErrorWord.X5 and b.enc.ErrorDetail.Number == 411
     assert b.gear.Error and b.gear.ErrorID == 0x8001
     assert all(-1e-9 <= q["s"] - p["s"] <= V * 0.001 * 1.01 for p, q in zip(rows, rows[1:]))
 
@@ -106,7 +106,7 @@ def test_s7_1500_injected_encoder_fault_also_stops_the_followers_s3_3_2():
 def test_s7_1500_gearing_to_an_encoder_that_already_failed_is_refused_s3_3_2():
     """Issue 8 review: a MC_GearIn started after the encoder failed coupled to the held value and showed
     InGear.  With the actual value invalid there is no leading value (§3.3.2): the job ends with 16#8001
-    and the follower shows the alarm of an invalid leading value, as for a fault during the coupling."""
+    and the follower shows the alarm of an invalid leading value (601), as for a fault during the coupling."""
     ctl = Controller(family="S7-1500T", app_cycle=0.001)
     enc = ctl.add_external_encoder("Enc", {"Sensor": FINE, "Plant": {"Velocity": V}})
     s = ctl.add_synchronous_axis("S", VIRTUAL, leading_values=[("Enc", "actual")])
@@ -129,7 +129,7 @@ def test_s7_1500_gearing_to_an_encoder_that_already_failed_is_refused_s3_3_2():
     outs = cycles(20, execute=True)
     assert not any(busy or in_gear for busy, in_gear, _, _ in outs), outs
     assert gear.Error and gear.ErrorID == 0x8001
-    assert s.StatusWord.Error and s.ErrorDetail.Number == 900
+    assert s.StatusWord.Error and s.ErrorDetail.Number == 601      # the follower's leading value error
     assert s.Velocity == 0.0
 
 

@@ -214,7 +214,7 @@ def test_s7_1500_gearing_to_a_proxy_with_alarm_900_pending_is_refused_s8_2_3():
         a.step()
         pb(Axis=sb, Enable=True)
         b.step()
-    assert proxy.ErrorWord.X7 and proxy.ErrorDetail.Number == 900 and not sb.StatusWord.Error
+    assert proxy.ErrorWord.X2 and proxy.ErrorDetail.Number == 900 and not sb.StatusWord.Error
     seen = []
     for _ in range(10):
         a.step()
@@ -223,7 +223,7 @@ def test_s7_1500_gearing_to_a_proxy_with_alarm_900_pending_is_refused_s8_2_3():
         seen.append(gear.Busy or gear.InGear)
         b.step()
     assert not any(seen) and gear.Error and gear.ErrorID == 0x8001
-    assert sb.StatusWord.Error and sb.ErrorDetail.Number == 900
+    assert sb.StatusWord.Error and sb.ErrorDetail.Number == 601      # the follower's leading value error
 
 
 def test_s7_1500_proxy_extrapolates_late_values_and_raises_alarm_900_when_they_stop_s8_2_3():
@@ -241,7 +241,7 @@ def test_s7_1500_proxy_extrapolates_late_values_and_raises_alarm_900_when_they_s
     for _ in range(10):
         a.step()
         b.step()
-    assert not proxy.StatusWord.X4 and proxy.ErrorWord.X7 and proxy.ErrorDetail.Number == 900
+    assert not proxy.StatusWord.X4 and proxy.ErrorWord.X2 and proxy.ErrorDetail.Number == 900
     assert gb.Error and gb.ErrorID == 0x8001 and sb.StatusWord.Error
     reset = MC_Reset()
     reset(Axis=proxy, Execute=True)
@@ -252,7 +252,7 @@ def test_s7_1500_proxy_extrapolates_late_values_and_raises_alarm_900_when_they_s
         b.step()
     reset(Axis=proxy, Execute=False)
     reset(Axis=proxy, Execute=True)
-    assert reset.Done and proxy.StatusWord.X4 and not proxy.ErrorWord.X7
+    assert reset.Done and proxy.StatusWord.X4 and not proxy.ErrorWord.X2
 
 
 @pytest.mark.timeout_guard

@@ -53,7 +53,7 @@ class Remote:
             fields.update(telegram)
             self.feed.queue.append(LeadingValueSample(**fields))
             self.ctl.step()
-            self.rows.append(dict(t=self.ctl.time, x4=bool(self.p.StatusWord.X4), alarm=bool(self.p.ErrorWord.X7),
+            self.rows.append(dict(t=self.ctl.time, x4=bool(self.p.StatusWord.X4), alarm=bool(self.p.ErrorWord.X2),
                                   p=self.p.Position, s=self.s.Position, sa=self.s.ActualPosition,
                                   in_gear=self.gear.InGear, error=self.gear.Error))
 
@@ -145,11 +145,11 @@ def test_s7_1500_alarm_900_acknowledged_once_valid_values_return_s8_1_2():
     r = Remote(tolerance=0.012)
     r.synchronous()
     r.step(10, position=math.inf)
-    assert r.p.ErrorWord.X7 and not r.p.StatusWord.X4
+    assert r.p.ErrorWord.X2 and not r.p.StatusWord.X4
     r.step(2)
     r.st["reset"] = True
     r.step(2)
-    assert r.reset.Done and r.p.StatusWord.X4 and not r.p.ErrorWord.X7
+    assert r.reset.Done and r.p.StatusWord.X4 and not r.p.ErrorWord.X2
     assert math.isfinite(r.p.Position) and r.p.Position == pytest.approx(V * (r.ctl.time - 0.0), abs=V * 0.004)
 
 
@@ -194,4 +194,4 @@ def test_s7_1500_no_telegram_stream_makes_a_setpoint_non_finite_defect2(stream):
         assert r.ctl.mode == "RUN"
         assert all(math.isfinite(v) for v in (r.p.Position, r.p.Velocity, r.p.Acceleration))
         assert math.isfinite(r.s.Position) and math.isfinite(r.s.ActualPosition) and math.isfinite(r.s.Velocity)
-        assert not (r.p.StatusWord.X4 and r.p.ErrorWord.X7)
+        assert not (r.p.StatusWord.X4 and r.p.ErrorWord.X2)

@@ -59,7 +59,7 @@ class Remote:
             self.feed.queue.extend(after)
             self.ctl.step()
             t = self.ctl.time
-            self.rows.append(dict(t=t, x4=bool(self.p.StatusWord.X4), alarm=bool(self.p.ErrorWord.X7),
+            self.rows.append(dict(t=t, x4=bool(self.p.StatusWord.X4), alarm=bool(self.p.ErrorWord.X2),
                                   p=self.p.Position, s=self.s.Position, in_gear=self.gear.InGear,
                                   error=self.gear.Error))
 

@@ -72,7 +72,6 @@ def test_s7_1500_jerk_zero_gives_a_trapezoidal_profile_and_jerk_limits_otherwise
     (MC_MoveRelative, {"Distance": 10.0, "Deceleration": 0.0}, E.parameter("Deceleration")),
     (MC_MoveRelative, {"Distance": float("nan")}, E.parameter("Distance")),
     (MC_MoveRelative, {"Distance": 2e12}, E.parameter("Distance")),
-    (MC_MoveAbsolute, {"Position": 10.0}, E.NOT_HOMED),
     (MC_MoveVelocity, {"Velocity": 10.0, "Direction": 3}, E.parameter("Direction")),
     (MC_MoveVelocity, {"Velocity": float("inf")}, E.parameter("Velocity")),
     (MC_Halt, {"Deceleration": 0.0}, E.parameter("Deceleration")),

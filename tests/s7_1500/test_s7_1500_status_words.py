@@ -99,27 +99,26 @@ def test_s7_1500_done_stays_true_during_passive_homing_s6_1_5_5():
 
 
 # --- X3 CommandNotAccepted -----------------------------------------------------------------------------
-def test_s7_1500_rejected_job_sets_warning_command_not_accepted_until_mc_reset_s7_1_1():
-    """§7.1.1 "Job rejected ... necessary requirements are not fulfilled (for example, technology object
-    not homed)": WarningWord.X3.  A warning: no StatusWord.Error, no ErrorDetail, the axis takes new jobs;
-    MC_Reset clears it (docs/s7_1500/decisions.md)."""
+def test_s7_1500_absolute_move_of_an_unhomed_axis_is_alarm_321_s7_1_1():
+    """§7.1.1 "Job rejected ... (for example, technology object not homed)" is an ErrorWord bit: the CPU's
+    technology alarm 321 (ErrorWord.X3, reaction 3 emergency stop ramp), 16#8001 at the instruction and at
+    MC_Power, until MC_Reset; after it a relative move runs (docs/s7_1500/decisions_alarms.txt, 321)."""
     ctl, axis, steps, power = axis_rig()
-    assert not axis.WarningWord.CommandNotAccepted
     absolute = MC_MoveAbsolute()
     steps.append(lambda: absolute(Axis=axis, Execute=True, Position=10.0))
     ctl.run_until(lambda: absolute.Error, timeout=1.0)
-    assert absolute.ErrorID == E.NOT_HOMED
-    assert axis.WarningWord.CommandNotAccepted and axis.WarningWord.X3
-    assert not axis.ErrorWord.CommandNotAccepted and not axis.StatusWord.Error
-    assert axis.ErrorDetail.Number == 0 and not power.Error
-    relative = MC_MoveRelative()
-    steps.append(lambda: relative(Axis=axis, Execute=True, Distance=5.0))
-    ctl.run_until(lambda: relative.Done, timeout=2.0)                     # jobs are still accepted
-    assert axis.WarningWord.X3
+    ctl.step()
+    assert absolute.ErrorID == E.TO_ALARM and power.Error and power.ErrorID == E.TO_ALARM
+    assert axis.ErrorWord.CommandNotAccepted and axis.StatusWord.Error and not axis.WarningWord.X3
+    assert (axis.ErrorDetail.Number, axis.ErrorDetail.Reaction) == (321, 3)
+    steps.clear()
     reset = MC_Reset()
     steps.append(lambda: reset(Axis=axis, Execute=True))
     ctl.run_until(lambda: reset.Done, timeout=1.0)
-    assert not axis.WarningWord.X3
+    assert int(axis.ErrorWord) == 0 and axis.ErrorDetail.Number == 0
+    relative = MC_MoveRelative()
+    steps.append(lambda: relative(Axis=axis, Execute=True, Distance=5.0))
+    ctl.run_until(lambda: relative.Done, timeout=2.0)
 
 
 @pytest.mark.parametrize("case", ["not_enabled", "stop_lock"])
@@ -180,4 +179,4 @@ def test_s7_1500_alarm_description_names_number_text_and_reaction_s7_1_1():
     from plcmotion.s7_1500.technology.tags import alarm_description
 
     text = alarm_description(F.alarm(F.FOLLOWING_ERROR, "", Reaction.REMOVE_ENABLE))
-    assert text == "alarm 521 following error exceeded (reaction: remove enable)"
+    assert text == "alarm 521 Following error too large (reaction: remove enable)"

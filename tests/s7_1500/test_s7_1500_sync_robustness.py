@@ -52,7 +52,7 @@ def test_s7_1500_absurd_leading_value_of_an_external_encoder_never_reaches_the_f
     assert ctl.mode == "RUN"
     assert gear.Error and not gear.InGear and not gear.Busy and gear.ErrorID == 0x8001
     assert s.StatusWord.Error
-    assert enc.ErrorDetail.Number == 203 and enc.ErrorWord.X5      # the value never left the encoder
+    assert enc.ErrorDetail.Number == 411 and enc.ErrorWord.X5      # the value never left the encoder
     steps = [b[0] - a[0] for a, b in zip(rows, rows[1:])]
     assert all(-1e-9 <= d <= 100.0 * 0.001 * 1.01 for d in steps)          # brakes, no step, no reversal
     assert rows[-1][2] == pytest.approx(0.0, abs=1e-9)

@@ -1,7 +1,8 @@
 """The alarms of an axis: an alarm's reaction, acknowledging alarms and restarting the technology object.
 
 S7-1200 V6 §9.6 / §12.8: every technology alarm has a reaction - none (a warning), stop with the current
-dynamics, stop with the emergency deceleration, or remove the enable - and ends the job it belongs to.
+dynamics, stop with the emergency deceleration, or remove the enable - and ends the job it belongs to
+(or, for a family whose manual has it, stop with the configured maximum dynamics).
 MC_Reset (§11.1.2) acknowledges the alarms whose cause is gone (a device still faulty keeps its alarm, §12.7;
 a configuration error is checked again), and with Restart = TRUE reloads the start values of a disabled
 axis (§9.7).  A restart of the technology object (also CPU STOP -> RUN and POWER ON) loses "homed" as §2.5
@@ -18,6 +19,7 @@ from typing import Any, Protocol
 from . import faults as F
 from .faults import Fault, Reaction
 from .jobs import Job, JobState
+from .motion import max_dynamics
 from .profiles import Planner, Profile
 
 DISABLED, ENABLING, ENABLED, DISABLING = "disabled", "enabling", "enabled", "disabling"
@@ -77,21 +79,24 @@ class AlarmReactions:
             ax._finish_job(victim, JobState.ERROR, t, fault)
         if fault.reaction != Reaction.NONE:
             ax._end_runner_jobs(JobState.ERROR, t, fault)
-        if fault.reaction in (Reaction.REMOVE_ENABLE, Reaction.EMERGENCY):
+        if fault.reaction in (Reaction.REMOVE_ENABLE, Reaction.EMERGENCY, Reaction.MAX_DYNAMICS):
             ax.homing.end_passive(JobState.ERROR, fault)
         if ax.state not in (ENABLED, DISABLING, ENABLING):
             return
         if fault.reaction == Reaction.REMOVE_ENABLE:
             ax._remove_enable(t)
-        elif fault.reaction in (Reaction.STOP, Reaction.EMERGENCY):
+        elif fault.reaction in (Reaction.STOP, Reaction.EMERGENCY, Reaction.MAX_DYNAMICS):
             if ax.state == ENABLING:
                 ax._remove_enable(t)
                 return
             p, v, a = ax._state_now()
-            plan = ax.motion.stop(t, p, v, a, emergency=fault.reaction == Reaction.EMERGENCY,
-                                  jerk=fault.reaction == Reaction.STOP)
             ax._interpolating = False
-            ax._start_profile(plan.profile, plan)
+            if fault.reaction == Reaction.MAX_DYNAMICS:
+                ax._start_profile(ax.motion.stop_with(t, p, v, a, max_dynamics(ax)))
+            else:
+                plan = ax.motion.stop(t, p, v, a, emergency=fault.reaction == Reaction.EMERGENCY,
+                                      jerk=fault.reaction == Reaction.STOP)
+                ax._start_profile(plan.profile, plan)
             ax._stop_positioning_monitor()
 
     def acknowledge(self) -> Fault | None:

@@ -100,7 +100,8 @@ class FaultInjection:
 
         Every kind removes the enable.  A transient fault is gone once acknowledged (MC_Reset); a
         ``persistent`` one stays until ``clear_fault``.  The S7-1500 shows the same faults as technology
-        alarms 202 (drive) and 203 (encoder) with ErrorWord X4/X5/X7 (docs/s7_1500/errorids.md).
+        alarms 421 (drive, ErrorWord X4), 411 (encoder, X5) and 431 (station failure or sign of life, X7)
+        (docs/s7_1500/alarms.md).
         """
         if not isinstance(kind, str) or kind not in KINDS:
             raise ValueError(f"fault kind {kind!r}: one of {', '.join(KINDS)}")

@@ -18,6 +18,7 @@ class Reaction(Enum):
     NONE = "none"                    # nothing beyond what the text of the fault says
     STOP = "stop"                    # brake with the configured deceleration
     EMERGENCY = "emergency"          # brake with the emergency deceleration, no jerk limit (§12.8)
+    MAX_DYNAMICS = "max_dynamics"    # brake with the configured maximum dynamics (deceleration and jerk limits)
     REMOVE_ENABLE = "remove_enable"  # setpoint zero, drive enable removed, drive brakes by itself
 
 

@@ -136,7 +136,7 @@ def test_s7_1500_values_stop_alarm_900_after_tolerance_time_follower_extrapolate
     alarm_at = None
     while x.b.time < t_lost + 0.1:
         x.step()
-        if x.p.ErrorWord.X7 and alarm_at is None:
+        if x.p.ErrorWord.X2 and alarm_at is None:
             alarm_at = x.b.time
         if alarm_at is None:
             assert x.p.StatusWord.X4 and not x.p.StatusWord.X1
@@ -170,12 +170,12 @@ def test_s7_1500_mc_reset_acknowledges_after_values_return_s8_1_2():
     x.step(100)
     x.link.lost = True
     x.step(20)
-    assert x.p.ErrorWord.X7
+    assert x.p.ErrorWord.X2
     x.link.lost = False
     x.step(3)
     x.st["reset"] = True
     x.step(3)
-    assert x.reset.Done and not x.p.ErrorWord.X7 and x.p.StatusWord.X4 and not x.p.StatusWord.X1
+    assert x.reset.Done and not x.p.ErrorWord.X2 and x.p.StatusWord.X4 and not x.p.StatusWord.X1
 
 
 def test_s7_1500_sender_can_provide_the_leading_value_s8_1():

@@ -11,9 +11,11 @@ import math
 from typing import TYPE_CHECKING, Any, Mapping
 
 from . import override as O
+from . import alarms as A
 from . import tags as T
 from ...kernel.axis import DISABLED, ENABLING
-from ...kernel.faults import Fault
+from ...kernel import faults as F
+from ...kernel.faults import Fault, Reaction
 from ...kernel.jobs import Job
 from ...kernel.layered_axis import LayeredAxis
 from ...kernel.leading import AxisLeadingValue
@@ -73,9 +75,30 @@ class PositioningAxis1500(LayeredAxis):
         self.lv_provider.provide_leading_value(sink)
 
     # --- alarms -----------------------------------------------------------------------------------------
+    def raise_alarm(self, fault: Fault, job: Job | None = None) -> None:
+        """The kernel's fault as the CPU's technology alarm: the axis carries out that alarm's reaction
+        (``alarms.ALARMS``; e.g. 601 stops with the maximum dynamic values, 101 removes the enable)."""
+        super().raise_alarm(A.enforce(fault), job)
+
     def acknowledge(self) -> Fault | None:
+        """MC_Reset: alarms that need a restart of the technology object stay (StatusWord.X3)."""
         self.command_not_accepted = False
-        return super().acknowledge()
+        fatal = [a for a in self.alarms if A.needs_restart(a)]
+        persisting = super().acknowledge()
+        if fatal:
+            self.alarms = fatal + [a for a in self.alarms if a not in fatal]
+            return fatal[0]
+        return persisting
+
+    def check_start(self, job: Job) -> Fault | None:
+        """An absolute positioning of an axis that is not homed is technology alarm 321 (ErrorWord.X3,
+        emergency stop ramp; §7.1.1 "Job rejected ... for example, technology object not homed"), not a
+        plain rejection (docs/s7_1500/decisions_alarms.txt, 321)."""
+        fault = super().check_start(job)
+        if fault is not None and fault.kind == F.NOT_HOMED and not fault.ack:
+            fault = F.alarm(F.NOT_HOMED, fault.detail, Reaction.EMERGENCY, "the axis is not homed")
+            self.raise_alarm(fault)
+        return fault
 
     def note_rejected(self, fault: Fault) -> None:
         """An instruction's job was rejected (not enabled, not homed, MC_Stop lock, ...): §7.1.1 "Job

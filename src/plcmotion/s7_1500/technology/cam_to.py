@@ -17,6 +17,7 @@ from ...kernel import faults as F
 from ...kernel.cam import MAX_POINTS, MAX_SEGMENTS, CamCurve, CamDefinitionError, SegmentDef, interpolate
 from ...kernel.jobs import Job, JobKind, JobState
 from ...kernel.words import pack, word_type
+from . import alarms as A
 
 if TYPE_CHECKING:  # pragma: no cover
     from ...kernel.runtime import Controller
@@ -27,7 +28,8 @@ _E12 = 1.0e12
 
 CamStatusWord = word_type("CamStatusWord", {"Control": 0, "Error": 1, "RestartActive": 2,
                                             "OnlineStartValuesChanged": 3, "CamDataChanged": 4,
-                                            "Interpolated": 5, "InInterpolation": 6})
+                                            "Interpolated": 5, "InInterpolation": 6},
+                          aliases={"RestartRequired": 3})
 CamErrorWord = word_type("CamErrorWord", {"SystemFault": 0, "ConfigFault": 1, "UserFault": 2,
                                           "CommandNotAccepted": 3})
 CamWarningWord = word_type("CamWarningWord", {"SystemWarning": 0, "ConfigWarning": 1, "UserWarning": 2,
@@ -284,13 +286,13 @@ class CamTO:
 
     @property
     def StatusWord(self):  # noqa: N802
-        return CamStatusWord(pack({0: bool(self.users), 1: bool(self.alarms), 4: self.data_changed,
+        return CamStatusWord(pack({0: bool(self.users), 1: bool(self.alarms),
+                                   3: A.restart_required(self.alarms, A.CAM), 4: self.data_changed,
                                    5: self.curve is not None, 6: self.in_interpolation}))
 
     @property
     def ErrorWord(self):  # noqa: N802
-        kinds = {a.kind for a in self.alarms}
-        return CamErrorWord(pack({0: F.INTERNAL in kinds}))
+        return CamErrorWord(pack(A.error_bits(self.alarms, A.CAM)))
 
     @property
     def WarningWord(self):  # noqa: N802
@@ -312,10 +314,9 @@ class CamTO:
             return self.curve.end if self.curve is not None else 0.0
         if path in ("StatusWord", "ErrorWord", "WarningWord"):
             return getattr(self, path)
-        if path == "ErrorDetail.Number":
-            return 0                          # a cam raises no technology alarm of its own here
-        if path == "ErrorDetail.Reaction":
-            return 0
+        if path in ("ErrorDetail.Number", "ErrorDetail.Reaction"):
+            # the cam's job failures are instruction errors; an alarm would show with reaction 6 (§A.2.10)
+            return A.error_detail(self.alarms, A.CAM)[path.endswith("Reaction")]
         return self._resolve(path)(None)
 
     def set_tag(self, path: str, value: Any) -> None:

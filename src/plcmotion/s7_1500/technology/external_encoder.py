@@ -28,7 +28,8 @@ from ...kernel.leading_value import LeadingValueSink
 from ...kernel.schema import E12, P, R, REAL, AxisSchema, Param
 from .parameters import _PARAMS_1500, canonical
 from ...kernel.tag_views import TagViews as AxisTagsMixin
-from .tags import ALARM_NUMBERS, REACTION_CODES, ErrorWord, WarningWord
+from . import alarms as A
+from .tags import ErrorWord, WarningWord
 from ...kernel.words import pack, word_type
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -47,11 +48,13 @@ _PARAMS = [p for p in _PARAMS_1500 if p.path.startswith(_PREFIXES)] + [
 ENCODER_SCHEMA = AxisSchema("external encoder", _PARAMS, canonical=canonical)
 
 EncoderStatusWord = word_type("StatusWord", {"Enable": 0, "Error": 1, "RestartActive": 2,
-                                             "OnlineStartValuesChanged": 3, "HomingDone": 5})
+                                             "OnlineStartValuesChanged": 3, "HomingDone": 5},
+                              aliases={"RestartRequired": 3})
 
 
 def _status_word(enc: "ExternalEncoder") -> int:
-    return EncoderStatusWord(pack({0: enc.state == "enabled", 1: bool(enc.alarms), 5: enc.homed}))
+    return EncoderStatusWord(pack({0: enc.state == "enabled", 1: bool(enc.alarms),
+                                   3: A.restart_required(enc.alarms, A.ENCODER), 5: enc.homed}))
 
 
 DYNAMIC: dict[str, Callable[["ExternalEncoder"], Any]] = {
@@ -61,11 +64,10 @@ DYNAMIC: dict[str, Callable[["ExternalEncoder"], Any]] = {
     "ActualModuloCycle": lambda e: e.modulo_cycle(),
     "OperativeSensor": lambda e: 1,
     "StatusWord": _status_word,
-    "ErrorWord": lambda e: ErrorWord(pack({5: any(a.kind == F.ENCODER for a in e.alarms),
-                                           0: any(a.kind == F.INTERNAL for a in e.alarms)})),
+    "ErrorWord": lambda e: ErrorWord(pack(A.error_bits(e.alarms, A.ENCODER))),
     "WarningWord": lambda e: WarningWord(0),
-    "ErrorDetail.Number": lambda e: ALARM_NUMBERS.get(e.alarms[0].kind, 100) if e.alarms else 0,
-    "ErrorDetail.Reaction": lambda e: REACTION_CODES[e.alarms[0].reaction] if e.alarms else 0,
+    "ErrorDetail.Number": lambda e: A.error_detail(e.alarms, A.ENCODER)[0],
+    "ErrorDetail.Reaction": lambda e: A.error_detail(e.alarms, A.ENCODER)[1],
     "StatusSensor[1].State": lambda e: 2 if e.state == "enabled" else 0,
     "StatusSensor[1].Control": lambda e: e.state == "enabled",
     "StatusSensor[1].Error": lambda e: any(a.kind == F.ENCODER for a in e.alarms),
@@ -83,7 +85,7 @@ DYNAMIC: dict[str, Callable[["ExternalEncoder"], Any]] = {
 }
 
 
-#: the encoder fault of a measured value that is no number in range (alarm 203, remove enable, §7.1.1)
+#: the encoder fault of a measured value that is no number in range (alarm 411, encoder disabled, §7.1.1)
 _MEASURING_FAULT = F.alarm(F.ENCODER, "hardware", Reaction.REMOVE_ENABLE, "measured value invalid")
 
 
@@ -224,8 +226,9 @@ class ExternalEncoder(AxisTagsMixin):
         return self.alarms[0] if self.alarms else None
 
     def acknowledge(self) -> Fault | None:
-        self.alarms.clear()
-        return None
+        """MC_Reset: every alarm but one that needs a restart (alarms.ALARMS) is acknowledged."""
+        self.alarms = [a for a in self.alarms if A.needs_restart(a, A.ENCODER)]
+        return self.alarms[0] if self.alarms else None
 
     def restart(self) -> Fault | None:
         if self.state != "disabled" or self.power_owner is not None:

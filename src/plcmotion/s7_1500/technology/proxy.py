@@ -31,6 +31,7 @@ from ...kernel.leading_value import LeadingValueSample, LeadingValueSource
 from ...kernel.schema import E12, REAL, RW, AxisSchema, Param
 from ...kernel.tag_views import TagViews as AxisTagsMixin
 from ...kernel.words import pack, word_type
+from . import alarms as A
 
 if TYPE_CHECKING:  # pragma: no cover
     from ...kernel.runtime import Controller
@@ -50,7 +51,7 @@ ProxyErrorWord = word_type("ErrorWord", {"SystemFault": 0, "ConfigFault": 1, "Us
                                          "CommandNotAccepted": 3, "CommunicationFault": 7})
 ProxyWarningWord = word_type("WarningWord", {"SystemWarning": 0, "ConfigWarning": 1, "UserWarning": 2,
                                              "CommandNotAccepted": 3, "CommunicationWarning": 7})
-ALARM_INVALID = 900
+ALARM_INVALID = 900          # alarms.ALARMS[900]: ErrorWord.X2, ErrorDetail.Reaction 13
 #: default of LeadingAxisProxy.telegram_time_window [s]: generous for a sender that runs ahead (virtual time
 #: on another process, an application cycle ahead in-process), small against a forged far-future time
 TELEGRAM_TIME_WINDOW = 1.0
@@ -67,10 +68,10 @@ DYNAMIC: dict[str, Callable[["LeadingAxisProxy"], Any]] = {
     "Velocity": lambda p: p.value[1],
     "Acceleration": lambda p: p.value[2],
     "StatusWord": _status,
-    "ErrorWord": lambda p: ProxyErrorWord(pack({7: bool(p.alarms)})),
+    "ErrorWord": lambda p: ProxyErrorWord(pack(A.error_bits(p.alarms, A.PROXY))),
     "WarningWord": lambda p: ProxyWarningWord(pack({7: p.extrapolating_late})),
-    "ErrorDetail.Number": lambda p: ALARM_INVALID if p.alarms else 0,
-    "ErrorDetail.Reaction": lambda p: 13 if p.alarms else 0,
+    "ErrorDetail.Number": lambda p: A.error_detail(p.alarms, A.PROXY)[0],
+    "ErrorDetail.Reaction": lambda p: A.error_detail(p.alarms, A.PROXY)[1],
     "StatusExternalLeadingValue.ModuloLength": lambda p: p.newest.modulo_length if p.newest else 0.0,
     "StatusExternalLeadingValue.ModuloStartValue": lambda p: p.newest.modulo_start if p.newest else 0.0,
     "StatusExternalLeadingValue.AdjustmentTime": lambda p: p.adjustment_time,

@@ -4,9 +4,8 @@ Computed when read from the kernel state (``kernel.axis_status``, the jobs, the 
 status words are DWORDs whose bits read as ``axis.StatusWord.X22`` or by name
 (``axis.StatusWord.Synchronous``).
 
-Technology alarm numbers (``ErrorDetail.Number``): the manual names 501-503 (dynamic values limited),
-521/522 (following error / warning), 531 (hardware limit switch), 541 (positioning) and 900 (leading
-axis proxy); the other numbers are plcmotion's, listed in docs/errorids_s7_1500.md.
+Technology alarms (``ErrorDetail``, the ErrorWord/WarningWord bits, StatusWord.X3 RestartRequired) come
+from the table of ``alarms.py`` with the CPU's numbers; docs/s7_1500/alarms.md lists them.
 """
 from __future__ import annotations
 
@@ -15,11 +14,11 @@ from typing import TYPE_CHECKING, Any, Callable
 import numpy as np
 
 from ...kernel import faults as F
-from ...kernel.faults import Fault, Reaction
+from ...kernel.faults import Fault
 from ...kernel.jobs import JobKind
 from ...kernel import axis_status as S
-from ...kernel.axis_status import communication_fault
 from ...kernel.words import pack, word_type
+from . import alarms as A
 
 if TYPE_CHECKING:  # pragma: no cover
     from .axes import PositioningAxis1500 as Axis
@@ -32,7 +31,8 @@ StatusWord = word_type("StatusWord", {
     "Synchronizing": 21, "Synchronous": 22, "SuperimposedMotionCommand": 23, "PhasingCommand": 24,
     "AxisSimulation": 25, "TorqueLimitingCommand": 26, "InLimitation": 27, "NonPositionControlled": 28,
     "KinematicsMotionCommand": 29, "InClamping": 30, "MotionInCommand": 31},
-    aliases={"Standstill": 7})      # §A.1.37 / §A.1.26 spell bit 7 "Standstill", §7.1.1 "StandStill"
+    # §A.1.37 / §A.1.26 spell bit 7 "Standstill", §7.1.1 "StandStill"; §7.1.1 shows bit 3 as "Restart required"
+    aliases={"Standstill": 7, "RestartRequired": 3})
 StatusWord2 = word_type("StatusWord2", {"StopCommand": 0})
 ErrorWord = word_type("ErrorWord", {
     "SystemFault": 0, "ConfigFault": 1, "UserFault": 2, "CommandNotAccepted": 3, "DriveFault": 4,
@@ -48,41 +48,9 @@ SyncStatusWord = word_type("StatusSynchronizedMotion.StatusWord", {
     "MaxVelocityExceeded": 0, "MaxAccelerationExceeded": 1, "MaxDecelerationExceeded": 2, "InSimulation": 3,
     "LeadingValueAdditiveCommand": 4})
 
-#: technology alarm number per kernel fault kind
-ALARM_NUMBERS = {
-    F.INTERNAL: 101, F.CONFIG: 401, F.DRIVE_NOT_READY: 201, F.DRIVE_ALARM: 202, F.ENCODER: 203,
-    F.SW_LIMIT_MIN: 533, F.SW_LIMIT_MAX: 533, F.SW_LIMIT_ORDER: 401, F.HW_LIMIT_MIN: 531, F.HW_LIMIT_MAX: 531,
-    F.HW_LIMIT_FREE: 531, F.FOLLOWING_ERROR: 521, F.POSITIONING: 541, F.REFERENCE_NOT_FOUND: 551,
-    F.HOMING_APPROACH_ZERO: 551, F.HOMING_REFERENCING_ZERO: 551, F.POSITION_RANGE: 552, F.DIRECTION: 401,
-    F.SYNC_MASTER: 601, F.LV_INVALID: 900,
-}
-#: what each technology alarm number stands for (texts of plcmotion; numbers see the module docstring)
-ALARM_TEXTS = {
-    100: "technology alarm", 101: "internal error", 201: "drive not ready", 202: "drive fault",
-    203: "encoder fault", 401: "invalid configuration", 501: "velocity limited to the dynamic limit",
-    502: "acceleration limited to the dynamic limit", 503: "deceleration limited to the dynamic limit",
-    504: "jerk limited to the dynamic limit", 521: "following error exceeded", 522: "following error warning level",
-    531: "hardware limit switch reached", 533: "software limit switch reached or passed",
-    541: "positioning monitoring: target range not reached or left", 551: "homing failed",
-    552: "position outside the numeric range", 601: "leading value not a configured leading value interconnection",
-    900: "external leading value invalid (leading axis proxy)",
-}
-REACTION_TEXTS = {0: "no reaction", 1: "stop with current dynamics", 3: "emergency stop ramp", 4: "remove enable"}
-
-
-def alarm_text(number: int, reaction: int | None = None) -> str:
-    """``"alarm 521 following error exceeded (reaction: remove enable)"`` for messages and summaries."""
-    text = f"alarm {number} {ALARM_TEXTS.get(number, 'technology alarm')}"
-    return text + (f" (reaction: {REACTION_TEXTS.get(reaction, reaction)})" if reaction is not None else "")
-
-
 def alarm_description(fault: Fault) -> str:
     """A kernel fault as an S7-1500 technology alarm with its number, text and reaction."""
-    return alarm_text(ALARM_NUMBERS.get(fault.kind, 100), REACTION_CODES.get(fault.reaction, 0))
-
-
-#: ErrorDetail.Reaction: 0 none, 1 stop with current dynamics, 3 emergency stop ramp, 4 remove enable
-REACTION_CODES = {Reaction.NONE: 0, Reaction.STOP: 1, Reaction.EMERGENCY: 3, Reaction.REMOVE_ENABLE: 4}
+    return A.describe(fault)
 
 
 def _b(ax: "Axis"):
@@ -132,6 +100,7 @@ def status_word(ax: "Axis") -> int:
     bits = {
         0: enabled,
         1: bool(ax.alarms),
+        3: A.restart_required(ax.alarms),
         5: ax.homed,
         6: not moving_job,
         7: S.standstill(ax),
@@ -158,26 +127,13 @@ def status_word(ax: "Axis") -> int:
 
 
 def error_word(ax: "Axis") -> int:
-    k = _kinds(ax)
-    bits = {
-        0: F.INTERNAL in k,
-        1: bool(k & {F.CONFIG, F.HOMING_APPROACH_ZERO, F.HOMING_REFERENCING_ZERO, F.SW_LIMIT_ORDER}),
-        4: bool(k & {F.DRIVE_NOT_READY, F.DRIVE_ALARM}),
-        5: F.ENCODER in k,
-        7: communication_fault(ax),
-        8: bool(k & {F.SW_LIMIT_MIN, F.SW_LIMIT_MAX}),
-        9: bool(k & {F.HW_LIMIT_MIN, F.HW_LIMIT_MAX, F.HW_LIMIT_FREE}),
-        10: bool(k & {F.REFERENCE_NOT_FOUND, F.POSITION_RANGE}),
-        11: F.FOLLOWING_ERROR in k,
-        12: F.POSITIONING in k,
-        14: F.SYNC_MASTER in k,
-    }
-    return ErrorWord(pack(bits))
+    return ErrorWord(pack(A.error_bits(ax.alarms)))
 
 
 def warning_word(ax: "Axis") -> int:
     # bit 3: a job of an instruction was rejected (§7.1.1 "Job rejected"; decisions.md), bit 6: dynamics limited
-    bits = {3: ax.command_not_accepted, 6: bool(ax.warnings), 11: _fe_warning(ax)}
+    # (501-503), bit 11: following error warning level (522)
+    bits = {3: ax.command_not_accepted, A.ALARMS[501].bit: bool(ax.warnings), A.ALARMS[522].bit: _fe_warning(ax)}
     return WarningWord(pack(bits))
 
 
@@ -255,8 +211,8 @@ DYNAMIC: dict[str, Callable[["Axis"], Any]] = {
     "StatusWord2": lambda ax: StatusWord2(pack({0: ax.stop_job is not None})),
     "ErrorWord": error_word,
     "WarningWord": warning_word,
-    "ErrorDetail.Number": lambda ax: ALARM_NUMBERS.get(ax.alarms[0].kind, 100) if ax.alarms else 0,
-    "ErrorDetail.Reaction": lambda ax: REACTION_CODES[ax.alarms[0].reaction] if ax.alarms else 0,
+    "ErrorDetail.Number": lambda ax: A.error_detail(ax.alarms)[0],
+    "ErrorDetail.Reaction": lambda ax: A.error_detail(ax.alarms)[1],
     "StatusPositioning.Distance": _distance,
     "StatusPositioning.TargetPosition": _target,
     "StatusPositioning.TargetPositionModuloCycle": lambda ax: _modulo_cycle(ax, _target(ax)),

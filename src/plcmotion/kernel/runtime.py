@@ -375,7 +375,7 @@ class Controller:
     def _retain_axis(self, axis: PositioningAxis) -> None:
         """Store the retentive data of an axis (written atomically to the state file)."""
         if axis.absolute_encoder():
-            self.retain[axis.name] = {"AbsEncoderOffset": axis.abs_offset, "HomingDone": axis.homed}
+            self.retain[axis.retain_key] = {"AbsEncoderOffset": axis.abs_offset, "HomingDone": axis.homed}
             if self.state_file:
                 retain.save(self.state_file, self.retain)
 

@@ -251,3 +251,15 @@ def test_s7t_encoders_configuration_rule():
     ctl = controller()
     with pytest.raises(Exception, match="EncoderNumber"):
         ctl.add_positioning_axis("A", {**TWO_ENCODERS, "TypeOfAxis.NumberOfEncoders.numberOfEncoders": 1})
+
+
+@pytest.mark.parametrize("encoder_type, number, error_id", [
+    (INCREMENTAL, 3064, 0), (ABSOLUTE, 3064, 0x8086), (2, 3064, 0x8086), (ABSOLUTE, 2033, 0),
+])
+def test_s7t_encoders_parameters_not_available_for_the_encoder_type(encoder_type, number, error_id):
+    """S7-Technology V4.1 §6.7.4 ErrorID 8086: incremental-encoder parameters (3064 IncHomingEncoder.homingMode)
+    of an absolute encoder, and any encoder parameter of an "absolute encoder cyclic absolute" (type 2), are
+    not available; a parameter of no encoder (2033 Kv) is."""
+    r = Rig({"Wizard.Encoder_1.EncoderType": encoder_type, "swlimit.state": 0})
+    rd = _read(r, number, 1)
+    assert rd.ErrorID == error_id

@@ -141,6 +141,15 @@ class PositioningAxis(TagViews):
         """Start values (load memory), used by a restart."""
         return self.parameters.start
 
+    def simulate_actual(self, on: bool) -> None:
+        """``on``: from the next servo cycle the actual values are the setpoints (following error 0) while the
+        drive, not enabled, stands still - a simulation mode that runs the program without moving the
+        machine; off: the drive's actual values again (the axis sees where the machine really is)."""
+        b, i = self.ctl.bank, self.index
+        if bool(b.simulated[i]) != on:
+            b.simulated[i] = on
+            self.ctl._n_sim += 1 if on else -1
+
     @property
     def retain_key(self) -> str:
         """Under which name the controller keeps this axis's retentive data (absolute encoder adjustment):

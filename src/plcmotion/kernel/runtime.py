@@ -207,6 +207,7 @@ class Controller:
         self._n_fe = 0                              # axes with following error monitoring on
         self._n_few = 0                             # axes that report a following error warning
         self._n_pm = 0                              # axes in positioning monitoring
+        self._n_sim = 0                             # axes whose actual values are their setpoints
         self._n_sup = 0                             # axes with a superimposed motion part
         self._bank_time = 0.0                       # time of the setpoints in the bank arrays
         self._dirty_axes: set[PositioningAxis] = set()

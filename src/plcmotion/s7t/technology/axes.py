@@ -73,6 +73,7 @@ class AxisT(LayeredAxis):
     def __init__(self, ctl: "Controller", name: str, cfg: Mapping[str, Any], *, db_number: int | None = None):
         self.errors = ErrorRecord()                  # ErrorID, ErrorBuffer, ErrorStatus of the technology DB
         self.following_mode = False                  # MC_Power Mode 2/3: position control off (§3.1.2)
+        self.simulation_requested = False            # MC_Power Mode 4 taken at the rising edge of Enable
         self.restart_requested = False               # Statusword.RequestRestart
         self.last_direction = 1                      # direction of the last motion (Direction = 4: "current")
         self._warned: Job | None = None
@@ -213,9 +214,27 @@ class AxisT(LayeredAxis):
             self.restart_until = self.now + RESTART_TIME
         return fault
 
+    @property
+    def simulation(self) -> bool:
+        """MC_Power Mode 4 is in force (Statusword.Simulation, §3.1.2)."""
+        return bool(self.ctl.bank.simulated[self.index])
+
     def _enable(self, start_mode: int) -> None:
-        if not self.restarting:                  # enabled once the restart is over (MC_Power calls again)
+        if self.restarting:                      # enabled once the restart is over (MC_Power calls again)
+            return
+        if not (self.simulation_requested and self.servo):
             super()._enable(start_mode)
+            return
+        # simulation mode (§3.1.2): enabled without the drive, the actual values are the setpoints
+        if self._apply_dirty("enable") is not None:
+            return
+        bad = self._config_fault()
+        if bad is not None:
+            self.raise_alarm(bad)
+            return
+        self.position_controlled = start_mode == 1 or not self._has_start_mode()
+        self.simulate_actual(True)
+        self._become_enabled(self.now)
 
     # --- start conditions -------------------------------------------------------------------------------
     def _stop_only_locks(self) -> bool:
@@ -301,6 +320,8 @@ class AxisT(LayeredAxis):
     def _remove_enable(self, t: float, by_power: bool = False) -> None:
         super()._remove_enable(t, by_power)
         self.following_mode = False
+        self.simulation_requested = False
+        self.simulate_actual(False)              # the encoder's actual values from the next servo cycle
 
     def reinitialize(self, reason: str) -> None:
         if reason != "restart":

@@ -22,6 +22,7 @@ with it); a written "Immediately" parameter reads back at once.
 from __future__ import annotations
 
 import math
+import re
 import weakref
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
@@ -31,6 +32,7 @@ from ...kernel.jobs import JobKind
 from ...kernel.tag_views import TagAccessError
 from . import activation
 from . import datasets as D
+from .encoders import ABSOLUTE, CYCLIC_ABSOLUTE, encoder_type
 from .parameters import (ILLEGAL_PARAMETER, INVALID_NUMBER, READ_ONLY, RESTART_REQUIRED, Parameter, parameter)
 from .to_kinds import AxisType, TOKind
 
@@ -189,12 +191,33 @@ def resolve(axis: "AxisT", number: int, index: int) -> Access | int:
     return Access(p, tag, output_of(p))
 
 
+_DATA_SET = re.compile(r"\.DataSet_(\d+)\.")
+_ENCODER = re.compile(r"\.Encoder_(\d+)\.")
+_INCREMENTAL_ONLY = (".IncHomingEncoder.", ".IncBackLash.")
+
+
+def unavailable(axis: "AxisT", tag: str | None) -> bool:
+    """8086 of MC_ReadSysParameter / MC_WriteParameter (§6.7.4, §6.7.5): a parameter of a data set that is
+    not in force, an incremental-encoder parameter of an absolute encoder, any parameter of an encoder of the
+    type "absolute encoder cyclic absolute"."""
+    if tag is None:
+        return False
+    m = _DATA_SET.search(tag)
+    if m and int(m.group(1)) != D.active(axis.eff):
+        return True
+    m = _ENCODER.search(tag)
+    if m and not axis.virtual:
+        kind = axis.eff.get(encoder_type(int(m.group(1))))
+        return kind == CYCLIC_ABSOLUTE or kind == ABSOLUTE and any(s in tag for s in _INCREMENTAL_ONLY)
+    return False
+
+
 def read(axis: "AxisT", number: int, index: int) -> tuple[int, str, Any]:
     """(ErrorID or 0, output, value) of MC_ReadSysParameter."""
     acc = resolve(axis, number, index)
     if isinstance(acc, int):
         return acc, OUT_REAL, 0.0
-    if axis.restarting:
+    if axis.restarting or unavailable(axis, acc.tag):
         return NOT_AVAILABLE, acc.output, 0
     p = acc.parameter
     if acc.tag is None:
@@ -229,7 +252,7 @@ def write(axis: "AxisT", number: int, index: int, value: Any) -> int:
     if isinstance(acc, int):
         return acc
     p = acc.parameter
-    if axis.restarting or activation.deactivated(axis):
+    if axis.restarting or activation.deactivated(axis) or unavailable(axis, acc.tag):
         return NOT_AVAILABLE                  # restarting, or deactivated: not processed (§6.7.2)
     code = p.check(value, index if p.index is not None else None, axis.ctl.servo_cycle)
     if code is not None:

@@ -31,7 +31,7 @@ TELEGRAMS_ONE_ENCODER = (3, 5, 102, 105)
 TELEGRAMS_TWO_ENCODERS = (4, 6, 103, 106)
 TELEGRAMS_NO_ENCODER = (1, 2, 101)
 
-#: revolutions a simulated absolute encoder tells apart (a 12-bit multiturn encoder; docs/s7t/decisions.md D80)
+#: revolutions a simulated absolute encoder tells apart (a 12-bit multiturn encoder; docs/s7t/decisions.md D78)
 ABSOLUTE_REVOLUTIONS = 4096
 
 DS = "TypeOfAxis.NumberOfDataSets.DataSet_1"

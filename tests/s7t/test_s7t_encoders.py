@@ -10,6 +10,8 @@ encoders differ by 4: a changeover without synchronization makes the position co
 from __future__ import annotations
 
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from plcmotion.s7t import (MC_ChangeDataset, MC_Home, MC_MoveAbsolute, MC_MoveVelocity, MC_Power,
                            MC_ReadSysParameter, MC_Reset)
@@ -263,3 +265,21 @@ def test_s7t_encoders_parameters_not_available_for_the_encoder_type(encoder_type
     r = Rig({"Wizard.Encoder_1.EncoderType": encoder_type, "swlimit.state": 0})
     rd = _read(r, number, 1)
     assert rd.ErrorID == error_id
+
+
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(offset=st.floats(min_value=-8.0, max_value=8.0).filter(lambda d: abs(d) > 0.05), sync=st.booleans())
+def test_s7t_encoders_changeover_invariant(offset, sync):
+    """S7-Technology V4.1 §6.2.5: whatever the two encoders differ by (encoder 1 homed to ``offset``, encoder 2
+    counting from 0), a changeover at standstill keeps the position the program sees (the setpoint); with
+    SyncEncoder the load does not move, without it the load moves by exactly the difference."""
+    r = _rig()
+    _home_direct(r, offset)
+    _settle(r, 0.1)
+    mech0, pos0 = r.mech, r.axis.db.ActualPosition
+    change = MC_ChangeDataset()
+    r.call(change, 0.02, Execute=True, Dataset=2, SyncEncoder=sync)
+    _settle(r, 1.5)
+    assert change.Done and r.axis.db.ErrorID == 0
+    assert r.axis.db.ActualPosition == pytest.approx(pos0, abs=0.01)
+    assert r.mech - mech0 == pytest.approx(0.0 if sync else offset, abs=0.01)

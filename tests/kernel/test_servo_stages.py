@@ -254,3 +254,18 @@ def test_kernel_simulated_actual_values_are_the_setpoints():
     assert ctl._n_sim == 0
     ctl.run(0.01)
     assert float(ctl.bank.act_p[i]) == pytest.approx(axis.drive.mechanical_position(), abs=1e-3)
+
+
+def test_kernel_enable_with_simulated_actual_values_leaves_the_drive_off():
+    """An axis whose actual values are simulated (``axis.simulate_actual``, S7-Technology V4.1 §3.1.2) is
+    enabled at once without enabling its drive; a positioning runs on the setpoints while the load stands."""
+    ctl = Controller()
+    axis = ctl.add_positioning_axis("Axis_1", SERVO_AXIS)
+    axis.simulate_actual(True)
+    assert axis.power(Owner(), True, 1, 0) is None and axis.state == "enabled"
+    mech = axis.drive.mechanical_position()
+    move(axis, 50.0)
+    ctl.run(1.0)
+    assert not axis.drive.ready(ctl.time)
+    assert float(ctl.bank.act_p[axis.index]) == pytest.approx(50.0, abs=1e-9)
+    assert axis.drive.mechanical_position() == pytest.approx(mech, abs=1e-12)

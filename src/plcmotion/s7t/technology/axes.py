@@ -222,19 +222,11 @@ class AxisT(LayeredAxis):
     def _enable(self, start_mode: int) -> None:
         if self.restarting:                      # enabled once the restart is over (MC_Power calls again)
             return
-        if not (self.simulation_requested and self.servo):
-            super()._enable(start_mode)
-            return
         # simulation mode (§3.1.2): enabled without the drive, the actual values are the setpoints
-        if self._apply_dirty("enable") is not None:
-            return
-        bad = self._config_fault()
-        if bad is not None:
-            self.raise_alarm(bad)
-            return
-        self.position_controlled = start_mode == 1 or not self._has_start_mode()
-        self.simulate_actual(True)
-        self._become_enabled(self.now)
+        self.simulate_actual(self.simulation_requested and self.servo)
+        super()._enable(start_mode)
+        if self.state != ENABLED:
+            self.simulate_actual(False)          # not enabled (a configuration error): no simulation
 
     # --- start conditions -------------------------------------------------------------------------------
     def _stop_only_locks(self) -> bool:

@@ -153,3 +153,20 @@ def test_s7t_change_dataset_switches_the_clamping_monitoring(dataset, error_id):
     axis.disturb_load(jump=-1.0)
     ctl.run(0.05)
     assert axis.db.ErrorID == error_id and end.InClamping == (error_id == 0)
+
+
+def test_s7t_change_dataset_waiting_change_survives_a_restart():
+    """S7-Technology V4.1 §6.8.3 table 3 (row MC_Reset Restart, column MC_ChangeDataset: no influence) with
+    §6.2.5 IN_POSITION: a change waiting on a disabled axis stays Busy through a restart and is Done with the
+    enable."""
+    r = _rig(IN_POSITION, enable=False)
+    change = MC_ChangeDataset()
+    r.call(change, 0.1, Execute=True, Dataset=2)
+    assert change.Busy
+    reset = MC_Reset()
+    r.until(reset, lambda f: f.Done, limit=2.0, Execute=True, Restart=True)
+    r.call(change, 0.1, Execute=True, Dataset=2)
+    assert change.Busy and not change.CommandAborted and _in_force(r) == 1
+    r.enable = True
+    r.call(change, 0.3, Execute=True, Dataset=2)
+    assert change.Done and _in_force(r) == 2

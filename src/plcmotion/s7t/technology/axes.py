@@ -319,8 +319,7 @@ class AxisT(LayeredAxis):
         if reason != "restart":
             self.restart_until = None
         encoders = self.encoders
-        encoders.leave()
-        self.dataset_change = None
+        encoders.leave()                         # a waiting MC_ChangeDataset goes on (§6.8.3: restart "-")
         super().reinitialize(reason)             # the initial data set is in force again (its encoder)
         new = self._encoder_in_force()
         if new != encoders.active:

@@ -69,3 +69,19 @@ def test_s7t_simulation_mode_speed_axis():
     ctl.run(0.1)
     assert axis.db.ActualVelocity == pytest.approx(30.0, abs=1e-6) and axis.db.Statusword.Simulation
     assert axis.drive.mechanical_position() == pytest.approx(5.0, abs=1e-9)
+
+
+def test_s7t_simulation_mode_stays_after_an_error_and_mc_reset():
+    """S7-Technology V4.1 §6.2.1 (Mode is taken at the rising edge of Enable; an axis disabled by an error is
+    enabled again by MC_Reset while Enable stays TRUE): re-enabled after MC_Reset the axis is simulated again,
+    the drive is not enabled."""
+    from plcmotion.s7t import MC_Reset
+    ctl, axis, power, _ = _sim()
+    axis.inject_fault("drive")
+    ctl.run(0.2)
+    assert not power.Status and not axis.db.Statusword.Simulation
+    axis.clear_fault("drive")
+    reset = MC_Reset()
+    ctl.program(lambda: reset(Axis=axis, Execute=True))
+    ctl.run(0.5)
+    assert power.Status and axis.db.Statusword.Simulation and not axis.db.Statusword.DriveEnabled

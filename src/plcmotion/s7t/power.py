@@ -106,8 +106,7 @@ class MC_Power(Instruction):  # noqa: N801 - instruction name of the manual
         object.__setattr__(self, "_mode", mode)
         if axis.power_owner is None or axis.power_owner is self:
             axis.following_mode = mode == FOLLOWING_ENABLED
-            if axis.state == "disabled":
-                axis.simulation_requested = mode == SIMULATION      # taken when the axis is enabled
+            axis.simulation_requested = mode == SIMULATION  # read when the axis is enabled (also after MC_Reset)
         return 0
 
     def _take_stop(self, axis: AxisT, fall: bool = False) -> int:

@@ -312,7 +312,6 @@ class AxisT(LayeredAxis):
     def _remove_enable(self, t: float, by_power: bool = False) -> None:
         super()._remove_enable(t, by_power)
         self.following_mode = False
-        self.simulation_requested = False
         self.simulate_actual(False)              # the encoder's actual values from the next servo cycle
 
     def reinitialize(self, reason: str) -> None:

@@ -153,8 +153,6 @@ class Encoders:
         ax.abs_offset = self.adjustment[x]
         ax.homed = homed
         ax.drive.set_actual(b, value)
-        if not ax.servo:
-            b.sp_p[ax.index] = value
 
     def power_on(self) -> None:
         """POWER OFF -> ON of the encoders not in force."""

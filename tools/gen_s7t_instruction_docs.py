@@ -36,6 +36,8 @@ INSTRUCTIONS: dict[str, tuple[str, str]] = {
     "MC_MoveAdditive": ("§6.2.8", "correct the target of the running positioning"),
     "MC_MoveSuperImposed": ("§6.2.9", "superimposed positioning"),
     "MC_MoveVelocity": ("§6.2.10", "run at a velocity"),
+    "MC_Home": ("§6.2.2", "home, set or correct the position"),
+    "MC_ChangeDataset": ("§6.2.5", "change the data set (controller values, encoder)"),
 }
 
 # --- what each parameter means (our words); per-FB entries override the common ones -----------------------
@@ -65,8 +67,9 @@ MEANINGS: dict[str, dict[str, str]] = {
                   "program of StopMode and ends every command of the axis",
         "Mode": "taken at the rising edge of Enable: 0 as configured (position-controlled or speed-controlled as "
                 "MC_MoveVelocity PositionControl left it), 1 speed-controlled, 2 following mode with the power unit "
-                "enabled, 3 following mode with the power unit disabled, 5 position-controlled; virtual axes 0 only "
-                "(simulation mode 4 is not available)",
+                "enabled, 3 following mode with the power unit disabled, 4 simulation (the drive is not enabled, the "
+                "actual values are the setpoints, `Statusword.Simulation`), 5 position-controlled; virtual axes 0 "
+                "only",
         "StopMode": "emergency program, taken at both edges of Enable: 0 DefaultStop (emergency deceleration), "
                     "1 FastStop (maximum deceleration), 2 TimeStop (`userdefaultdynamics.stoptime`), 3 OFF2Stop "
                     "(hydraulic axes), 4 GearStop, 5 / 6 ramp-function generator / fast-stop ramp of the drive (real "
@@ -143,6 +146,26 @@ MEANINGS: dict[str, dict[str, str]] = {
         "InVelocity": "the velocity is reached (the velocity override included); with Velocity 0.0 at standstill, "
                       "and the command is then complete",
     },
+    "MC_Home": {
+        "Position": "Mode 0: not used (the configured `userdefaulthoming.homeposition`); 1, 2: the reference point "
+                    "coordinate; 3, 5: the new position; 4, 6, 7: the correction subtracted from the actual value / "
+                    "the setpoint of the basic / of the superimposed coordinate system",
+        "Mode": "0 / 1 active homing (reference point from the configuration / Position), 2 passive homing, 3 direct "
+                "homing, 4 correct the actual value, 5 absolute encoder adjustment, 6 / 7 correct the setpoint "
+                "(basic / superimposed coordinate system), 8 cancel a passive homing; incremental encoders take "
+                "0-4, 6-8, absolute encoders 3-8, virtual axes 3, 4, 6, 7, 8",
+        "Done": "homed (Mode 0-2: at the reference point; 3-7 at once), or the passive homing is cancelled",
+        "Busy": "the active homing runs, or the passive homing waits for its reference mark",
+    },
+    "MC_ChangeDataset": {
+        "SyncEncoder": "only when the new data set measures with another encoder: TRUE the new encoder takes the "
+                       "actual value of the old one, FALSE its own value counts (the axis may make a compensating "
+                       "motion)",
+        "Dataset": "the data set to put in force, 1 … `TypeOfAxis.NumberOfDataSets.numberOfDataSets`",
+        "Done": "the data set is in force (at once when it already was)",
+        "Busy": "waiting for the moment `TypeOfAxis.NumberOfDataSets.changeMode` names",
+        "CommandAborted": "MC_Power Enable = FALSE ended the waiting change",
+    },
 }
 
 #: what the instruction does and what its example shows (our words; the manual's rules are in the code)
@@ -217,6 +240,31 @@ TEXTS: dict[str, tuple[str, str]] = {
         "MC_MoveVelocity with TRUE.",
         "A speed-controlled axis (technology 0) at 50, overridden by 15 at 2 s (CommandAborted at the first "
         "instance while its Execute stays TRUE), then 30 in the negative direction, then Velocity 0.0 at 7 s."),
+    "MC_Home": (
+        "MC_Home gives the axis its position reference. Active homing (Mode 0, 1) moves the axis as configured "
+        "(reference cam and encoder zero mark, zero mark only, external zero mark: "
+        "`TypeOfAxis.NumberOfEncoders.Encoder_1.IncHomingEncoder.homingMode`) and aborts the running motion; "
+        "passive homing (Mode 2) waits for the reference mark while other commands move the axis; direct homing "
+        "(Mode 3) sets the position at once. Modes 4, 6 and 7 correct the actual value or a setpoint coordinate "
+        "system and keep `Statusword.HomingDone`. Mode 5 adjusts an absolute encoder: the offset to its absolute "
+        "value is kept across POWER OFF and restarts; the axis must stand still, position-controlled, with the "
+        "software limit switches off. Which modes an axis takes depends on its encoder (the encoder of the data "
+        "set in force).",
+        "Active homing with reference cam and zero mark (Mode 1, Position 0.0): the axis searches the cam at 50, "
+        "goes on at the shutdown velocity 5 and is homed at the first zero mark after the cam; at 8 s Mode 4 "
+        "corrects the actual value by 25 without a motion."),
+    "MC_ChangeDataset": (
+        "MC_ChangeDataset puts another data set of the axis in force: its controller gain and precontrol, its "
+        "following error and clamping monitoring values and the encoder it measures with. "
+        "`TypeOfAxis.NumberOfDataSets.changeMode` says when: IN_POSITION once the running motion has reached its "
+        "positioning window (not while the axis is synchronized), IN_STANDSTILL at standstill, IMMEDIATELY at "
+        "once, NEVER refused (16#8045). A data set with another encoder changes the actual value over to it; with "
+        "`SyncEncoder` the new encoder takes the old one's actual value first. The new encoder must give valid "
+        "values (parameter 4050). MC_Power Enable = FALSE aborts a waiting change.",
+        "Two data sets without precontrol: data set 1 with the motor encoder and Kv 10, data set 2 with the "
+        "machine encoder and Kv 40. The change started at 1 s waits for the positioning window of the move to 200 "
+        "and is Done there; the encoders are synchronized, so the actual value does not jump, and the move back "
+        "runs with the following error 50 / 40 = 1.25 instead of 5."),
 }
 
 

@@ -192,3 +192,16 @@ def test_kernel_a_state_file_that_never_ends_is_a_clear_error_defect_8(tmp_path)
     worker.start()
     worker.join(10.0)
     assert outcome and "/dev/zero" in outcome[0] and "larger than" in outcome[0], outcome
+
+
+def test_kernel_retain_key_names_the_entry_of_the_axis(tmp_path, monkeypatch):
+    """S7-1200 V6 §11.1.3 modes 6/7: the adjustment is kept under ``axis.retain_key`` (the axis name unless a
+    family names the encoder in force): written there, read from there by a new controller."""
+    from plcmotion.kernel.axis import PositioningAxis
+    monkeypatch.setattr(PositioningAxis, "retain_key", property(lambda self: f"{self.name}/enc"))
+    sf = tmp_path / "keyed.state.json"
+    adjust(sf, 10.0)
+    data = json.loads(sf.read_text())
+    assert set(data["axes"]) == {"A/enc"}
+    again = Controller(state_file=str(sf)).add_positioning_axis("A", ABS)
+    assert again.ActualPosition == pytest.approx(10.0, abs=1e-5) and again.StatusBits.HomingDone

@@ -234,3 +234,38 @@ def test_kernel_a_raising_hook_stops_the_controller_as_a_program_fault_and_the_c
     assert ctl.mode == "STOP" and "servo hook" in ctl.stop_reason and "internal error" not in ctl.stop_reason
     assert axis.state != "enabled"
     assert len(post) == round(ctl.app_cycle / ctl.servo_cycle)   # every cycle ran to its end, post hooks too
+
+
+def test_kernel_simulated_actual_values_are_the_setpoints():
+    """A family's simulation mode (``axis.simulate_actual``; S7-Technology V4.1 §3.1.2 names one): while on,
+    the control stage takes the setpoint as actual value (following error 0); off, the drive's actual value
+    is read again."""
+    ctl = Controller()
+    axis = enabled_axis(ctl)
+    i = axis.index
+    axis.simulate_actual(True)
+    move(axis, 50.0)
+    fe = []
+    ctl.on_post_servo(lambda t: fe.append((float(ctl.bank.fe[i]), float(ctl.bank.act_p[i] - ctl.bank.sp_p[i]))))
+    ctl.run(0.2)
+    assert all(e == 0.0 and d == 0.0 for e, d in fe) and ctl._n_sim == 1
+    axis.simulate_actual(False)
+    axis.simulate_actual(False)
+    assert ctl._n_sim == 0
+    ctl.run(0.01)
+    assert float(ctl.bank.act_p[i]) == pytest.approx(axis.drive.mechanical_position(), abs=1e-3)
+
+
+def test_kernel_enable_with_simulated_actual_values_leaves_the_drive_off():
+    """An axis whose actual values are simulated (``axis.simulate_actual``, S7-Technology V4.1 §3.1.2) is
+    enabled at once without enabling its drive; a positioning runs on the setpoints while the load stands."""
+    ctl = Controller()
+    axis = ctl.add_positioning_axis("Axis_1", SERVO_AXIS)
+    axis.simulate_actual(True)
+    assert axis.power(Owner(), True, 1, 0) is None and axis.state == "enabled"
+    mech = axis.drive.mechanical_position()
+    move(axis, 50.0)
+    ctl.run(1.0)
+    assert not axis.drive.ready(ctl.time)
+    assert float(ctl.bank.act_p[axis.index]) == pytest.approx(50.0, abs=1e-9)
+    assert axis.drive.mechanical_position() == pytest.approx(mech, abs=1e-12)

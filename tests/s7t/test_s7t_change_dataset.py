@@ -130,3 +130,43 @@ def test_s7t_change_dataset_restart_returns_to_the_initial_one():
     reset = MC_Reset()
     r.until(reset, lambda f: f.Done, limit=2.0, Execute=True, Restart=True)
     assert _in_force(r) == 1 and r.axis.config.position_control.kv == 10.0
+
+
+@pytest.mark.parametrize("dataset, error_id", [(1, 0x801B), (2, 0)])
+def test_s7t_change_dataset_switches_the_clamping_monitoring(dataset, error_id):
+    """S7-Technology V4.1 §6.2.5 with §9.4 numbers 2010/2011 (indexed by data set): the clamping window of the
+    data set in force watches the clamped axis - pushed 1.0 off the end stop, data set 1 (tolerance 0.1) gives
+    16#801B, data set 2 (tolerance 5.0) does not."""
+    from plcmotion.s7t import MC_MoveToEndPos, MC_Power
+    from _s7t_rig import controller
+    cm1, cm2 = f"{DS}.DataSet_1.ClampingMonitoring", f"{DS}.DataSet_2.ClampingMonitoring"
+    ctl = controller()
+    axis = ctl.add_positioning_axis("A", {
+        "TypeOfAxis.Homing.referencingNecessary": 0, "Wizard.Telegram": 105, f"{cm1}.recognitionMode": 106,
+        f"{cm1}.followingErrorDeviation": 1.0, f"{cm1}.positionTolerance": 0.1, f"{cm2}.positionTolerance": 5.0,
+        "Plant.EndStopMaxPosition": 50.0, f"{DS}.numberOfDataSets": 2, f"{DS}.changeMode": IMMEDIATELY})
+    power, end, change = MC_Power(), MC_MoveToEndPos(), MC_ChangeDataset()
+    ctl.program(lambda: (power(Axis=axis, Enable=True), end(Axis=axis, Execute=power.Status, Velocity=20.0, Torque=1.0),
+                         change(Axis=axis, Execute=True, Dataset=dataset)))
+    ctl.run(3.5)
+    assert end.InClamping and change.Done
+    axis.disturb_load(jump=-1.0)
+    ctl.run(0.05)
+    assert axis.db.ErrorID == error_id and end.InClamping == (error_id == 0)
+
+
+def test_s7t_change_dataset_waiting_change_survives_a_restart():
+    """S7-Technology V4.1 §6.8.3 table 3 (row MC_Reset Restart, column MC_ChangeDataset: no influence) with
+    §6.2.5 IN_POSITION: a change waiting on a disabled axis stays Busy through a restart and is Done with the
+    enable."""
+    r = _rig(IN_POSITION, enable=False)
+    change = MC_ChangeDataset()
+    r.call(change, 0.1, Execute=True, Dataset=2)
+    assert change.Busy
+    reset = MC_Reset()
+    r.until(reset, lambda f: f.Done, limit=2.0, Execute=True, Restart=True)
+    r.call(change, 0.1, Execute=True, Dataset=2)
+    assert change.Busy and not change.CommandAborted and _in_force(r) == 1
+    r.enable = True
+    r.call(change, 0.3, Execute=True, Dataset=2)
+    assert change.Done and _in_force(r) == 2

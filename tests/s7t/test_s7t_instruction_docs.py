@@ -18,7 +18,7 @@ ROOT = Path(__file__).resolve().parents[2]
 DOCS = ROOT / "docs"
 PNG = b"\x89PNG\r\n\x1a\n"
 CORE = ("MC_Power", "MC_Reset", "MC_Stop", "MC_Halt", "MC_MoveAbsolute", "MC_MoveRelative", "MC_MoveAdditive",
-        "MC_MoveSuperImposed", "MC_MoveVelocity")
+        "MC_MoveSuperImposed", "MC_MoveVelocity", "MC_Home", "MC_ChangeDataset")
 
 
 def _tool():

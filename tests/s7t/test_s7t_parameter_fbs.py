@@ -10,7 +10,7 @@ import math
 
 import pytest
 
-from plcmotion.s7t import (MC_MoveVelocity, MC_Power, MC_ReadSysParameter, MC_Reset, MC_WriteParameter)
+from plcmotion.s7t import (MC_ChangeDataset, MC_MoveVelocity, MC_Power, MC_ReadSysParameter, MC_Reset, MC_WriteParameter)
 
 from _s7t_rig import VIRTUAL, controller, enabled
 
@@ -384,14 +384,23 @@ def test_s7t_read_parameter_of_a_data_set_without_own_value():
     """S7-Technology V4.1 §6.7.4 with §3.1.10 data sets: an axis with two data sets reads Kv (number 2033) of
     data set 2 as data set 1's when data set 2 sets none, and 8080 for data set 3 it does not have; an
     MC_ReadSysParameter never ends in an internal error (16#8001) for a data set index (merge defect: data
-    set tags without a value made the read raise)."""
+    set tags without a value made the read raise).  ErrorID 8086: the data set of the Index must be the one in
+    force (MC_ChangeDataset)."""
     ctl = controller()
     axis = ctl.add_positioning_axis("A", {"TypeOfAxis.Homing.referencingNecessary": 0,     # a real axis
                                           "TypeOfAxis.NumberOfDataSets.numberOfDataSets": 2,
+                                          "TypeOfAxis.NumberOfDataSets.changeMode": 95,
                                           "TypeOfAxis.NumberOfDataSets.DataSet_1.ControllerStruct.PV_Controller.kv": 25.0})
-    for index, error_id, value in ((1, 0, 25.0), (2, 0, 25.0), (3, 0x8080, None)):
+    for index, error_id, value in ((1, 0, 25.0), (2, 0x8086, None), (3, 0x8080, None)):
         fb = MC_ReadSysParameter()
         fb(Axis=axis, Execute=True, ParameterNumber=2033, Index=index)
         assert fb.ErrorID == error_id and fb.Error == (error_id != 0)
         if value is not None:
             assert fb.Done and fb.Value == value
+    change = MC_ChangeDataset()
+    change(Axis=axis, Execute=True, Dataset=2)
+    assert change.Done
+    for index, error_id, value in ((1, 0x8086, None), (2, 0, 25.0)):
+        fb = MC_ReadSysParameter()
+        fb(Axis=axis, Execute=True, ParameterNumber=2033, Index=index)
+        assert fb.ErrorID == error_id and (value is None or fb.Value == value)

@@ -150,7 +150,7 @@ class AlarmReactions:
         if ax.pto or (not absolute and reason in ("restart", "power")):
             ax.homed = False
         if absolute:
-            kept = ax.ctl.retain.get(ax.name, {})
+            kept = ax.ctl.retain.get(ax.retain_key, {})
             ax.abs_offset = float(kept.get("AbsEncoderOffset", ax.abs_offset))
             ax.homed = bool(kept.get("HomingDone", ax.homed))
         b, i = ax.ctl.bank, ax.index

@@ -117,7 +117,7 @@ class PositioningAxis(TagViews):
         self._apply_bank_config()
         if self.absolute_encoder():
             # an absolute encoder gives its position at once; the adjustment (modes 6/7) is retentive
-            kept = ctl.retain.get(name, {})
+            kept = ctl.retain.get(self.retain_key, {})
             self.abs_offset = float(kept.get("AbsEncoderOffset", 0.0))
             self.homed = bool(kept.get("HomingDone", False))
             self.drive.set_actual(b, self.homing.absolute_raw() + self.abs_offset)
@@ -140,6 +140,21 @@ class PositioningAxis(TagViews):
     def load_cfg(self) -> dict[str, Any]:
         """Start values (load memory), used by a restart."""
         return self.parameters.start
+
+    def simulate_actual(self, on: bool) -> None:
+        """``on``: from the next servo cycle the actual values are the setpoints (following error 0) while the
+        drive, not enabled, stands still - a simulation mode that runs the program without moving the
+        machine; off: the drive's actual values again (the axis sees where the machine really is)."""
+        b, i = self.ctl.bank, self.index
+        if bool(b.simulated[i]) != on:
+            b.simulated[i] = on
+            self.ctl._n_sim += 1 if on else -1
+
+    @property
+    def retain_key(self) -> str:
+        """Under which name the controller keeps this axis's retentive data (absolute encoder adjustment):
+        the axis name; a family whose axes switch between several encoders names the encoder in force."""
+        return self.name
 
     @property
     def eff(self) -> dict[str, Any]:

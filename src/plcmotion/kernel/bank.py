@@ -35,6 +35,7 @@ BOOL_FIELDS = (
     "pm_on",           # positioning monitoring running
     "servo",           # PROFIdrive/analog axis (not PTO, not simulated)
     "standstill",      # standstill signal
+    "simulated",       # the actual values are the setpoints, the drive stands (a family's simulation mode)
 )
 
 

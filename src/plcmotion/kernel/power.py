@@ -117,6 +117,9 @@ class PowerControl:
             ax.raise_alarm(bad)
             return
         ax.position_controlled = start_mode == 1 or not ax._has_start_mode()
+        if bool(ax.ctl.bank.simulated[ax.index]):
+            ax._become_enabled(t)          # simulated actual values (axis.simulate_actual): the drive stays off
+            return
         if ax.servo and ax.position_controlled and not ax.sensor_valid:
             detail = ax.fault_injection.faults.get("encoder", ("", False))[0]
             ax.raise_alarm(F.alarm(F.ENCODER, detail, Reaction.REMOVE_ENABLE))

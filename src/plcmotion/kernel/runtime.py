@@ -207,6 +207,7 @@ class Controller:
         self._n_fe = 0                              # axes with following error monitoring on
         self._n_few = 0                             # axes that report a following error warning
         self._n_pm = 0                              # axes in positioning monitoring
+        self._n_sim = 0                             # axes whose actual values are their setpoints
         self._n_sup = 0                             # axes with a superimposed motion part
         self._bank_time = 0.0                       # time of the setpoints in the bank arrays
         self._dirty_axes: set[PositioningAxis] = set()
@@ -375,7 +376,7 @@ class Controller:
     def _retain_axis(self, axis: PositioningAxis) -> None:
         """Store the retentive data of an axis (written atomically to the state file)."""
         if axis.absolute_encoder():
-            self.retain[axis.name] = {"AbsEncoderOffset": axis.abs_offset, "HomingDone": axis.homed}
+            self.retain[axis.retain_key] = {"AbsEncoderOffset": axis.abs_offset, "HomingDone": axis.homed}
             if self.state_file:
                 retain.save(self.state_file, self.retain)
 

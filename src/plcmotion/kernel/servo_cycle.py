@@ -146,6 +146,10 @@ def control(ctl: Controller, t: float) -> None:
     axes without position control have their setpoint follow the actual position."""
     if ctl._closed_loop:
         b = ctl.bank
+        if getattr(ctl, "_n_sim", 0):
+            # a simulation mode of the family: the setpoints are the actual values, the drive stands still
+            b.act_p = np.where(b.simulated, b.sp_p, b.act_p)
+            b.act_v = np.where(b.simulated, b.sp_v, b.act_v)
         b.sp_p = np.where(b.follow_act, b.act_p, b.sp_p)
         err = b.sp_p - b.act_p
         b.fe = err

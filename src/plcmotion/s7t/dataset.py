@@ -5,7 +5,11 @@
 motion has reached its positioning window, on an axis enabled position-controlled, at once after the axis is
 enabled again, never while it is synchronized; IN_STANDSTILL - once the axis stands still; IMMEDIATELY - now.
 ``Done`` follows at that moment, at once when ``Dataset`` is already in force.  A virtual axis has one data
-set (16#804D).  ``SyncEncoder`` is taken (BOOL); all data sets use encoder 1 here, so it has nothing to do.
+set (16#804D).  A data set that measures with another encoder changes the actual value over to it at that
+moment (``technology.encoders``): ``SyncEncoder`` = TRUE sets the actual value of the old encoder on the new
+one, FALSE takes the new encoder's own (the axis may make a compensating motion); the new encoder must give
+valid values at the start (16#8045) and at the moment (else the change waits).  MC_Power Enable = FALSE
+aborts a waiting change (§6.8.3, CommandAborted).
 """
 from __future__ import annotations
 
@@ -15,6 +19,7 @@ from .base import ALL_AXES, ExecuteInstruction, InstructionError, as_bool, integ
 from .technology import datasets as D
 from .technology import override
 from .technology.axes import AxisT
+from .technology.encoders import dataset_encoder
 
 
 def due(axis: AxisT, mode: int) -> bool:
@@ -41,7 +46,7 @@ class MC_ChangeDataset(ExecuteInstruction):  # noqa: N801 - instruction name of 
     TECHNOLOGIES = ALL_AXES
 
     def _start(self, axis: AxisT) -> Job:
-        as_bool(self, "SyncEncoder", self.SyncEncoder)
+        sync = as_bool(self, "SyncEncoder", self.SyncEncoder)
         eff = axis.eff
         wanted = integer("Dataset", self.Dataset, range(1, eff[f"{D.DATA_SETS}.numberOfDataSets"] + 1))
         self._flag()
@@ -54,18 +59,26 @@ class MC_ChangeDataset(ExecuteInstruction):  # noqa: N801 - instruction name of 
         if reject is not None:                              # §6.8.3: only a running restart refuses it (8045)
             code = E.fb_error(reject.fault())
             raise InstructionError(E.NOT_ALLOWED_IN_STATE if code is None else code)
+        encoder = dataset_encoder(eff, wanted)
+        if wanted != D.active(eff) and encoder != axis.encoders.active and not axis.encoders.is_valid(encoder):
+            raise InstructionError(E.NOT_ALLOWED_IN_STATE)  # the new data set's encoder gives no valid values
         job = Job(JobKind.RESET, mode=wanted, owner=self)   # no motion: a command of the object itself
-        job.extra.update(dataset=wanted, change_mode=mode, axis=axis)
+        job.extra.update(dataset=wanted, change_mode=mode, axis=axis, sync=sync, encoder=encoder)
         self._try(job)
+        if job.busy:
+            axis.dataset_change = job                       # waiting: MC_Power Enable = FALSE aborts it
         return job
 
     def _try(self, job: Job) -> None:
         axis = job.extra["axis"]
+        encoder = job.extra["encoder"]
         if D.active(axis.eff) == job.extra["dataset"]:
             job.finish(JobState.DONE)                       # already in force: Done at once
-        elif due(axis, job.extra["change_mode"]):
-            D.switch(axis, job.extra["dataset"])
+        elif due(axis, job.extra["change_mode"]) and axis.encoders.is_valid(encoder):
+            D.switch(axis, job.extra["dataset"], job.extra["sync"])
             job.finish(JobState.DONE)
+        if not job.busy and axis.dataset_change is job:
+            axis.dataset_change = None
 
     def _update(self, execute: bool) -> None:
         job = self._job

@@ -34,6 +34,7 @@ from .base import InstructionError, integer, real
 from .move import _K_NEGATIVE, _Move, _default_direction
 from .technology import override as O
 from .technology.axes import AxisT
+from .technology.datasets import in_force
 from .technology.hydraulic_params import (CLAMP_BY_FOLLOWING_ERROR_DEVIATION, CLAMP_WHEN_TORQUE_LIMIT_REACHED,
                                           FE_DEVIATION, MAX_TORQUE, POSITION_TOLERANCE, RECOGNITION_MODE,
                                           TORQUE_TELEGRAMS)
@@ -54,7 +55,7 @@ class _Watch:
         self.clamp: float | None = None            # actual position where the end stop was detected
 
     def tolerance(self) -> float:
-        return float(self.axis.eff[POSITION_TOLERANCE])
+        return float(in_force(self.axis.eff, POSITION_TOLERANCE))     # of the data set in force
 
     def step(self, t: float) -> bool:
         """One servo cycle; FALSE when the watch is over."""
@@ -85,7 +86,7 @@ class _Watch:
         mode = self.axis.eff[RECOGNITION_MODE]
         heading = self.job.extra["heading"]
         if mode == CLAMP_BY_FOLLOWING_ERROR_DEVIATION:
-            return fe * heading >= self.axis.eff[FE_DEVIATION]
+            return fe * heading >= in_force(self.axis.eff, FE_DEVIATION)
         return mode == CLAMP_WHEN_TORQUE_LIMIT_REACHED and self.axis.drive.torque_limit_active
 
     def _clamp(self, t: float) -> None:

@@ -8,8 +8,9 @@ setpoint in the basic / superimposed coordinate system (each: the position becom
 
 Which modes an axis takes (§6.2.2 note): a virtual axis 3, 4, 6, 7 (else 16#804D); an incremental encoder
 0-4, 6, 7; an absolute encoder 3-7 (a mode of the other encoder type: 16#8045, plcmotion's choice, the manual
-names no code).  Modes 0, 1, 2 need an axis enabled position-controlled (16#8040), 0 and 1 no MC_Stop
-(16#8045); 2, 3, 5 not in speed-controlled mode (16#8045); 3-7 run on a disabled axis too.  The active homing
+names no code) - the encoder of the data set in force (``technology.encoders``).  Modes 0, 1, 2 need an axis enabled position-controlled (16#8040), 0 and 1 no MC_Stop
+(16#8045); 2, 3, 5 not in speed-controlled mode (16#8045); 3, 4, 6, 7 run on a disabled axis too, 5 only on
+an axis enabled position-controlled at standstill (16#8045, docs/s7t/decisions.md D78).  The active homing
 sequences, distance monitoring (16#801D in the technology DB) and the corrections are the kernel's
 ``reference_approach.ApproachHoming``.
 """
@@ -67,6 +68,11 @@ class MC_Home(ExecuteInstruction):  # noqa: N801 - instruction name of the manua
         elif mode == ABSOLUTE_ENCODER:
             job.mode = 7                         # the kernel's absolute encoder adjustment to Position
             axis.home_direct(job)
+            if job.state == JobState.DONE:
+                # the stored offset is to the encoder's absolute value, whatever corrected the actual value
+                # before (a synchronized encoder changeover, Modes 3/4): §3.1.9
+                axis.abs_offset = float(axis.ctl.bank.act_p[axis.index]) - axis.homing.absolute_raw()
+                axis.ctl._retain_axis(axis)
         else:
             # §6.2.2 notice: an axis in following mode corrects Mode 7 in the basic coordinate system
             layer = "base" if mode == CORRECT_SUPERIMPOSED and axis.following_mode else _CORRECTIONS[mode]
@@ -115,8 +121,12 @@ class MC_Home(ExecuteInstruction):  # noqa: N801 - instruction name of the manua
                 raise InstructionError(E.NOT_ALLOWED_IN_STATE)  # no active homing configured
         if mode in (PASSIVE, DIRECT, ABSOLUTE_ENCODER) and speed_mode and axis.state == "enabled":
             raise InstructionError(E.NOT_ALLOWED_IN_STATE)      # not in speed-controlled mode
-        if mode == ABSOLUTE_ENCODER and axis.sw_limits_effective():
-            raise InstructionError(E.NOT_ALLOWED_IN_STATE)      # §3.1.9: not while SW limit switches act
+        if mode == ABSOLUTE_ENCODER:
+            # §6.2.2 Mode 5: at standstill and position-controlled (8045 "absolute encoder adjustment while
+            # not position-controlled", D78); §3.1.9: not while the software limit switches act
+            controlled = enabled and not speed_mode
+            if not controlled or not axis.ctl.bank.standstill[axis.index] or axis.sw_limits_effective():
+                raise InstructionError(E.NOT_ALLOWED_IN_STATE)
 
 
 __all__ = ["MC_Home", "MODES_VIRTUAL", "MODES_INCREMENTAL", "MODES_ABSOLUTE"]

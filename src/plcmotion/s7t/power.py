@@ -18,13 +18,12 @@ DEFAULT_MODE, SPEED_CONTROLLED, FOLLOWING_ENABLED, FOLLOWING_DISABLED, SIMULATIO
 
 
 def modes(axis: AxisT) -> tuple[int, ...]:
-    """The Mode values an axis takes: a virtual axis only 0 (§6.2.1 table); simulation mode (4) is not
-    available in plcmotion (the drive would have to stand still under a moving axis model)."""
+    """The Mode values an axis takes: a virtual axis only 0, a real one also simulation (4) (§6.2.1 table)."""
     if axis.virtual:
         return (DEFAULT_MODE,)
     if not axis.positioning:
-        return (DEFAULT_MODE, SPEED_CONTROLLED, FOLLOWING_ENABLED, FOLLOWING_DISABLED)
-    return (DEFAULT_MODE, SPEED_CONTROLLED, FOLLOWING_ENABLED, FOLLOWING_DISABLED, POSITION_CONTROLLED)
+        return (DEFAULT_MODE, SPEED_CONTROLLED, FOLLOWING_ENABLED, FOLLOWING_DISABLED, SIMULATION)
+    return (DEFAULT_MODE, SPEED_CONTROLLED, FOLLOWING_ENABLED, FOLLOWING_DISABLED, SIMULATION, POSITION_CONTROLLED)
 
 
 def stop_modes(axis: AxisT) -> tuple[int, ...]:
@@ -39,6 +38,10 @@ def stop_modes(axis: AxisT) -> tuple[int, ...]:
 
 class MC_Power(Instruction):  # noqa: N801 - instruction name of the manual
     """FB 401: enable or disable an axis (level-triggered ``Enable``).
+
+    ``Mode`` 4 (simulation, real axes, §3.1.2): the axis is enabled without enabling its drive; its actual
+    values are its setpoints (following error 0) and the machine stands still (``Statusword.Simulation``).
+    Disabling ends it; from then on the actual values are the encoder's again (docs/s7t/decisions.md D81).
 
     ``Mode`` is taken at the rising edge of Enable, ``StopMode`` and ``QOutputValue`` at both edges (an
     invalid value at the falling edge shows its ErrorID for one call and the value of the rising edge is
@@ -103,6 +106,7 @@ class MC_Power(Instruction):  # noqa: N801 - instruction name of the manual
         object.__setattr__(self, "_mode", mode)
         if axis.power_owner is None or axis.power_owner is self:
             axis.following_mode = mode == FOLLOWING_ENABLED
+            axis.simulation_requested = mode == SIMULATION  # read when the axis is enabled (also after MC_Reset)
         return 0
 
     def _take_stop(self, axis: AxisT, fall: bool = False) -> int:
@@ -142,7 +146,7 @@ class MC_Power(Instruction):  # noqa: N801 - instruction name of the manual
                 return E.NOT_ALLOWED_IN_STATE if code is None else code
         mode = self._mode
         start = 1 if mode == POSITION_CONTROLLED or (
-            mode == DEFAULT_MODE and axis.positioning and axis.position_controlled) else 0
+            mode in (DEFAULT_MODE, SIMULATION) and axis.positioning and axis.position_controlled) else 0
         stop = self._stop
         if not enable and getattr(axis, "torque_limiting_command", False) and not axis.virtual:
             stop = RAMP_STOP       # torque reduction active: StopMode ignored, the drive's own ramp (§6.2.1)

@@ -18,13 +18,15 @@ from ...kernel.faults import Fault, Reaction
 from ...kernel.follower import Follower
 from ...kernel.jobs import Job, JobKind, JobState
 from ...kernel.layered_axis import LayeredAxis
-from ...kernel.policy import Activity
+from ...kernel.policy import ABORT, Activity
 from . import override
 from ...kernel.reference_approach import ApproachHoming
 from .builder import POSITIONING, SPEED, SYNCHRONIZATION, TELEGRAMS_NO_ENCODER, YES
 from . import tags as T
 from .schema import AXIS
 from .tdb import AxisDB
+from . import datasets as D
+from .encoders import Encoders, dataset_encoder, retain_key
 from .monitoring import FOLLOWING_WARNING_ENTRY, note_sw_limit_at_start, tdb_errors
 from .to_errors import W_DYNAMICS_LIMITED, W_SW_LIMIT, ErrorRecord, tdb_error
 
@@ -71,13 +73,17 @@ class AxisT(LayeredAxis):
     def __init__(self, ctl: "Controller", name: str, cfg: Mapping[str, Any], *, db_number: int | None = None):
         self.errors = ErrorRecord()                  # ErrorID, ErrorBuffer, ErrorStatus of the technology DB
         self.following_mode = False                  # MC_Power Mode 2/3: position control off (§3.1.2)
+        self.simulation_requested = False            # MC_Power Mode 4 taken at the rising edge of Enable
         self.restart_requested = False               # Statusword.RequestRestart
         self.last_direction = 1                      # direction of the last motion (Direction = 4: "current")
         self._warned: Job | None = None
         self.restart_until: float | None = None      # a restart (MC_Reset Restart = TRUE) runs until then
         #: MC_Power QOutputValue [%]: the valve output after disabling with StopMode 3 (hydraulic axes)
         self.q_output_value = 0.0
+        #: a started MC_ChangeDataset waiting for its moment (§6.2.5): ended by MC_Power Enable = FALSE (§6.8.3)
+        self.dataset_change: Job | None = None
         super().__init__(ctl, name, cfg, db_number=db_number)
+        self.encoders = Encoders(self, self._encoder_in_force())
         self.db = AxisDB(self)
 
     # --- what kind of axis ------------------------------------------------------------------------------
@@ -108,6 +114,14 @@ class AxisT(LayeredAxis):
         (not on a modulo axis, which has no end)."""
         c = self.config
         return c.software_limits.enabled and not c.modulo.enabled and (self.homed or not self.homing_required)
+
+    def _encoder_in_force(self) -> int:
+        return dataset_encoder(self.eff, D.active(self.eff))
+
+    @property
+    def retain_key(self) -> str:
+        """The retentive data (absolute encoder adjustment) belong to the encoder in force (technology.encoders)."""
+        return retain_key(self.name, self._encoder_in_force())
 
     def queue_waiting(self) -> bool:
         return bool(self.queue.pending)
@@ -184,6 +198,14 @@ class AxisT(LayeredAxis):
             yield Activity(override.RESTART, None, _restart_goes_on)
         if self.releasing_clamp is not None:
             yield self.releasing_clamp          # MC_MoveToEndPos released, the setpoint still in its window
+        change = self.dataset_change
+        if change is not None and change.busy:
+            yield Activity(override.CHANGE_DATASET, change, self._end_dataset_change)
+
+    def _end_dataset_change(self, t: float) -> None:
+        change, self.dataset_change = self.dataset_change, None
+        if change is not None and change.busy:
+            self._finish_job(change, JobState.ABORTED, t)
 
     def begin_restart(self) -> Fault | None:
         """Restart the technology object with its start values; it is busy for ``RESTART_TIME``."""
@@ -192,9 +214,19 @@ class AxisT(LayeredAxis):
             self.restart_until = self.now + RESTART_TIME
         return fault
 
+    @property
+    def simulation(self) -> bool:
+        """MC_Power Mode 4 is in force (Statusword.Simulation, §3.1.2)."""
+        return bool(self.ctl.bank.simulated[self.index])
+
     def _enable(self, start_mode: int) -> None:
-        if not self.restarting:                  # enabled once the restart is over (MC_Power calls again)
-            super()._enable(start_mode)
+        if self.restarting:                      # enabled once the restart is over (MC_Power calls again)
+            return
+        # simulation mode (§3.1.2): enabled without the drive, the actual values are the setpoints
+        self.simulate_actual(self.simulation_requested and self.servo)
+        super()._enable(start_mode)
+        if self.state != ENABLED:
+            self.simulate_actual(False)          # not enabled (a configuration error): no simulation
 
     # --- start conditions -------------------------------------------------------------------------------
     def _stop_only_locks(self) -> bool:
@@ -256,6 +288,8 @@ class AxisT(LayeredAxis):
     # --- MC_Power: enabling modes and emergency programs (§6.2.1) ----------------------------------------
     def _disable(self, stop_mode: int) -> None:
         t = self.now
+        if override.POLICY.cell(override.POWER_OFF, override.CHANGE_DATASET) is ABORT:
+            self._end_dataset_change(t)          # §6.8.3: Enable = FALSE aborts a waiting MC_ChangeDataset
         self._abort_all(t)
         if self.state == ENABLING or stop_mode in (OFF2_STOP, RAMP_STOP, QUICK_STOP) and not self.virtual:
             # OFF2: pulses off, the axis coasts; 5/6: the drive brakes with its own ramp (enable removed)
@@ -278,11 +312,25 @@ class AxisT(LayeredAxis):
     def _remove_enable(self, t: float, by_power: bool = False) -> None:
         super()._remove_enable(t, by_power)
         self.following_mode = False
+        self.simulate_actual(False)              # the encoder's actual values from the next servo cycle
 
     def reinitialize(self, reason: str) -> None:
         if reason != "restart":
             self.restart_until = None
-        super().reinitialize(reason)
+        encoders = self.encoders
+        encoders.leave()                         # a waiting MC_ChangeDataset goes on (§6.8.3: restart "-")
+        super().reinitialize(reason)             # the initial data set is in force again (its encoder)
+        new = self._encoder_in_force()
+        if new != encoders.active:
+            encoders.active = new                # the kernel took its homed state and adjustment
+            if reason != "power":                # (at POWER ON the kernel has read it anew)
+                b = self.ctl.bank
+                self.drive.set_actual(b, self.homing.absolute_raw() + encoders.offset[new])
+                b.sp_p[self.index] = b.act_p[self.index]
+        if reason == "power":
+            encoders.power_on()
+        elif reason == "restart":
+            encoders.restart()
         self.stop_job = None                  # a restart ends the MC_Stop lock with the instances
         self.errors.clear()
         self.following_mode = False

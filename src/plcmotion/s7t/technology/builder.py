@@ -18,7 +18,8 @@ from ...kernel.axis_config import (AxisConfig, DriveSignals, DynamicDefaults, Dy
                                    PositioningMonitoring, PulseOutput, SoftwareLimits, StandstillMonitoring, Units)
 from ...kernel.plant_schema import plant_spec
 from .hydraulic_params import hydraulic, hydraulic_drive_spec
-from .datasets import refine as refine_dataset
+from .datasets import active as active_dataset, refine as refine_dataset
+from .encoders import dataset_encoder, kind as encoder_kind
 from .homing_params import plant_wiring, refine
 
 #: §9.4.12 ValueDint of EnumYesNo / EnumActiveInactive / EnumDirectionType
@@ -29,6 +30,9 @@ SPEED, POSITIONING, SYNCHRONIZATION = 0, 1, 2
 TELEGRAMS_ONE_ENCODER = (3, 5, 102, 105)
 TELEGRAMS_TWO_ENCODERS = (4, 6, 103, 106)
 TELEGRAMS_NO_ENCODER = (1, 2, 101)
+
+#: revolutions a simulated absolute encoder tells apart (a 12-bit multiturn encoder; docs/s7t/decisions.md D78)
+ABSOLUTE_REVOLUTIONS = 4096
 
 DS = "TypeOfAxis.NumberOfDataSets.DataSet_1"
 PV = f"{DS}.ControllerStruct.PV_Controller"
@@ -70,7 +74,10 @@ def drive_spec(p: Mapping[str, Any]) -> DriveSpec:
     per_revolution = distance_per_motor_revolution(p)
     ideal = virtual(p)
     telegram = p["Wizard.Telegram"]
-    encoder = EncoderSpec(kind=EncoderKind.INCREMENTAL, rotary=True, distance_per_revolution=per_revolution,
+    # the encoder of the data set in force (technology.encoders); a virtual axis has none
+    kind = EncoderKind.INCREMENTAL if ideal else encoder_kind(p, dataset_encoder(p, active_dataset(p)))
+    encoder = EncoderSpec(kind=kind, rotary=True, distance_per_revolution=per_revolution,
+                          determinable_revolutions=0 if kind is EncoderKind.INCREMENTAL else ABSOLUTE_REVOLUTIONS,
                           interface=EncoderInterface.DRIVE_TELEGRAM)
     if hydraulic(p):
         return hydraulic_drive_spec(p, encoder, per_revolution, plant_wiring(p))   # a valve and a cylinder (§3.1.4, §4.6)

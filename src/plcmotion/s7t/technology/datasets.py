@@ -2,12 +2,15 @@
 4020).
 
 An axis has ``TypeOfAxis.NumberOfDataSets.numberOfDataSets`` data sets (a virtual axis one); after a restart
-``initDataSet`` is in force.  Each data set ``DataSet_x`` holds the controller parameters (Kv, precontrol) and
-the dynamic following error monitoring (``DynamicFollowing``) of §9.4; structure-changing settings (the
-following error monitoring on/off, the gear, the encoder) are those of data set 1 for all of them, since
-the manual requires them to be equal (§4.5.1) - a gear or encoder changeover is not modelled.  The data set
-in force is the system variable ``datasetmonitoring.actualdataset`` (number 4020, 0: ``initDataSet``),
-which MC_ChangeDataset sets; :func:`refine` builds the configuration from it.
+``initDataSet`` is in force.  Each data set ``DataSet_x`` holds what §9.4 indexes by data set and the model
+uses: the controller parameters (Kv, precontrol), the dynamic following error monitoring
+(``DynamicFollowing``), the clamping monitoring of the fixed end stop (``ClampingMonitoring``, 2010/2011) and
+the encoder it measures with (``EncoderNumber``, ``technology.encoders``); a value a data set leaves out is
+data set 1's.  The activating switches (following error monitoring on/off, precontrol on/off, DSC, the
+clamping detection mode) must be equal in all data sets (§4.5.1 note) and are data set 1's; the load gear is
+data set 1's too (docs/s7t/decisions.md D77).  The data set in force is the system variable
+``datasetmonitoring.actualdataset`` (number 4020, 0: ``initDataSet``), which MC_ChangeDataset sets;
+:func:`refine` builds the configuration from it and :func:`in_force` gives any data set value.
 """
 from __future__ import annotations
 
@@ -16,6 +19,7 @@ from typing import Any, Mapping
 
 from ...kernel.axis_config import AxisConfig
 from ...kernel.schema import E12, INT, REAL, WP, R, Issue, Param
+from .encoders import MAX_ENCODERS, dataset_encoder, encoder_number, encoder_rule_issues
 
 DATA_SETS = "TypeOfAxis.NumberOfDataSets"
 MAX_DATA_SETS = 16
@@ -30,6 +34,10 @@ def _pv(x: int) -> str:
 
 def _fe(x: int) -> str:
     return f"{DATA_SETS}.DataSet_{x}.DynamicFollowing"
+
+
+def _cm(x: int) -> str:
+    return f"{DATA_SETS}.DataSet_{x}.ClampingMonitoring"
 
 
 # fmt: off
@@ -49,6 +57,9 @@ for _x in range(2, MAX_DATA_SETS + 1):
         Param(f"{_fe(_x)}.minPositionTolerance", REAL, None, WP, (10,), 0.0, E12, optional=True),
         Param(f"{_fe(_x)}.minVelocity", REAL, None, WP, (10,), 0.0, E12, optional=True),
         Param(f"{_fe(_x)}.warningLimit", REAL, None, WP, (10,), 0.0, 100.0, optional=True),
+        Param(f"{_cm(_x)}.followingErrorDeviation", REAL, None, WP, (10,), 0.0, E12, optional=True),
+        Param(f"{_cm(_x)}.positionTolerance", REAL, None, WP, (10,), 0.0, E12, optional=True),
+        Param(encoder_number(_x), INT, None, R, (), 1, MAX_ENCODERS, optional=True, doc="none: data set 1's"),
     ]
 # fmt: on
 
@@ -67,12 +78,18 @@ def dataset_rule_issues(cfg: Mapping[str, Any]) -> list[Issue]:
     if cfg[f"{DATA_SETS}.initDataSet"] > n:
         issues.append(Issue(f"{DATA_SETS}.initDataSet", "rule:above_count", cfg[f"{DATA_SETS}.initDataSet"],
                             f"at most numberOfDataSets = {n}"))
-    return issues
+    return issues + encoder_rule_issues(cfg, n)
 
 
 def _value(p: Mapping[str, Any], x: int, path: str, default: Any) -> Any:
     v = p.get(path)
     return default if x == 1 or v is None else v
+
+
+def in_force(p: Mapping[str, Any], path: str) -> Any:
+    """The value of the data set in force of a data set 1 tag ``path`` (``...DataSet_1...``)."""
+    x = active(p)
+    return p[path] if x == 1 else _value(p, x, path.replace(".DataSet_1.", f".DataSet_{x}.", 1), p[path])
 
 
 def refine(config: AxisConfig, p: Mapping[str, Any]) -> AxisConfig:
@@ -93,14 +110,22 @@ def refine(config: AxisConfig, p: Mapping[str, Any]) -> AxisConfig:
             warning_level=_value(p, x, f"{_fe(x)}.warningLimit", fe.warning_level)))
 
 
-def switch(axis: Any, x: int) -> None:
+def switch(axis: Any, x: int, sync_encoder: bool = False) -> None:
     """Put data set ``x`` in force on ``axis`` now: the configuration is rebuilt and the position controller
-    and monitoring take its values in this servo cycle."""
+    and monitoring take its values in this servo cycle; a data set with another encoder changes the actual
+    value over to it (``sync_encoder``: the new encoder takes the actual value of the old one, §6.2.5)."""
     store = axis.parameters
+    encoders = axis.encoders
+    new_encoder = dataset_encoder(store.effective, x)
+    changeover = new_encoder != encoders.active
+    if changeover:
+        encoders.leave()
     store.values[ACTUAL] = x
     store.make_effective(dict(store.effective, **{ACTUAL: x}))
+    if changeover:
+        encoders.enter(new_encoder, sync_encoder)
     axis._apply_bank_config()
 
 
-__all__ = ["DATASET_PARAMS", "dataset_rule_issues", "refine", "switch", "active", "NEVER", "IN_POSITION",
+__all__ = ["DATASET_PARAMS", "dataset_rule_issues", "refine", "switch", "active", "in_force", "NEVER", "IN_POSITION",
            "IN_STANDSTILL", "IMMEDIATELY", "ACTUAL", "DATA_SETS"]

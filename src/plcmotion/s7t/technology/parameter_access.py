@@ -22,6 +22,7 @@ with it); a written "Immediately" parameter reads back at once.
 from __future__ import annotations
 
 import math
+import re
 import weakref
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
@@ -30,6 +31,8 @@ from ...kernel import axis_status as S
 from ...kernel.jobs import JobKind
 from ...kernel.tag_views import TagAccessError
 from . import activation
+from . import datasets as D
+from .encoders import ABSOLUTE, CYCLIC_ABSOLUTE, encoder_type
 from .parameters import (ILLEGAL_PARAMETER, INVALID_NUMBER, READ_ONLY, RESTART_REQUIRED, Parameter, parameter)
 from .to_kinds import AxisType, TOKind
 
@@ -114,24 +117,26 @@ _SYSTEM: dict[int, Any] = {
     1: lambda ax: float(S.position(ax)),
     10: lambda ax: 0.0 if ax.without_encoder else float(ax.ctl.bank.act_v[ax.index]),
     11: lambda ax: float(ax.ctl.bank.sp_v[ax.index]),
-    2000: lambda ax: 1,                       # one data set per axis (the configuration has DataSet_1)
-    3000: lambda ax: 0 if ax.virtual else 1,  # the encoder in the drive's telegram; a virtual axis has none
-    4020: lambda ax: 1,
+    2000: lambda ax: ax.eff["TypeOfAxis.NumberOfDataSets.numberOfDataSets"],
+    3000: lambda ax: 0 if ax.virtual else ax.encoders.count,     # a virtual axis has no encoder
+    4020: lambda ax: D.active(ax.eff),
     4030: lambda ax: _superimposed(ax)[0],
     4031: lambda ax: _superimposed(ax)[1],
     4040: lambda ax: float(S.position(ax)) - _superimposed(ax)[0],
     4041: lambda ax: float(ax.ctl.bank.sp_v[ax.index]) - _superimposed(ax)[1],
-    4050: lambda ax: _SENSOR_VALID if ax.virtual or ax.sensor_valid else _SENSOR_NOT_VALID,
+    4050: lambda ax, x=1: _SENSOR_VALID if ax.encoders.is_valid(x) else _SENSOR_NOT_VALID,
     4162: _target_distance,
     4173: lambda ax: float(ax.homing.reference_mark),     # the position the axis was homed to last
     4400: lambda ax: _sw_state(ax, -1),
     4401: lambda ax: _sw_state(ax, +1),
     4410: lambda ax: _hw_state(ax, "min"),
     4411: lambda ax: _hw_state(ax, "max"),
-    4412: lambda ax: 1,
+    4412: lambda ax: ax.encoders.active,
 }
-#: system variables of an encoder (Index = encoder 1..8): only encoder 1 exists on a real axis
-_PER_ENCODER = frozenset({4020, 4030, 4031, 4040, 4041, 4050})
+#: system variables indexed 1..8 of which the model has only index 1
+_PER_ENCODER = frozenset({4020, 4030, 4031, 4040, 4041})
+#: sensordata_x.state: Index = one of the axis's encoders (technology.encoders)
+_SENSOR_STATE = 4050
 
 
 def _tag(p: Parameter, index: int) -> str:
@@ -173,7 +178,7 @@ def resolve(axis: "AxisT", number: int, index: int) -> Access | int:
         return INVALID_NUMBER
     i = index if p.index is not None else 1
     if number in _SYSTEM:
-        if number in _PER_ENCODER and i != 1:
+        if number in _PER_ENCODER and i != 1 or number == _SENSOR_STATE and i > axis.encoders.count:
             return INVALID_NUMBER
         return Access(p, None, output_of(p))
     if number == 4001:
@@ -186,18 +191,39 @@ def resolve(axis: "AxisT", number: int, index: int) -> Access | int:
     return Access(p, tag, output_of(p))
 
 
+_DATA_SET = re.compile(r"\.DataSet_(\d+)\.")
+_ENCODER = re.compile(r"\.Encoder_(\d+)\.")
+_INCREMENTAL_ONLY = (".IncHomingEncoder.", ".IncBackLash.")
+
+
+def unavailable(axis: "AxisT", tag: str | None) -> bool:
+    """8086 of MC_ReadSysParameter / MC_WriteParameter (§6.7.4, §6.7.5): a parameter of a data set that is
+    not in force, an incremental-encoder parameter of an absolute encoder, any parameter of an encoder of the
+    type "absolute encoder cyclic absolute"."""
+    if tag is None:
+        return False
+    m = _DATA_SET.search(tag)
+    if m and int(m.group(1)) != D.active(axis.eff):
+        return True
+    m = _ENCODER.search(tag)
+    if m and not axis.virtual:
+        kind = axis.eff.get(encoder_type(int(m.group(1))))
+        return kind == CYCLIC_ABSOLUTE or kind == ABSOLUTE and any(s in tag for s in _INCREMENTAL_ONLY)
+    return False
+
+
 def read(axis: "AxisT", number: int, index: int) -> tuple[int, str, Any]:
     """(ErrorID or 0, output, value) of MC_ReadSysParameter."""
     acc = resolve(axis, number, index)
     if isinstance(acc, int):
         return acc, OUT_REAL, 0.0
-    if axis.restarting:
+    if axis.restarting or unavailable(axis, acc.tag):
         return NOT_AVAILABLE, acc.output, 0
     p = acc.parameter
     if acc.tag is None:
         if p.number == 4001:
             return 0, OUT_DINT, _COLLECT if _writes(axis).collecting else _ACTIVATE
-        value = _SYSTEM[p.number](axis)
+        value = _SYSTEM[p.number](axis, index) if p.number == _SENSOR_STATE else _SYSTEM[p.number](axis)
     else:
         store = axis.parameters
         value = store.effective.get(acc.tag) if p.needs_restart else store.values.get(acc.tag)
@@ -226,7 +252,7 @@ def write(axis: "AxisT", number: int, index: int, value: Any) -> int:
     if isinstance(acc, int):
         return acc
     p = acc.parameter
-    if axis.restarting or activation.deactivated(axis):
+    if axis.restarting or activation.deactivated(axis) or unavailable(axis, acc.tag):
         return NOT_AVAILABLE                  # restarting, or deactivated: not processed (§6.7.2)
     code = p.check(value, index if p.index is not None else None, axis.ctl.servo_cycle)
     if code is not None:

@@ -19,6 +19,7 @@ from ...kernel.plant_schema import PLANT_PARAMS
 from ...kernel.schema import E12, INT, REAL, WP, R, AxisSchema, Issue, Param
 from . import hydraulic_params as H
 from .datasets import DATASET_PARAMS, dataset_rule_issues
+from .encoders import ENCODER_PARAMS
 from .homing_params import HOMING_PARAMS, homing_rule_issues
 from .schema_io import IO_PARAMS
 from .builder import (DYN, FE, GEAR, PV, TELEGRAMS_NO_ENCODER, TELEGRAMS_ONE_ENCODER, TELEGRAMS_TWO_ENCODERS,
@@ -106,7 +107,7 @@ _PARAMS: list[Param] = [
 # fmt: on
 
 #: tags that are not the expert list's: the wizard's, the simulated drive's, the DB number
-FAMILY_TAGS = frozenset(p.path for p in _PARAMS + H.PARAMS + HOMING_PARAMS
+FAMILY_TAGS = frozenset(p.path for p in _PARAMS + H.PARAMS + HOMING_PARAMS + ENCODER_PARAMS
                         if p.path.startswith(("Wizard.", "Drive.")) or p.path == "DBNumber")
 
 #: the manual's spellings with stray blanks, cleaned (s7-technology-parameters.csv numbers 2020, 2021)
@@ -147,7 +148,7 @@ def rule_issues(cfg: Mapping[str, Any]) -> list[Issue]:
 
 
 AXIS = AxisSchema("S7-Technology axis",
-                  _PARAMS + H.PARAMS + HOMING_PARAMS + DATASET_PARAMS + IO_PARAMS + PLANT_PARAMS,
+                  _PARAMS + H.PARAMS + HOMING_PARAMS + DATASET_PARAMS + ENCODER_PARAMS + IO_PARAMS + PLANT_PARAMS,
                   rules=rule_issues, canonical=canonical, build=axis_config, real_type="Real")
 
 __all__ = ["AXIS", "FAMILY_TAGS", "DIRECTIONS", "canonical", "rule_issues"]

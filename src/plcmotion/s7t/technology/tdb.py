@@ -223,6 +223,8 @@ def statusword(ax: "AxisT", v: float, a: float, still: bool) -> int:
         w |= 1 << 15                                            # Decelerating
     if ax.restart_requested:
         w |= 1 << 16
+    if ax.simulation:
+        w |= 1 << 17                                            # Simulation (MC_Power Mode 4)
     if virtual or (S.drive_communication_ok(ax) and not any(f.kind == F.DRIVE_ALARM for f in alarms)):
         w |= 1 << 18                                            # CyclicInterface
     if virtual or ax.sensor_valid:

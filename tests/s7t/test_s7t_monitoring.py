@@ -12,7 +12,7 @@ from __future__ import annotations
 import pytest
 
 from plcmotion.kernel.faults import Reaction
-from plcmotion.s7t import MC_MoveAbsolute, MC_MoveRelative, MC_MoveVelocity
+from plcmotion.s7t import MC_MoveAbsolute, MC_MoveRelative, MC_MoveVelocity, MC_WriteParameter
 from plcmotion.s7t.technology.monitoring import REACTIONS
 
 from _s7t_homing_rig import ENC, Rig
@@ -86,6 +86,28 @@ def test_s7t_monitoring_software_limit_switch():
     assert r.axis.db.ActualPosition == pytest.approx(50.0, abs=0.05)
     assert r.axis.state == "enabled" and REACTIONS[0x8014] is None
     _assert_acknowledged(r)
+
+
+def test_s7t_monitoring_software_limit_switch_overshot():
+    """S7-Technology V4.1 §7.12.1 8015 "software limit switch overshot during motion execution", §9.4 parameter
+    3 (swlimit.plusposition, effective immediately), §6.7.5 MC_WriteParameter: the plus switch is moved to
+    0.2 ahead of an axis moving at 40 - less than its braking distance even with the emergency deceleration
+    (40² / (2 · 1000) = 0.8).  The axis passes the switch: 8015, ErrorStatus.SoftwareLimitPos, the motion
+    ends CommandAborted, enable removed; it stands less than 0.8 beyond the switch."""
+    r = _homed({"swlimit": {"state": 1, "plusposition": 1000.0},
+                "TypeOfAxis.EmergencyRampGenerator.maxDeceleration": 1000.0})
+    mv = MC_MoveVelocity()
+    r.call(mv, 1.0, Execute=True, Velocity=40.0)
+    switch = r.axis.db.CommandPosition + 0.2
+    w = MC_WriteParameter()
+    w(Axis=r.axis, Execute=True, ParameterNumber=3, Value=switch)
+    assert w.Done
+    r.call(mv, 0.5, Execute=True, Velocity=40.0)
+    assert mv.CommandAborted
+    assert _tdb(r) == (0x8015, [0x8015, 0, 0], 1 << 12)
+    _assert_reaction(r, 0x8015)
+    r.ctl.run(0.5)
+    assert switch < r.axis.db.ActualPosition < switch + 0.8
 
 
 def test_s7t_monitoring_following_error():

@@ -53,24 +53,69 @@ def _assert_acknowledged(r: Rig) -> None:
     assert not r.axis.db.Statusword.Error and r.power.Status
 
 
-def test_s7t_monitoring_hardware_limit_switch():
-    """S7-Technology V4.1 §4.5.7.2: an axis running into its (NC) plus limit switch at 50 is stopped with
-    8013 and 804B (ErrorBuffer in that order, ErrorID the latest), ErrorStatus.LimitSwitchActive,
-    Statusword.HWLimitSwitchPlus; the enable is removed; the motion command ends CommandAborted.  MC_Reset
-    acknowledges; the axis is then retracted with the drive."""
-    r = Rig({"Wizard.HWLimitSwitchPlusInput": "I1.0", "TypeOfAxis.HWEndPos.enable": 1,
-             "Plant.HWLimitMaxPosition": 50.0}, input_filter=0.0)
+HW_PLUS = {"Wizard.HWLimitSwitchPlusInput": "I1.0", "TypeOfAxis.HWEndPos.enable": 1, "Plant.HWLimitMaxPosition": 50.0}
+LIMIT_SWITCH_ACTIVE = 1 << 14
+
+
+def _into_plus_switch() -> Rig:
+    r = Rig(HW_PLUS, input_filter=0.0)
     mv = MC_MoveVelocity()
     r.call(mv, 4.0, Execute=True, Velocity=20.0)
     assert mv.CommandAborted
-    assert _tdb(r) == (0x804B, [0x8013, 0x804B, 0], 1 << 14)
+    return r
+
+
+def test_s7t_monitoring_hardware_limit_switch():
+    """S7-Technology V4.1 §4.5.7.2: an axis running into its (NC) plus limit switch at 50 is stopped with
+    8013 and 804B (ErrorBuffer in that order, ErrorID the latest), ErrorStatus.LimitSwitchActive,
+    Statusword.HWLimitSwitchPlus; the enable is removed; the motion command ends CommandAborted.  "Retraction
+    with drive": MC_Reset acknowledges the error (the axis can be enabled again) but the error message and
+    LimitSwitchActive stay; the axis is driven back out of the switch; a second MC_Reset then clears them."""
+    r = _into_plus_switch()
+    assert _tdb(r) == (0x804B, [0x8013, 0x804B, 0], LIMIT_SWITCH_ACTIVE)
     assert r.axis.db.ErrorStatus.LimitSwitchActive and r.axis.db.Statusword.HWLimitSwitchPlus
     _assert_reaction(r, 0x8013)
     assert 50.0 <= r.mech < 52.0
-    _assert_acknowledged(r)
+    r.acknowledge()
+    r.ctl.run(0.3)
+    assert r.reset.Done and r.power.Status and not r.axis.db.Statusword.Errorstop
+    assert _tdb(r) == (0x804B, [0x8013, 0x804B, 0], LIMIT_SWITCH_ACTIVE)
     back = MC_MoveRelative()
     r.until(back, _ended, Execute=True, Distance=-20.0, Velocity=10.0)
     assert back.Done and r.mech < 35.0
+    assert r.axis.db.ErrorStatus.LimitSwitchActive           # left, but not acknowledged yet
+    _assert_acknowledged(r)
+
+
+def test_s7t_monitoring_hardware_limit_switch_left_with_safety_range():
+    """S7-Technology V4.1 §4.5.7.2: the position where the switch was met is saved; only past it plus the
+    safety range (1000 / increments per unit = 1 with the manual's example resolution of 1000/unit) has the
+    axis left the switch.  0.5 back from that position (off the switch input at 50 already) MC_Reset keeps
+    8013/804B and LimitSwitchActive; 1.5 back it clears them.  A motion further into the switch meanwhile
+    is an error again (804B, §4.5.7.2 "a reverse motion command once again triggers an axis error")."""
+    r = _into_plus_switch()
+    met = r.axis.hw_retraction.position
+    assert 50.0 <= met < 50.1
+    r.acknowledge()
+    r.ctl.run(0.3)
+    assert r.power.Status
+    forward = MC_MoveRelative()
+    r.until(forward, _ended, Execute=True, Distance=1.0, Velocity=10.0)
+    assert forward.Error or forward.CommandAborted
+    assert r.axis.db.ErrorID == 0x804B and r.axis.db.ErrorStatus.LimitSwitchActive
+    r.acknowledge()
+    r.ctl.run(0.3)
+    assert r.power.Status
+    for target, cleared in ((met - 0.5, False), (met - 1.5, True)):
+        back = MC_MoveRelative()
+        r.until(back, _ended, Execute=True, Distance=target - r.mech, Velocity=5.0)
+        r.ctl.run(0.3)
+        assert back.Done and r.mech == pytest.approx(target, abs=0.01)
+        assert not r.axis.db.Statusword.HWLimitSwitchPlus
+        r.acknowledge()
+        assert r.reset.Done
+        assert (_tdb(r) == (0, [0, 0, 0], 0)) is cleared, (target, _tdb(r))
+        assert r.axis.db.ErrorStatus.LimitSwitchActive is not cleared
 
 
 def test_s7t_monitoring_software_limit_switch():

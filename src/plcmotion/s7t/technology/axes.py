@@ -25,7 +25,8 @@ from .builder import POSITIONING, SPEED, SYNCHRONIZATION, TELEGRAMS_NO_ENCODER, 
 from . import tags as T
 from .schema import AXIS
 from .tdb import AxisDB
-from .monitoring import FOLLOWING_WARNING_ENTRY, note_sw_limit_at_start, tdb_errors
+from .monitoring import (FOLLOWING_WARNING_ENTRY, HwLimitRetraction, hw_limit_side, note_sw_limit_at_start,
+                         tdb_errors)
 from .to_errors import W_DYNAMICS_LIMITED, W_SW_LIMIT, ErrorRecord, tdb_error
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -77,6 +78,8 @@ class AxisT(LayeredAxis):
         self.restart_until: float | None = None      # a restart (MC_Reset Restart = TRUE) runs until then
         #: MC_Power QOutputValue [%]: the valve output after disabling with StopMode 3 (hydraulic axes)
         self.q_output_value = 0.0
+        #: §4.5.7.2: the hardware limit switch met last, until the axis has left it (technology.monitoring)
+        self.hw_retraction: HwLimitRetraction | None = None
         super().__init__(ctl, name, cfg, db_number=db_number)
         self.db = AxisDB(self)
 
@@ -124,6 +127,9 @@ class AxisT(LayeredAxis):
             self._finish_job(stop, JobState.DONE, self.now)
         super().raise_alarm(fault, job)
         if new:
+            side = hw_limit_side(fault)
+            if side is not None:
+                self.hw_retraction = HwLimitRetraction(side, self.drive.mechanical_position())
             for entry in tdb_errors(fault):          # a limit switch gives two (homing_params, monitoring)
                 self.errors.note(*entry)
 
@@ -144,10 +150,15 @@ class AxisT(LayeredAxis):
 
     def acknowledge(self) -> Fault | None:
         """MC_Reset Restart = FALSE: the errors whose cause is gone are acknowledged; the technology DB's
-        ErrorID, ErrorBuffer and ErrorStatus are cleared when nothing remains (§6.7.1)."""
+        ErrorID, ErrorBuffer and ErrorStatus are cleared when nothing remains (§6.7.1) - after a hardware
+        limit switch only once the axis has left it (§4.5.7.2 retraction; the reaction is acknowledged
+        before, so the axis can be driven back)."""
         fault = super().acknowledge()
         if fault is None:
-            self.errors.clear()
+            retraction = self.hw_retraction
+            if retraction is None or retraction.left(self.drive.mechanical_position()):
+                self.hw_retraction = None
+                self.errors.clear()
         return fault
 
     # --- the superimposed motion stays inside the software limit switches (§4.5.7.3) -------------------
@@ -285,6 +296,7 @@ class AxisT(LayeredAxis):
         super().reinitialize(reason)
         self.stop_job = None                  # a restart ends the MC_Stop lock with the instances
         self.errors.clear()
+        self.hw_retraction = None
         self.following_mode = False
         self.restart_requested = False
         self._warned = None

@@ -19,7 +19,7 @@ from ...kernel.follower import Follower
 from ...kernel.jobs import Job, JobKind, JobState
 from ...kernel.layered_axis import LayeredAxis
 from ...kernel.policy import Activity
-from . import override
+from . import coordinates, override
 from ...kernel.reference_approach import ApproachHoming
 from .builder import POSITIONING, SPEED, SYNCHRONIZATION, TELEGRAMS_NO_ENCODER, YES
 from . import tags as T
@@ -125,13 +125,34 @@ class AxisT(LayeredAxis):
         if stop is not None and stop.busy and fault.reaction != Reaction.NONE:
             # the error reaction stops the axis: MC_Stop is done (only another MC_Stop aborts it, §6.2.3)
             self._finish_job(stop, JobState.DONE, self.now)
+        layer = self._layer_position()
         super().raise_alarm(fault, job)
+        self._layer_folded(layer)
         if new:
             side = hw_limit_side(fault)
             if side is not None:
                 self.hw_retraction = HwLimitRetraction(side, self.drive.mechanical_position())
             for entry in tdb_errors(fault):          # a limit switch gives two (homing_params, monitoring)
                 self.errors.note(*entry)
+
+    # --- base and superimposing coordinate system (§3.1.7, §6.2.2 Mode 7; technology.coordinates) -------
+    def _layer_position(self) -> float | None:
+        return self.sup_state_at(self.now)[0] if self.sup_profile is not None else None
+
+    def _layer_folded(self, before: float | None) -> None:
+        """The kernel took the superimposed layer (at ``before``) into the basic motion: its coordinate
+        stays in the superimposing system until a transfer."""
+        if before is not None and self.sup_profile is None:
+            coordinates.layer_taken_over(self, before)
+
+    def _sup_take_over(self, t: float) -> None:
+        layer = self._layer_position()
+        super()._sup_take_over(t)
+        self._layer_folded(layer)
+
+    def _finish_job(self, job: Job, state: JobState, t: float, fault: Fault | None = None) -> None:
+        super()._finish_job(job, state, t, fault)
+        coordinates.transfer_at_standstill(self)
 
     def _on_following_warning(self, t: float) -> None:
         self.errors.note(*FOLLOWING_WARNING_ENTRY)
@@ -237,6 +258,8 @@ class AxisT(LayeredAxis):
             self._finish_job(job, JobState.DONE, t)
             return
         super()._begin(job, t)
+        if job.kind != JobKind.SUPERIMPOSED:
+            coordinates.transfer(self, "override")     # a command overrides the basic motion (§6.2.2)
         note_sw_limit_at_start(self, job)        # warning 0026 (technology.monitoring)
         v = job.velocity if job.kind == JobKind.VELOCITY else job.target - self._state_now()[0] \
             if job.kind in (JobKind.ABSOLUTE, JobKind.RELATIVE) else 0.0
@@ -260,7 +283,9 @@ class AxisT(LayeredAxis):
         if stop is not None and stop.busy:
             # the emergency program of MC_Power takes the stop over: the stop is done, its lock stays
             self._finish_job(stop, JobState.DONE, t)
+        layer = self._layer_position()
         super()._abort_all(t, keep_simulated=keep_simulated)
+        self._layer_folded(layer)
         if stop is not None and not stop.extra.get("released"):
             self.stop_job = stop
 
@@ -289,6 +314,7 @@ class AxisT(LayeredAxis):
     def _remove_enable(self, t: float, by_power: bool = False) -> None:
         super()._remove_enable(t, by_power)
         self.following_mode = False
+        coordinates.transfer(self, "following")  # without enable the setpoint follows the actual value
 
     def reinitialize(self, reason: str) -> None:
         if reason != "restart":
@@ -297,6 +323,7 @@ class AxisT(LayeredAxis):
         self.stop_job = None                  # a restart ends the MC_Stop lock with the instances
         self.errors.clear()
         self.hw_retraction = None
+        coordinates.transfer(self, "restart")    # Mode 7 corrections are not kept either (§6.2.2)
         self.following_mode = False
         self.restart_requested = False
         self._warned = None

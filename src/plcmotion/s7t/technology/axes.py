@@ -300,10 +300,11 @@ class AxisT(LayeredAxis):
         self.state = "disabling"
         p, v, a = self._state_now()
         self._after_stop = "disable"
-        if stop_mode == FAST_STOP:
-            self._start_profile(self.motion.stop_with(t, p, v, a, self._max_dynamics()))
-        elif stop_mode == TIME_STOP:
-            plan = self.motion.ramp_out(t, p, v, self.cfg["userdefaultdynamics.stoptime"])
+        if stop_mode in (FAST_STOP, TIME_STOP):
+            # the ramp of the program, kept inside active software limit switches (docs/s7t decision E-D5)
+            ramp = self.motion.stop_with(t, p, v, a, self._max_dynamics()) if stop_mode == FAST_STOP else \
+                self.motion.ramp_out(t, p, v, self.cfg["userdefaultdynamics.stoptime"]).profile
+            plan = self.motion.guard_stop(t, p, v, a, ramp)
             self._start_profile(plan.profile, plan)
         else:                      # DefaultStop; GearStop of an axis that is not synchronous (§6.2.1)
             plan = self.motion.stop(t, p, v, a, emergency=True, jerk=False)

@@ -11,9 +11,10 @@ from __future__ import annotations
 
 import pytest
 
-from plcmotion.s7t import MC_Home, MC_MoveAbsolute, MC_MoveRelative, MC_MoveSuperImposed, MC_ReadSysParameter
+from plcmotion.s7t import (MC_Home, MC_MoveAbsolute, MC_MoveRelative, MC_MoveSuperImposed, MC_Power,
+                           MC_ReadSysParameter)
 
-from _s7t_rig import VIRTUAL, enabled
+from _s7t_rig import VIRTUAL, controller
 
 TRANSFER = "TypeOfAxis.DecodingConfig.transferSuperimposed"
 STANDSTILL, MERGE, RESET = 0, 1, 2
@@ -32,8 +33,21 @@ def _coordinates(axis) -> tuple[float, float, float]:
     return _read(axis, 4030), _read(axis, 4040), _read(axis, 1)
 
 
+class _Power:
+    """MC_Power in OB1 with the Enable of ``on``."""
+
+    def __init__(self, axis):
+        self.fb, self.on = MC_Power(), True
+        axis.ctl.program(lambda: self.fb(Axis=axis, Enable=self.on))
+
+
 def _axis(transfer: int):
-    return enabled({**VIRTUAL, TRANSFER: transfer})
+    ctl = controller()
+    axis = ctl.add_positioning_axis("Axis1", {**VIRTUAL, TRANSFER: transfer})
+    power = _Power(axis)
+    ctl.run(0.1)
+    assert power.fb.Status
+    return ctl, axis, power
 
 
 def _moved_with_superimposed(transfer: int):
@@ -83,11 +97,10 @@ def test_s7t_coordinates_transfer_reset_when_the_enable_is_removed():
     """S7-Technology V4.1 §6.2.2 example "Mode 7" with TRANSFER_RESET: the superimposed coordinate goes over
     only when the enable signals are cancelled (the axis follows its actual value: following mode)."""
     ctl, axis, power = _moved_with_superimposed(RESET)
-    ctl._programs.clear()
-    power(Axis=axis, Enable=False)
-    ctl.run(0.2)
-    power(Axis=axis, Enable=False)
-    assert axis.state == "disabled"
+    assert _read(axis, 4030) == pytest.approx(20.0)
+    power.on = False
+    ctl.run(0.1)
+    assert axis.state == "disabled" and not power.fb.Status
     sup_p, basic, total = _coordinates(axis)
     assert sup_p == 0.0 and basic == pytest.approx(120.0) and total == pytest.approx(120.0)
 

@@ -154,6 +154,11 @@ class AxisT(LayeredAxis):
         super()._finish_job(job, state, t, fault)
         coordinates.transfer_at_standstill(self)
 
+    def _on_milestone(self, name: str, t: float) -> None:
+        super()._on_milestone(name, t)
+        if name == "end":                        # also the end of a stop that no command ran (error reaction)
+            coordinates.transfer_at_standstill(self)
+
     def _on_following_warning(self, t: float) -> None:
         self.errors.note(*FOLLOWING_WARNING_ENTRY)
 

@@ -283,12 +283,11 @@ def cmd_run(args: argparse.Namespace) -> int:
             plot_failed = f"--plot {args.plot}: {getattr(exc, 'strerror', None) or exc}"
     print(f"ran {ctl.time:.3f} s of virtual time in {wall:.2f} s (x{ctl.time / wall if wall else 0:.1f} real time), "
           f"mode {ctl.mode}")
-    describe = families.lookup(ctl.family).describe_fault      # the family's alarm numbers and texts
+    family = families.lookup(ctl.family)
 
     def alarms(to) -> str:
-        if describe is None:
-            return ", ".join(str(a) for a in to.alarms) or "no error"
-        return ", ".join(f"{describe(a)} [{a}]" for a in to.alarms) or "no error"
+        """The family's view of the object's errors (its alarm numbers and texts, its error records)."""
+        return ", ".join(families.error_texts(family, to)) or "no error"
 
     for name, ax in ctl.axes.items():
         errors = alarms(ax)

@@ -166,7 +166,8 @@ def test_s7t_home_direct_and_corrections(enable):
         assert h.Done, (mode, h)
         assert r.axis.db.Statusword.HomingDone
         assert r.axis.db.ActualPosition == pytest.approx(expected, abs=1e-3)
-    assert r.axis.homing.superimposed_offset == -5.0
+    # the axis stands: TRANSFER_STANDSTILL (default) has taken Mode 7 into the base system (§6.2.2 Mode 7 notes)
+    assert r.axis.homing.superimposed_offset == 0.0
 
 
 # --- the restrictions of §6.2.2, table-driven ------------------------------------------------------------------

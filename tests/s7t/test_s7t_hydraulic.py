@@ -7,8 +7,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from plcmotion.kernel.errors import ConfigurationError
-from plcmotion.s7t import (MC_MoveRelative, MC_MoveVelocity, MC_Power, MC_Reset, MC_SetCharacteristic, MC_Stop,
-                           add_cam_disk)
+from plcmotion.s7t import (MC_MoveRelative, MC_MoveVelocity, MC_Power, MC_ReadSysParameter, MC_Reset,
+                           MC_SetCharacteristic, MC_Stop, MC_WriteParameter, add_cam_disk)
 
 from _s7t_rig import controller
 
@@ -71,6 +71,44 @@ def test_s7t_hydraulic_off2_ramp_parameter_5009():
     r.inputs["Enable"] = False
     r.ctl.run(0.1)
     assert r.out() == pytest.approx(before - 5.0, abs=0.3)
+
+
+def _write(r: Rig, number: int, value: float) -> None:
+    w = MC_WriteParameter()
+    w(Axis=r.axis, Execute=True, ParameterNumber=number, Value=value)
+    assert w.Done and not w.Error, w
+
+
+def test_s7t_hydraulic_5009_written_at_run_time_reaches_the_valve():
+    """S7-Technology V4.1 §9.4 parameter 5009 (effective immediately) and §6.7.5 MC_WriteParameter: 25 %/s
+    written while the axis is enabled is the rate of the next OFF2 ramp: 0 -> 20 % after 0.2 s is 5 %, and
+    after 0.8 s the output has reached 20 %.  MC_ReadSysParameter reads 25 back."""
+    r = Rig(StopMode=3, QOutputValue=20.0)
+    _write(r, 5009, 25.0)
+    read = MC_ReadSysParameter()
+    read(Axis=r.axis, Execute=True, ParameterNumber=5009)
+    assert read.Done and read.Value == 25.0
+    before = r.out()
+    r.inputs["Enable"] = False
+    r.ctl.run(0.2)
+    assert r.out() == pytest.approx(before + 5.0, abs=0.3)
+    r.ctl.run(0.8)
+    assert r.out() == pytest.approx(20.0, abs=0.01)
+
+
+def test_s7t_hydraulic_output_limit_written_at_run_time():
+    """S7-Technology V4.1 §9.4 parameter 1402 (manipulated variable limit, upper; effective immediately): a
+    hydraulic axis moving at 180 mm/s on the straight valve line (500 mm/s at 100 %) needs 36 % of 10 V;
+    writing 20 cuts the output to 20 % at once, and it never exceeds it afterwards."""
+    r = Rig()
+    mv = MC_MoveVelocity()
+    mv(Axis=r.axis, Execute=True, Velocity=180.0)
+    r.ctl.run(3.0)
+    assert r.out() > 30.0
+    _write(r, 1402, 20.0)
+    for _ in range(50):
+        r.ctl.run(r.ctl.app_cycle)
+        assert r.out() <= 20.0 + 1 / 276.48       # within one count of the analog word (27648 = 100 %)
 
 
 def test_s7t_hydraulic_qoutputvalue_invalid_at_falling_edge_808b():

@@ -12,7 +12,7 @@ from __future__ import annotations
 import pytest
 
 from plcmotion.kernel.faults import Reaction
-from plcmotion.s7t import MC_MoveAbsolute, MC_MoveRelative, MC_MoveVelocity
+from plcmotion.s7t import MC_MoveAbsolute, MC_MoveRelative, MC_MoveVelocity, MC_WriteParameter
 from plcmotion.s7t.technology.monitoring import REACTIONS
 
 from _s7t_homing_rig import ENC, Rig
@@ -53,24 +53,69 @@ def _assert_acknowledged(r: Rig) -> None:
     assert not r.axis.db.Statusword.Error and r.power.Status
 
 
-def test_s7t_monitoring_hardware_limit_switch():
-    """S7-Technology V4.1 §4.5.7.2: an axis running into its (NC) plus limit switch at 50 is stopped with
-    8013 and 804B (ErrorBuffer in that order, ErrorID the latest), ErrorStatus.LimitSwitchActive,
-    Statusword.HWLimitSwitchPlus; the enable is removed; the motion command ends CommandAborted.  MC_Reset
-    acknowledges; the axis is then retracted with the drive."""
-    r = Rig({"Wizard.HWLimitSwitchPlusInput": "I1.0", "TypeOfAxis.HWEndPos.enable": 1,
-             "Plant.HWLimitMaxPosition": 50.0}, input_filter=0.0)
+HW_PLUS = {"Wizard.HWLimitSwitchPlusInput": "I1.0", "TypeOfAxis.HWEndPos.enable": 1, "Plant.HWLimitMaxPosition": 50.0}
+LIMIT_SWITCH_ACTIVE = 1 << 14
+
+
+def _into_plus_switch() -> Rig:
+    r = Rig(HW_PLUS, input_filter=0.0)
     mv = MC_MoveVelocity()
     r.call(mv, 4.0, Execute=True, Velocity=20.0)
     assert mv.CommandAborted
-    assert _tdb(r) == (0x804B, [0x8013, 0x804B, 0], 1 << 14)
+    return r
+
+
+def test_s7t_monitoring_hardware_limit_switch():
+    """S7-Technology V4.1 §4.5.7.2: an axis running into its (NC) plus limit switch at 50 is stopped with
+    8013 and 804B (ErrorBuffer in that order, ErrorID the latest), ErrorStatus.LimitSwitchActive,
+    Statusword.HWLimitSwitchPlus; the enable is removed; the motion command ends CommandAborted.  "Retraction
+    with drive": MC_Reset acknowledges the error (the axis can be enabled again) but the error message and
+    LimitSwitchActive stay; the axis is driven back out of the switch; a second MC_Reset then clears them."""
+    r = _into_plus_switch()
+    assert _tdb(r) == (0x804B, [0x8013, 0x804B, 0], LIMIT_SWITCH_ACTIVE)
     assert r.axis.db.ErrorStatus.LimitSwitchActive and r.axis.db.Statusword.HWLimitSwitchPlus
     _assert_reaction(r, 0x8013)
     assert 50.0 <= r.mech < 52.0
-    _assert_acknowledged(r)
+    r.acknowledge()
+    r.ctl.run(0.3)
+    assert r.reset.Done and r.power.Status and not r.axis.db.Statusword.Errorstop
+    assert _tdb(r) == (0x804B, [0x8013, 0x804B, 0], LIMIT_SWITCH_ACTIVE)
     back = MC_MoveRelative()
     r.until(back, _ended, Execute=True, Distance=-20.0, Velocity=10.0)
     assert back.Done and r.mech < 35.0
+    assert r.axis.db.ErrorStatus.LimitSwitchActive           # left, but not acknowledged yet
+    _assert_acknowledged(r)
+
+
+def test_s7t_monitoring_hardware_limit_switch_left_with_safety_range():
+    """S7-Technology V4.1 §4.5.7.2: the position where the switch was met is saved; only past it plus the
+    safety range (1000 / increments per unit = 1 with the manual's example resolution of 1000/unit) has the
+    axis left the switch.  0.5 back from that position (off the switch input at 50 already) MC_Reset keeps
+    8013/804B and LimitSwitchActive; 1.5 back it clears them.  A motion further into the switch meanwhile
+    is an error again (804B, §4.5.7.2 "a reverse motion command once again triggers an axis error")."""
+    r = _into_plus_switch()
+    met = r.axis.hw_retraction.position
+    assert 50.0 <= met < 50.1
+    r.acknowledge()
+    r.ctl.run(0.3)
+    assert r.power.Status
+    forward = MC_MoveRelative()
+    r.until(forward, _ended, Execute=True, Distance=1.0, Velocity=10.0)
+    assert forward.Error or forward.CommandAborted
+    assert r.axis.db.ErrorID == 0x804B and r.axis.db.ErrorStatus.LimitSwitchActive
+    r.acknowledge()
+    r.ctl.run(0.3)
+    assert r.power.Status
+    for target, cleared in ((met - 0.5, False), (met - 1.5, True)):
+        back = MC_MoveRelative()
+        r.until(back, _ended, Execute=True, Distance=target - r.mech, Velocity=5.0)
+        r.ctl.run(0.3)
+        assert back.Done and r.mech == pytest.approx(target, abs=0.01)
+        assert not r.axis.db.Statusword.HWLimitSwitchPlus
+        r.acknowledge()
+        assert r.reset.Done
+        assert (_tdb(r) == (0, [0, 0, 0], 0)) is cleared, (target, _tdb(r))
+        assert r.axis.db.ErrorStatus.LimitSwitchActive is not cleared
 
 
 def test_s7t_monitoring_software_limit_switch():
@@ -86,6 +131,28 @@ def test_s7t_monitoring_software_limit_switch():
     assert r.axis.db.ActualPosition == pytest.approx(50.0, abs=0.05)
     assert r.axis.state == "enabled" and REACTIONS[0x8014] is None
     _assert_acknowledged(r)
+
+
+def test_s7t_monitoring_software_limit_switch_overshot():
+    """S7-Technology V4.1 §7.12.1 8015 "software limit switch overshot during motion execution", §9.4 parameter
+    3 (swlimit.plusposition, effective immediately), §6.7.5 MC_WriteParameter: the plus switch is moved to
+    0.2 ahead of an axis moving at 40 - less than its braking distance even with the emergency deceleration
+    (40² / (2 · 1000) = 0.8).  The axis passes the switch: 8015, ErrorStatus.SoftwareLimitPos, the motion
+    ends CommandAborted, enable removed; it stands less than 0.8 beyond the switch."""
+    r = _homed({"swlimit": {"state": 1, "plusposition": 1000.0},
+                "TypeOfAxis.EmergencyRampGenerator.maxDeceleration": 1000.0})
+    mv = MC_MoveVelocity()
+    r.call(mv, 1.0, Execute=True, Velocity=40.0)
+    switch = r.axis.db.CommandPosition + 0.2
+    w = MC_WriteParameter()
+    w(Axis=r.axis, Execute=True, ParameterNumber=3, Value=switch)
+    assert w.Done
+    r.call(mv, 0.5, Execute=True, Velocity=40.0)
+    assert mv.CommandAborted
+    assert _tdb(r) == (0x8015, [0x8015, 0, 0], 1 << 12)
+    _assert_reaction(r, 0x8015)
+    r.ctl.run(0.5)
+    assert switch < r.axis.db.ActualPosition < switch + 0.8
 
 
 def test_s7t_monitoring_following_error():

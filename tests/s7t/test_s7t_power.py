@@ -4,6 +4,8 @@ the virtual axis's DriveEnabled and the speed-controlled axis.
 from __future__ import annotations
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from plcmotion.s7t import MC_MoveAbsolute, MC_MoveVelocity, MC_Power
 
@@ -43,6 +45,50 @@ def test_s7t_stop_modes_brake_time(stop_mode, seconds):
     r.ctl.run(seconds / 2 + 0.02)
     assert r.axis.state == "disabled" and not r.power.Status and not r.power.Busy
     assert move(Execute=True).CommandAborted
+
+
+LIMITED = {**VIRTUAL, "swlimit": {"state": 1, "plusposition": 100.0, "minusposition": -100.0},
+           "TypeOfAxis.EmergencyRampGenerator.maxDeceleration": 200.0, "TypeOfAxis.MaxAcceleration.maximum": 1000.0}
+
+
+def _stopped_near_the_switch(stop_mode: int, stop_time: float, velocity: float, at: float) -> tuple[float, "Powered"]:
+    """A virtual axis moving at ``velocity`` towards the plus software limit switch (100) is disabled with
+    ``stop_mode`` once its setpoint passes ``at``: the largest setpoint seen until it is disabled."""
+    r = Powered({**LIMITED, "userdefaultdynamics.stoptime": stop_time}, StopMode=stop_mode)
+    move = MC_MoveVelocity()
+    move(Axis=r.axis, Execute=True, Velocity=velocity, Acceleration=1000.0, Deceleration=1000.0, Jerk=0.0)
+    r.ctl.run_until(lambda: r.axis.db.CommandPosition >= at, 10.0)
+    r.enable = False
+    highest = -1e9
+    for _ in range(int((stop_time + 1.0) / r.ctl.app_cycle)):
+        r.ctl.run(r.ctl.app_cycle)
+        highest = max(highest, float(r.ctl.bank.sp_p[r.axis.index]))
+    assert r.axis.state == "disabled"
+    return highest, r
+
+
+def test_s7t_stop_program_ends_at_the_software_limit_switch():
+    """S7-Technology V4.1 §4.5.7.3 (the software limit switches limit the traversing range "in all operating
+    modes") with §6.2.1 StopMode 2 (TimeStop, 2 s): disabled at 90 while moving at 50, the ramp of the stop
+    time would end at 90 + 50 · 2 / 2 = 140; the axis stops at the switch (100) instead and 8014 is in its
+    technology DB (decision E-D5: a stop program is a motion of the axis)."""
+    highest, r = _stopped_near_the_switch(2, 2.0, 50.0, 90.0)
+    assert highest == pytest.approx(100.0, abs=1e-6)
+    assert r.axis.db.ErrorID == 0x8014 and r.axis.db.ErrorStatus.SoftwareLimitPos
+
+
+@settings(max_examples=25, deadline=None)
+@given(stop_mode=st.sampled_from([0, 1, 2, 4]), stop_time=st.floats(0.05, 3.0), velocity=st.floats(5.0, 120.0),
+       at=st.floats(0.0, 95.0))
+def test_s7t_stop_programs_never_pass_an_active_software_limit_switch(stop_mode, stop_time, velocity, at):
+    """S7-Technology V4.1 §4.5.7.3, §6.2.1: whatever the stop program (DefaultStop, FastStop, TimeStop with
+    any stop time, GearStop), the speed and the place where Enable falls, a stop program whose braking
+    distance fits before the switch (emergency deceleration 200: v² / 400 ≤ 100 - position) never takes the
+    setpoint past the plus software limit switch."""
+    if velocity * velocity / 400.0 > 100.0 - at:
+        at = 100.0 - velocity * velocity / 400.0 - 1.0
+    highest, _r = _stopped_near_the_switch(stop_mode, stop_time, velocity, at)
+    assert highest <= 100.0 + 1e-6
 
 
 def test_s7t_drive_ramp_stop_removes_the_enable():

@@ -141,6 +141,30 @@ def test_s7t_project_example_runs_through_the_cli(tmp_path, capsys):
     assert png.read_bytes()[:8] == PNG
 
 
+def test_s7t_project_run_reports_technology_db_errors(tmp_path, capsys):
+    """S7-Technology V4.1 §5.12, §7.1, §7.12.1: an error that only the technology DB holds is in the summary
+    of `plcmotion run`.  A hydraulic axis disabled with MC_Power StopMode 3 notes 8040 in its technology DB
+    (§6.2.1) without any alarm of the axis; the summary names the ErrorID, its message and the ErrorBuffer."""
+    project, program = tmp_path / "press.toml", tmp_path / "press.py"
+    project.write_text(HEAD + '[axes.Press]\nWizard.DriveTechnology = 1\n"TypeOfAxis.Homing.referencingNecessary" = 0\n'
+                       '[axes.Table]\nWizard.Virtual = 1\n', encoding="utf-8")
+    program.write_text(
+        "from plcmotion.s7t import MC_Power\n"
+        "power, other = MC_Power(), MC_Power()\n\n"
+        "@ctl.program\n"
+        "def ob1():\n"
+        "    power(Axis=axes['Press'], Enable=ctl.time < 0.5, StopMode=3)\n"
+        "    other(Axis=axes['Table'], Enable=True)\n", encoding="utf-8")
+    assert main(["run", str(project), str(program), "--duration", "1", "--quiet"]) == 0
+    out = capsys.readouterr().out
+    press = next(line for line in out.splitlines() if line.strip().startswith("Press:"))
+    table = next(line for line in out.splitlines() if line.strip().startswith("Table:"))
+    assert press.startswith("  Press: disabled,")
+    assert press.endswith('technology DB error 16#8040 "The axis / external encoder are disabled, or the wrong mode '
+                          'is set" (ErrorBuffer 16#8040)'), press
+    assert table.endswith("no error")
+
+
 def test_s7t_project_example_program_append_overlay_and_db_snapshots():
     """S7-Technology V4.1 §6.2.6: Mode 1 stops at the first target, Mode 2 passes it at the lower velocity;
     §6.9.2 DoneFlag[1] toggles; §7.11 the program sees a new snapshot per DB update; OB65 runs after each."""

@@ -62,6 +62,16 @@ class _HydraulicChannel(_ServoChannel):
         g.chars[m] = new
         g.tables()
 
+    def reconfigure(self, spec: DriveSpec) -> None:
+        """The valve settings a program may change while the axis runs (S7-Technology V4.1 §9.4: parameter
+        5009, the output ramp, and 1401/1402, the output limits, all "effective immediately"): the next
+        servo cycle works with them.  The valve, cylinder and characteristic stay as commissioned."""
+        hyd = spec.hydraulic
+        if hyd is None:
+            return
+        g, m = self.group, self.member
+        g.ramp[m], g.omin[m], g.omax[m] = hyd.output_ramp, hyd.output_min, hyd.output_max
+
     def set_off_output(self, percent: float) -> None:
         """The substitute output [%] the output ramps to without enable (MC_Power QOutputValue)."""
         if isinstance(percent, bool) or not isinstance(percent, (int, float)) or not -100.0 <= percent <= 100.0:

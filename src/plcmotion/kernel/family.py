@@ -50,7 +50,9 @@ mapping of its buffer-mode input (``kernel.policy``); None: the PLCopen default,
     ``schemas`` map an object kind to the ``kernel.schema.AxisSchema`` that checks its tags, so a project
     file can report every bad tag of an object before creating it (a kind without one cannot be declared
     in a project file).  ``describe_fault(fault)``: how summaries name a kernel fault of the family's
-    objects (its alarm number and text); None: the fault's own text.  ``setup(ctl)``: the family's
+    objects (its alarm number and text); None: the fault's own text.  ``error_view(obj)``: the texts a
+    summary shows for the errors of one object, where the family keeps errors the kernel's alarms do not
+    hold (an error record of its own); None: one text per alarm (``error_texts``).  ``setup(ctl)``: the family's
     controller-wide runtime state (e.g. data blocks shared by all its objects), made once per controller and
     kept as ``ctl.extension``; a restart of the controller calls its ``reinitialize(reason)`` when it has
     one.  None: the family has no such state."""
@@ -65,6 +67,7 @@ mapping of its buffer-mode input (``kernel.policy``); None: the PLCopen default,
     policy: OverridePolicy | None = None
     schemas: Mapping[str, Any] = field(default_factory=dict)
     describe_fault: Callable[[Any], str] | None = None
+    error_view: Callable[[Any], list[str]] | None = None
     setup: Callable[[Any], Any] | None = None
 
 
@@ -99,6 +102,18 @@ def default() -> Family:
     if not _REGISTRY:
         raise ValueError("no family is registered: import plcmotion (or a family package) first")
     return next(iter(_REGISTRY.values()))
+
+
+def error_texts(family: Family, obj: Any) -> list[str]:
+    """What a summary shows for the errors of ``obj`` (an object of ``family``); empty: none.  The family's
+    ``error_view`` where it has one, else each alarm of the object, named by ``describe_fault``."""
+    if family.error_view is not None:
+        return list(family.error_view(obj))
+    describe = family.describe_fault
+    alarms = getattr(obj, "alarms", ())
+    if describe is None:
+        return [str(a) for a in alarms]
+    return [f"{describe(a)} [{a}]" for a in alarms]
 
 
 def offering(kind: str) -> tuple[str, ...]:

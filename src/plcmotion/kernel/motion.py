@@ -244,6 +244,16 @@ class MotionPlanner:
         plan.stop = (emergency, jerk)
         return plan
 
+    def guard_stop(self, t: float, p: float, v: float, a: float, profile: Profile) -> Plan:
+        """A stop with a ramp of its own (a family's stop program: a stop time, the maximum dynamics) kept
+        inside the active software limit switches like any motion: where it would pass one it ends there,
+        braking with the configured deceleration or, where that is too late, the emergency deceleration."""
+        lim = limits(self.axis, None, emergency=True, jerk=False)
+        try:
+            return self._guard(Plan(profile), t, p, v, a, lim, cruise=abs(v))
+        except (PlanningError, DirectionFault):
+            return Plan(profile)
+
     def stop_with(self, t: float, p: float, v: float, a: float, lim: Limits) -> Profile:
         """A stop with the dynamics ``lim`` that always gives a profile: where even the closed-form
         fallback of the planner fails, the emergency ramp without jerk (§12.8) stops the axis."""

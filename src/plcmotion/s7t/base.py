@@ -135,10 +135,12 @@ class ExecuteInstruction(_S7T, fb.ExecuteInstruction):
         super()._begin()
         job = self._job
         to = self.__dict__.get("_to")
-        if job is not None and self._done_flag and isinstance(to, AxisT):
+        if job is not None and isinstance(to, AxisT):
             ext = to.ctl.extension
             if isinstance(ext, TechnologyDevice):
-                ext.watch_done_flag(self, self._cmd_seq, job, self._done_flag, self._completed)
+                ext.note_command()                       # CmdLoopDuration / MaxLoopDuration (§7.10)
+                if self._done_flag:
+                    ext.watch_done_flag(self, self._cmd_seq, job, self._done_flag, self._completed)
 
     def _evaluate(self) -> None:
         try:

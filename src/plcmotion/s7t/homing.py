@@ -20,7 +20,7 @@ from ..kernel.jobs import Job, JobKind, JobState
 from ..kernel.policy import ABORT
 from . import errors as E
 from .base import POSITION_AXES, ExecuteInstruction, InstructionError, integer, real
-from .technology import override
+from .technology import coordinates, override
 from .technology.axes import AxisT
 from .technology.homing_params import ENC, MODE_NO_REFERENCE
 
@@ -77,6 +77,7 @@ class MC_Home(ExecuteInstruction):  # noqa: N801 - instruction name of the manua
             # §6.2.2 notice: an axis in following mode corrects Mode 7 in the basic coordinate system
             layer = "base" if mode == CORRECT_SUPERIMPOSED and axis.following_mode else _CORRECTIONS[mode]
             axis.homing.correct(job, layer)
+            coordinates.transfer_at_standstill(axis)     # TRANSFER_STANDSTILL takes a Mode 7 over at rest
         return job
 
     def _interact(self, axis: AxisT, new: str, job: Job) -> None:

@@ -9,7 +9,7 @@ from . import errors as E
 from .base import ALL_AXES, ExecuteInstruction, Instruction, InstructionError, as_bool, integer, real
 from .technology.axes import (DEFAULT_STOP, FAST_STOP, GEAR_STOP, OFF2_STOP, QUICK_STOP, RAMP_STOP, TIME_STOP,
                               AxisT)
-from .technology import override
+from .technology import coordinates, override
 from .technology.device import TechnologyDevice
 
 #: MC_Power Mode (§6.2.1): 0 default, 1 speed-controlled, 2 following mode with the power unit enabled,
@@ -107,6 +107,8 @@ class MC_Power(Instruction):  # noqa: N801 - instruction name of the manual
         if axis.power_owner is None or axis.power_owner is self:
             axis.following_mode = mode == FOLLOWING_ENABLED
             axis.simulation_requested = mode == SIMULATION  # read when the axis is enabled (also after MC_Reset)
+            if mode in (FOLLOWING_ENABLED, FOLLOWING_DISABLED):
+                coordinates.transfer(axis, "following")     # §6.2.2 Mode 7 notes: following mode
         return 0
 
     def _take_stop(self, axis: AxisT, fall: bool = False) -> int:

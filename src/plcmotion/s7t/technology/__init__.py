@@ -21,7 +21,7 @@ from .device import TechnologyDevice
 from .hydraulic_axis import axis_class
 from .override import POLICY
 from .schema import AXIS
-from .to_errors import describe_fault
+from .to_errors import describe_fault, error_view
 
 NAME = "S7-Technology"
 #: ``technology_version``: 10 * major + minor of the technology (V4.1 only, docs/s7t/decisions.md)
@@ -93,7 +93,7 @@ S7_TECHNOLOGY = K.register(K.Family(
     NAME, versions=(VERSION,), default_version=VERSION,
     factories={K.POSITIONING_AXIS: _positioning_axis, K.SYNCHRONOUS_AXIS: _synchronization_axis},
     job_kinds=JOB_KINDS, policy=POLICY, schemas={K.POSITIONING_AXIS: AXIS, K.SYNCHRONOUS_AXIS: AXIS},
-    describe_fault=describe_fault, setup=_setup))
+    describe_fault=describe_fault, error_view=error_view, setup=_setup))
 
 __all__ = ["S7_TECHNOLOGY", "NAME", "VERSION", "POLICY", "DP_CYCLE_GRANULARITY", "AxisT", "SpeedAxis",
            "PositioningAxisT", "SynchronizationAxis", "TechnologyDevice", "device"]

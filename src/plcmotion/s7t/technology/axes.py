@@ -19,7 +19,7 @@ from ...kernel.follower import Follower
 from ...kernel.jobs import Job, JobKind, JobState
 from ...kernel.layered_axis import LayeredAxis
 from ...kernel.policy import ABORT, Activity
-from . import override
+from . import coordinates, override
 from ...kernel.reference_approach import ApproachHoming
 from .builder import POSITIONING, SPEED, SYNCHRONIZATION, TELEGRAMS_NO_ENCODER, YES
 from . import tags as T
@@ -27,7 +27,8 @@ from .schema import AXIS
 from .tdb import AxisDB
 from . import datasets as D
 from .encoders import Encoders, dataset_encoder, retain_key
-from .monitoring import FOLLOWING_WARNING_ENTRY, note_sw_limit_at_start, tdb_errors
+from .monitoring import (FOLLOWING_WARNING_ENTRY, HwLimitRetraction, hw_limit_side, note_sw_limit_at_start,
+                         tdb_errors)
 from .to_errors import W_DYNAMICS_LIMITED, W_SW_LIMIT, ErrorRecord, tdb_error
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -82,6 +83,8 @@ class AxisT(LayeredAxis):
         self.q_output_value = 0.0
         #: a started MC_ChangeDataset waiting for its moment (§6.2.5): ended by MC_Power Enable = FALSE (§6.8.3)
         self.dataset_change: Job | None = None
+        #: §4.5.7.2: the hardware limit switch met last, until the axis has left it (technology.monitoring)
+        self.hw_retraction: HwLimitRetraction | None = None
         super().__init__(ctl, name, cfg, db_number=db_number)
         self.encoders = Encoders(self, self._encoder_in_force())
         self.db = AxisDB(self)
@@ -136,10 +139,39 @@ class AxisT(LayeredAxis):
         if stop is not None and stop.busy and fault.reaction != Reaction.NONE:
             # the error reaction stops the axis: MC_Stop is done (only another MC_Stop aborts it, §6.2.3)
             self._finish_job(stop, JobState.DONE, self.now)
+        layer = self._layer_position()
         super().raise_alarm(fault, job)
+        self._layer_folded(layer)
         if new:
+            side = hw_limit_side(fault)
+            if side is not None:
+                self.hw_retraction = HwLimitRetraction(side, self.drive.mechanical_position())
             for entry in tdb_errors(fault):          # a limit switch gives two (homing_params, monitoring)
                 self.errors.note(*entry)
+
+    # --- base and superimposing coordinate system (§3.1.7, §6.2.2 Mode 7; technology.coordinates) -------
+    def _layer_position(self) -> float | None:
+        return self.sup_state_at(self.now)[0] if self.sup_profile is not None else None
+
+    def _layer_folded(self, before: float | None) -> None:
+        """The kernel took the superimposed layer (at ``before``) into the basic motion: its coordinate
+        stays in the superimposing system until a transfer."""
+        if before is not None and self.sup_profile is None:
+            coordinates.layer_taken_over(self, before)
+
+    def _sup_take_over(self, t: float) -> None:
+        layer = self._layer_position()
+        super()._sup_take_over(t)
+        self._layer_folded(layer)
+
+    def _finish_job(self, job: Job, state: JobState, t: float, fault: Fault | None = None) -> None:
+        super()._finish_job(job, state, t, fault)
+        coordinates.transfer_at_standstill(self)
+
+    def _on_milestone(self, name: str, t: float) -> None:
+        super()._on_milestone(name, t)
+        if name == "end":                        # also the end of a stop that no command ran (error reaction)
+            coordinates.transfer_at_standstill(self)
 
     def _on_following_warning(self, t: float) -> None:
         self.errors.note(*FOLLOWING_WARNING_ENTRY)
@@ -158,10 +190,15 @@ class AxisT(LayeredAxis):
 
     def acknowledge(self) -> Fault | None:
         """MC_Reset Restart = FALSE: the errors whose cause is gone are acknowledged; the technology DB's
-        ErrorID, ErrorBuffer and ErrorStatus are cleared when nothing remains (§6.7.1)."""
+        ErrorID, ErrorBuffer and ErrorStatus are cleared when nothing remains (§6.7.1) - after a hardware
+        limit switch only once the axis has left it (§4.5.7.2 retraction; the reaction is acknowledged
+        before, so the axis can be driven back)."""
         fault = super().acknowledge()
         if fault is None:
-            self.errors.clear()
+            retraction = self.hw_retraction
+            if retraction is None or retraction.left(self.drive.mechanical_position()):
+                self.hw_retraction = None
+                self.errors.clear()
         return fault
 
     # --- the superimposed motion stays inside the software limit switches (§4.5.7.3) -------------------
@@ -258,6 +295,8 @@ class AxisT(LayeredAxis):
             self._finish_job(job, JobState.DONE, t)
             return
         super()._begin(job, t)
+        if job.kind != JobKind.SUPERIMPOSED:
+            coordinates.transfer(self, "override")     # a command overrides the basic motion (§6.2.2)
         note_sw_limit_at_start(self, job)        # warning 0026 (technology.monitoring)
         v = job.velocity if job.kind == JobKind.VELOCITY else job.target - self._state_now()[0] \
             if job.kind in (JobKind.ABSOLUTE, JobKind.RELATIVE) else 0.0
@@ -281,7 +320,9 @@ class AxisT(LayeredAxis):
         if stop is not None and stop.busy:
             # the emergency program of MC_Power takes the stop over: the stop is done, its lock stays
             self._finish_job(stop, JobState.DONE, t)
+        layer = self._layer_position()
         super()._abort_all(t, keep_simulated=keep_simulated)
+        self._layer_folded(layer)
         if stop is not None and not stop.extra.get("released"):
             self.stop_job = stop
 
@@ -298,10 +339,11 @@ class AxisT(LayeredAxis):
         self.state = "disabling"
         p, v, a = self._state_now()
         self._after_stop = "disable"
-        if stop_mode == FAST_STOP:
-            self._start_profile(self.motion.stop_with(t, p, v, a, self._max_dynamics()))
-        elif stop_mode == TIME_STOP:
-            plan = self.motion.ramp_out(t, p, v, self.cfg["userdefaultdynamics.stoptime"])
+        if stop_mode in (FAST_STOP, TIME_STOP):
+            # the ramp of the program, kept inside active software limit switches (docs/s7t decision E-D5)
+            ramp = self.motion.stop_with(t, p, v, a, self._max_dynamics()) if stop_mode == FAST_STOP else \
+                self.motion.ramp_out(t, p, v, self.cfg["userdefaultdynamics.stoptime"]).profile
+            plan = self.motion.guard_stop(t, p, v, a, ramp)
             self._start_profile(plan.profile, plan)
         else:                      # DefaultStop; GearStop of an axis that is not synchronous (§6.2.1)
             plan = self.motion.stop(t, p, v, a, emergency=True, jerk=False)
@@ -313,6 +355,7 @@ class AxisT(LayeredAxis):
         super()._remove_enable(t, by_power)
         self.following_mode = False
         self.simulate_actual(False)              # the encoder's actual values from the next servo cycle
+        coordinates.transfer(self, "following")  # without enable the setpoint follows the actual value
 
     def reinitialize(self, reason: str) -> None:
         if reason != "restart":
@@ -333,6 +376,8 @@ class AxisT(LayeredAxis):
             encoders.restart()
         self.stop_job = None                  # a restart ends the MC_Stop lock with the instances
         self.errors.clear()
+        self.hw_retraction = None
+        coordinates.transfer(self, "restart")    # Mode 7 corrections are not kept either (§6.2.2)
         self.following_mode = False
         self.restart_requested = False
         self._warned = None

@@ -1,18 +1,31 @@
 """The integrated technology of a CPU 31xT as a whole: technology DBs, the MCDevice DB, the DB update and
-OB65 (S7-Technology V4.1 §2.5.3, §5.1, §7.10, §7.11).
+OB65 (S7-Technology V4.1 §2.5.3, §5.1, §5.4, §7.10, §7.11).
 
 One :class:`TechnologyDevice` per controller (``ctl.extension``, made by the family's ``setup``).  It keeps
 the technology DBs by number, so an instruction's ``Axis`` input may be a DB number as in the manual, and
-runs the DB update every ``db_update_ratio`` IPO cycles (the kernel's servo cycle is the IPO cycle; default
-2, the example of §5.1), in the order of §7.11:
+runs the DB update in every basic clock, every ``db_update_ratio`` IPO cycles (the kernel's servo cycle is the
+IPO cycle; default 2, the example of §5.1), in the order of §7.11:
 
-1. ``UpdateFlag`` := 16#0100 in every DB, 2. every DB is written entirely (the MCDevice DB first),
-3. ``UpdateCounter`` += 1 in every DB, 4. ``UpdateFlag`` := 0, 5. the OB65 programs run (every update).
+1. ``UpdateFlag`` := 16#0100 in every DB of this clock, 2. each of them is written entirely (the MCDevice DB
+first), 3. their ``UpdateCounter`` += 1, 4. ``UpdateFlag`` := 0, 5. the OB65 programs run (in every basic
+clock, whether a DB was updated in it or not).
+
+Which DBs a basic clock updates is the per-DB reduction ratio and offset of Technology Objects Management
+(§7.11, :meth:`TechnologyDevice.set_db_update`): basic clock k (0, 1, 2, ... since the start) updates DB n when
+k mod reduction = offset; the default 1 / 0 updates every DB in every clock.  The MCDevice DB is updated in
+every basic clock (decision E-D6).  A change made while the controller runs waits for its next start
+(``MCDevice.Statusword.RequestStartUp`` until then, §7.10).
 
 ``DoneFlag[1..32]`` of the MCDevice DB toggles when a command started with that ``DoneFlag`` completes
 (§6.9.2); it is set in the DB update that follows the completion, the first moment a program can see it.
-A DB update never overruns in virtual time, so ``TODBTaskOverflows`` stays 0; there is no command
-processing time to measure either (``MaxLoopDuration`` and ``CmdLoopDuration`` stay 0.0).
+
+Command processing and overflows in virtual time (decision E-D7): a command an instruction starts is carried
+out by the IPO cycle that follows the program's call; ``CmdLoopDuration`` is the mean and ``MaxLoopDuration`` the
+longest virtual time from a command's start to that IPO cycle [s] - one IPO cycle in plcmotion, since the
+programs run between IPO cycles - and both are 0.0 until the first command after the start or an MC_Reset of the
+MCDevice DB.  A DB update never overruns in virtual time; :meth:`TechnologyDevice.inject_update_overflow`
+makes the next basic clocks overflow as on an overloaded CPU: their update is discarded (no DB written, no OB65)
+and ``TODBTaskOverflows`` counts them (§7.10, §7.11).
 """
 from __future__ import annotations
 
@@ -23,7 +36,7 @@ import numpy as np
 
 from ...kernel.errors import ConfigurationError
 from ...kernel.schema import Issue
-from .tdb import Array, AxisDB, MCDeviceDB, TechnologyDB
+from .tdb import Array, AxisDB, MCDeviceDB, MCDeviceStatusword, TechnologyDB
 
 #: number of the MCDevice DB (Technology Objects Management creates it with the first technology object)
 MCDEVICE_DB = 1
@@ -70,6 +83,15 @@ class TechnologyDevice:
         self._done_flags = [False] * 32
         self._watches: list[_DoneWatch] = []
         self.updates = 0                            # DB updates since the controller started
+        self._clock = 0                             # basic clocks since the start (§7.11)
+        #: DB number -> (reduction, offset) in effect, and the ones set for the next start
+        self._schedule: dict[int, tuple[int, int]] = {}
+        self._requested: dict[int, tuple[int, int]] = {}
+        self._overflows_to_come = 0
+        self._overflows = 0
+        self._loops = 0                             # commands since the start or MC_Reset of the MCDevice DB
+        self._loop_sum = 0.0
+        self._loop_max = 0.0
         #: called with the reason at the end of :meth:`reinitialize` ("startup", "power")
         self.on_reinitialize: list[Callable[[str], None]] = []
         ctl.on_post_servo(self._on_ipo)
@@ -130,6 +152,60 @@ class TechnologyDevice:
         """The technology object of DB ``number`` (None for the MCDevice DB and numbers that are no TDB)."""
         return self._objects.get(number) if isinstance(number, int) and not isinstance(number, bool) else None
 
+    # --- the update of each DB: reduction ratio and offset (§7.11) ------------------------------------
+    def set_db_update(self, number: Any, reduction: Any = 1, offset: Any = 0) -> None:
+        """Technology Objects Management, expert mode: technology DB ``number`` is updated in every
+        ``reduction``-th basic clock, in the clocks k with k mod reduction = ``offset``.  Before the controller
+        has run it takes effect at once; later at the next start (``MCDevice.Statusword.RequestStartUp``)."""
+        db = self.db(number)
+        if db is None or db is self.mcdevice:
+            raise ValueError(f"set_db_update: {number!r} is no technology DB of a technology object "
+                             f"(the MCDevice DB DB{MCDEVICE_DB} is updated in every basic clock)")
+        for name, value, lo, hi in (("reduction", reduction, 1, 1000), ("offset", offset, 0, 999)):
+            if isinstance(value, bool) or not isinstance(value, numbers.Integral) or not lo <= value <= hi:
+                raise ValueError(f"set_db_update: {name} must be a whole number in [{lo}, {hi}], got {value!r}")
+        if offset >= reduction:
+            raise ValueError(f"set_db_update: offset must be below the reduction ({reduction}), got {offset!r}")
+        entry = (int(reduction), int(offset))
+        if self._clock == 0 and self.ctl.time == 0.0:
+            self._set_schedule(number, entry)
+            return
+        self._requested[number] = entry
+        self._request_startup()
+
+    def db_update(self, number: int) -> tuple[int, int]:
+        """(reduction, offset) in effect for technology DB ``number``."""
+        return self._schedule.get(number, (1, 0))
+
+    def _set_schedule(self, number: int, entry: tuple[int, int]) -> None:
+        if entry == (1, 0):
+            self._schedule.pop(number, None)
+        else:
+            self._schedule[number] = entry
+
+    def _request_startup(self) -> None:
+        pending = any(self._requested[n] != self.db_update(n) for n in self._requested)
+        self.mcdevice._write(Statusword=MCDeviceStatusword(int(pending) << 2))
+
+    def _due(self, db: TechnologyDB, clock: int) -> bool:
+        reduction, offset = self._schedule.get(db.number, (1, 0))
+        return clock % reduction == offset
+
+    # --- command processing and overflows in virtual time (§5.4, §7.10) ----------------------------------
+    def note_command(self) -> None:
+        """An instruction started a command: it is carried out in the next IPO cycle."""
+        duration = self.ctl.servo_cycle
+        self._loops += 1
+        self._loop_sum += duration
+        self._loop_max = max(self._loop_max, duration)
+
+    def inject_update_overflow(self, count: Any = 1) -> None:
+        """Fault injection (virtual commissioning): the DB updates of the next ``count`` basic clocks overflow -
+        they are discarded, OB65 is not called, ``TODBTaskOverflows`` counts them (§7.11)."""
+        if isinstance(count, bool) or not isinstance(count, numbers.Integral) or not 1 <= count <= 1_000_000:
+            raise ValueError(f"inject_update_overflow: count must be a whole number in [1, 1000000], got {count!r}")
+        self._overflows_to_come += int(count)
+
     # --- OB65 -------------------------------------------------------------------------------------------
     def ob65(self, fn: Callable[[], Any] | None = None, *, name: str | None = None):
         """Register a program that runs after every DB update (OB65, technology synchronization interrupt;
@@ -163,19 +239,32 @@ class TechnologyDevice:
             self.update()
 
     def update(self) -> None:
-        """One DB update in the order of §7.11, then OB65."""
+        """The DB update of one basic clock in the order of §7.11, then OB65."""
         ctl = self.ctl
-        dbs = list(self._dbs.values())              # the MCDevice DB first
+        clock = self._clock
+        self._clock += 1
+        if self._overflows_to_come:
+            self._overflows_to_come -= 1            # discarded: no DB written, no OB65 (§7.11)
+            self._overflows = min(self._overflows + 1, 0xFFFF_FFFF)
+            return
+        schedule = self._schedule
+        if schedule:
+            dbs = [db for db in self._dbs.values() if db is self.mcdevice or self._due(db, clock)]
+            axis_dbs = [db for db in self._axis_dbs if self._due(db, clock)]
+            rows = np.array([db._axis.index for db in axis_dbs], dtype=np.intp)
+        else:
+            dbs = list(self._dbs.values())          # the MCDevice DB first
+            axis_dbs, rows = self._axis_dbs, self._rows
         for db in dbs:
             db._write(UpdateFlag=UPDATE_ACTIVE)
         if self._watches:
             self._toggle_done_flags()
         self._write_mcdevice()
-        if self._axis_dbs:
-            b, rows, t = ctl.bank, self._rows, ctl.time
+        if axis_dbs:
+            b, t = ctl.bank, ctl.time
             columns = (b.sp_p[rows].tolist(), b.sp_v[rows].tolist(), b.sp_a[rows].tolist(), b.act_p[rows].tolist(),
                        b.act_v[rows].tolist(), b.fe[rows].tolist(), b.standstill[rows].tolist())
-            for db, values in zip(self._axis_dbs, zip(*columns)):
+            for db, values in zip(axis_dbs, zip(*columns)):
                 db.update(t, *values)
         for db in dbs:
             db._write(UpdateCounter=(db.UpdateCounter + 1) & 0xFFFF, UpdateFlag=0)
@@ -193,7 +282,9 @@ class TechnologyDevice:
 
     def _write_mcdevice(self) -> None:
         ins, outs = self.ctl.inputs, self.ctl.outputs
-        self.mcdevice._write(DoneFlag=Array(1, list(self._done_flags)),
+        loops = self._loops
+        self.mcdevice._write(MaxLoopDuration=self._loop_max, CmdLoopDuration=self._loop_sum / loops if loops else 0.0,
+                             TODBTaskOverflows=self._overflows, DoneFlag=Array(1, list(self._done_flags)),
                              DIStatus=Array(0, [ins[a] for a in INTEGRATED_INPUTS]),
                              DOStatus=Array(0, [outs[a] for a in INTEGRATED_OUTPUTS]))
 
@@ -201,9 +292,13 @@ class TechnologyDevice:
     def reset_mcdevice(self) -> None:
         """MC_Reset with the MCDevice DB (§6.7.1, §7.10): MaxLoopDuration and TODBTaskOverflows to 0; its
         ErrorBuffer is cleared, its ErrorID cannot be acknowledged (§5.11)."""
-        self.mcdevice._write(MaxLoopDuration=0.0, TODBTaskOverflows=0)
+        self._reset_loops()
+        self.mcdevice._write(MaxLoopDuration=0.0, CmdLoopDuration=0.0, TODBTaskOverflows=0)
         errors = self.mcdevice._errors
         errors.buffer.clear()
+
+    def _reset_loops(self) -> None:
+        self._loops, self._loop_sum, self._loop_max, self._overflows = 0, 0.0, 0.0, 0
 
     def reinitialize(self, reason: str) -> None:
         """CPU STOP -> RUN or POWER OFF -> ON: technology DBs are not retentive (§7), the DoneFlags and the
@@ -211,6 +306,12 @@ class TechnologyDevice:
         self._watches.clear()
         self._done_flags = [False] * 32
         self._ipo = 0
+        self._clock = 0
+        self._reset_loops()
+        for number, entry in self._requested.items():       # changed schedules take effect at a start
+            self._set_schedule(number, entry)
+        self._requested.clear()
+        self.mcdevice._write(Statusword=MCDeviceStatusword(0))
         self.mcdevice._write(MaxLoopDuration=0.0, CmdLoopDuration=0.0, TODBTaskOverflows=0,
                              DoneFlag=Array(1, [False] * 32))
         for hook in tuple(self.on_reinitialize):

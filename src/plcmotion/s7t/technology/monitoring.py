@@ -69,6 +69,43 @@ REACTIONS: dict[int, Reaction | None] = {
 }
 
 
+#: §4.5.7.2 safety range of the hardware limit switches: 1000 / (increments per position unit).  The internal
+#: resolution is a setting of the axis wizard that the parameter list of §9.4 does not carry; plcmotion takes
+#: the manual's example, 1000 increments per unit, so the range is 1 length unit (docs/s7t decision E-D3)
+INTERNAL_RESOLUTION = 1000.0
+HW_LIMIT_SAFETY_RANGE = 1000.0 / INTERNAL_RESOLUTION
+
+
+class HwLimitRetraction:
+    """§4.5.7.2 "retraction": where the axis met a hardware limit switch (8013) and whether it has left it.
+
+    MC_Reset acknowledges the error reaction at once (the axis can be enabled and driven back), but the
+    technology DB keeps ErrorID, ErrorBuffer and ErrorStatus.LimitSwitchActive until the axis has passed
+    the saved position plus the safety range towards the permitted range; a later MC_Reset clears them.
+    Positions are the machine's (``drive.mechanical_position``), so a homing in between does not move them.
+    """
+
+    __slots__ = ("side", "position")
+
+    def __init__(self, side: str, position: float):
+        self.side, self.position = side, position
+
+    def left(self, position: float) -> bool:
+        """The axis at ``position`` is out of the switch's range (§4.5.7.2)."""
+        if self.side == "max":
+            return position < self.position - HW_LIMIT_SAFETY_RANGE
+        return position > self.position + HW_LIMIT_SAFETY_RANGE
+
+
+def hw_limit_side(fault: Fault) -> str | None:
+    """"min"/"max" for the fault of a hardware limit switch just reached (8013), else None."""
+    if fault.kind == F.HW_LIMIT_MIN:
+        return "min"
+    if fault.kind == F.HW_LIMIT_MAX:
+        return "max"
+    return None
+
+
 #: §4.5.7.3 check box "monitoring of the software limit switches at start of motion" (no expert-list name in
 #: the manual: a family tag; off unless configured)
 SW_LIMIT_AT_START = "Wizard.SWLimitMonitoringAtStart"
@@ -89,5 +126,5 @@ def tdb_errors(fault: Fault) -> list[tuple[int, int | None]]:
     return [tdb_error(fault)]
 
 
-__all__ = ["tdb_errors", "note_sw_limit_at_start", "SW_LIMIT_AT_START", "SW_LIMIT_WARNING", "REACTIONS", "FOLLOWING_WARNING", "FOLLOWING_WARNING_ENTRY", "HW_LIMIT_SWITCH", "SW_LIMIT_REACHED", "SW_LIMIT_OVERSHOT", "FOLLOWING_ERROR",
+__all__ = ["HwLimitRetraction", "hw_limit_side", "HW_LIMIT_SAFETY_RANGE", "INTERNAL_RESOLUTION", "tdb_errors", "note_sw_limit_at_start", "SW_LIMIT_AT_START", "SW_LIMIT_WARNING", "REACTIONS", "FOLLOWING_WARNING", "FOLLOWING_WARNING_ENTRY", "HW_LIMIT_SWITCH", "SW_LIMIT_REACHED", "SW_LIMIT_OVERSHOT", "FOLLOWING_ERROR",
            "STANDSTILL", "POSITIONING", "REFERENCE_NOT_FOUND", "LIMIT_SWITCH_COMMAND"]

@@ -30,7 +30,7 @@ from typing import TYPE_CHECKING, Any
 from ...kernel import axis_status as S
 from ...kernel.jobs import JobKind
 from ...kernel.tag_views import TagAccessError
-from . import activation
+from . import activation, coordinates
 from . import datasets as D
 from .encoders import ABSOLUTE, CYCLIC_ABSOLUTE, encoder_type
 from .parameters import (ILLEGAL_PARAMETER, INVALID_NUMBER, READ_ONLY, RESTART_REQUIRED, Parameter, parameter)
@@ -106,11 +106,10 @@ def _hw_state(ax: "AxisT", side: str) -> int:
 
 
 def _superimposed(ax: "AxisT") -> tuple[float, float]:
-    sup = getattr(ax, "superimposed", None)
-    if sup is None or not sup.active:
+    """The superimposing coordinate system (technology.coordinates); a speed axis has none."""
+    if getattr(ax, "superimposed", None) is None or not ax.positioning:
         return 0.0, 0.0
-    p, v, _ = sup.state_at(ax.now)
-    return float(p), float(v)
+    return coordinates.superimposed_state(ax)
 
 
 _SYSTEM: dict[int, Any] = {

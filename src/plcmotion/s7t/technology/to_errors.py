@@ -14,6 +14,7 @@ from __future__ import annotations
 
 from ...kernel import faults as F
 from ...kernel.faults import Fault
+from .tdb_error_texts import TEXTS
 
 # --- ErrorIDs of the axis technology DB (§7.12.1) used by this package ----------------------------------
 INTERNAL = 0x8002
@@ -107,6 +108,22 @@ def describe_fault(fault: Fault) -> str:
     return f"technology DB {kind} 16#{error_id:04X} ({fault})"
 
 
+def error_view(to: object) -> list[str]:
+    """What a summary (``plcmotion run``) shows for a technology object: the error channel of its technology
+    DB - ErrorID with its message and the ErrorBuffer - which holds errors and warnings that need no kernel
+    alarm (an "abort error" of a command, 8017, a kept 8013 after MC_Reset); without an entry there, the
+    object's alarms."""
+    record = getattr(to, "errors", None)
+    if isinstance(record, ErrorRecord) and record.error_id:
+        code = record.error_id
+        kind = "warning" if is_warning(code) else "error"
+        text = TEXTS.get(code)
+        message = f' "{text.message}"' if text is not None else ""
+        buffer = ", ".join(f"16#{c:04X}" for c in record.buffer)
+        return [f"technology DB {kind} 16#{code:04X}{message} (ErrorBuffer {buffer})"]
+    return [f"{describe_fault(a)} [{a}]" for a in getattr(to, "alarms", ())]
+
+
 def is_warning(error_id: int) -> bool:
     """Warnings are 00xx, errors 8xxx (§5.12)."""
     return error_id < 0x8000
@@ -142,4 +159,4 @@ class ErrorRecord:
         return self.buffer + [0] * (3 - len(self.buffer))
 
 
-__all__ = ["ErrorRecord", "tdb_error", "describe_fault", "is_warning", "ERROR_STATUS_BITS"]
+__all__ = ["ErrorRecord", "tdb_error", "describe_fault", "error_view", "is_warning", "ERROR_STATUS_BITS"]

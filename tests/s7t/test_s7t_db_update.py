@@ -4,7 +4,7 @@ durations of the MCDevice DB (S7-Technology V4.1 §5.4, §7.10, §7.11).
 Basic clock = the DB update cycle (here 2 IPO cycles of 1 ms).  A DB with reduction r and offset o is updated
 in the basic clocks k (0, 1, 2, ... since the start) with k mod r = o; the MCDevice DB and OB65 in every
 basic clock.  Loop durations in plcmotion: the virtual time from a command's start in a program to the IPO
-cycle that carries it out - one IPO cycle (decision E-D7).
+cycle that carries it out - one IPO cycle (decision D89).
 """
 from __future__ import annotations
 

@@ -71,7 +71,7 @@ def test_s7t_stop_program_ends_at_the_software_limit_switch():
     """S7-Technology V4.1 §4.5.7.3 (the software limit switches limit the traversing range "in all operating
     modes") with §6.2.1 StopMode 2 (TimeStop, 2 s): disabled at 90 while moving at 50, the ramp of the stop
     time would end at 90 + 50 · 2 / 2 = 140; the axis stops at the switch (100) instead and 8014 is in its
-    technology DB (decision E-D5: a stop program is a motion of the axis)."""
+    technology DB (decision D87: a stop program is a motion of the axis)."""
     highest, r = _stopped_near_the_switch(2, 2.0, 50.0, 90.0)
     assert highest == pytest.approx(100.0, abs=1e-6)
     assert r.axis.db.ErrorID == 0x8014 and r.axis.db.ErrorStatus.SoftwareLimitPos

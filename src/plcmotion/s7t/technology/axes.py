@@ -340,7 +340,7 @@ class AxisT(LayeredAxis):
         p, v, a = self._state_now()
         self._after_stop = "disable"
         if stop_mode in (FAST_STOP, TIME_STOP):
-            # the ramp of the program, kept inside active software limit switches (docs/s7t decision E-D5)
+            # the ramp of the program, kept inside active software limit switches (docs/s7t decision D87)
             ramp = self.motion.stop_with(t, p, v, a, self._max_dynamics()) if stop_mode == FAST_STOP else \
                 self.motion.ramp_out(t, p, v, self.cfg["userdefaultdynamics.stoptime"]).profile
             plan = self.motion.guard_stop(t, p, v, a, ramp)

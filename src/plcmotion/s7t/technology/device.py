@@ -13,13 +13,13 @@ clock, whether a DB was updated in it or not).
 Which DBs a basic clock updates is the per-DB reduction ratio and offset of Technology Objects Management
 (§7.11, :meth:`TechnologyDevice.set_db_update`): basic clock k (0, 1, 2, ... since the start) updates DB n when
 k mod reduction = offset; the default 1 / 0 updates every DB in every clock.  The MCDevice DB is updated in
-every basic clock (decision E-D6).  A change made while the controller runs waits for its next start
+every basic clock (decision D88).  A change made while the controller runs waits for its next start
 (``MCDevice.Statusword.RequestStartUp`` until then, §7.10).
 
 ``DoneFlag[1..32]`` of the MCDevice DB toggles when a command started with that ``DoneFlag`` completes
 (§6.9.2); it is set in the DB update that follows the completion, the first moment a program can see it.
 
-Command processing and overflows in virtual time (decision E-D7): a command an instruction starts is carried
+Command processing and overflows in virtual time (decision D89): a command an instruction starts is carried
 out by the IPO cycle that follows the program's call; ``CmdLoopDuration`` is the mean and ``MaxLoopDuration`` the
 longest virtual time from a command's start to that IPO cycle [s] - one IPO cycle in plcmotion, since the
 programs run between IPO cycles - and both are 0.0 until the first command after the start or an MC_Reset of the

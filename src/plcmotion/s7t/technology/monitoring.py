@@ -71,7 +71,7 @@ REACTIONS: dict[int, Reaction | None] = {
 
 #: §4.5.7.2 safety range of the hardware limit switches: 1000 / (increments per position unit).  The internal
 #: resolution is a setting of the axis wizard that the parameter list of §9.4 does not carry; plcmotion takes
-#: the manual's example, 1000 increments per unit, so the range is 1 length unit (docs/s7t decision E-D3)
+#: the manual's example, 1000 increments per unit, so the range is 1 length unit (docs/s7t decision D85)
 INTERNAL_RESOLUTION = 1000.0
 HW_LIMIT_SAFETY_RANGE = 1000.0 / INTERNAL_RESOLUTION
 

@@ -64,6 +64,9 @@ class DriveAxis(PositioningAxis):
         self.job_start = _JobStart(self)
         self.core = MotionCore(self)
         self.referencing: Referencing = self.homing      # type: ignore[assignment]
+        ls = self.limit_switches                          # its inputs are fixed when the axis is created
+        self._wired_inputs = bool(ls.range_check or ls.inputs["min"] or ls.inputs["max"]
+                                  or self.drive_io.ready_input)
         if self not in ctl._input_axes:
             ctl._input_axes.append(self)                 # the motion core runs every cycle
 
@@ -117,10 +120,10 @@ class DriveAxis(PositioningAxis):
         """The kernel's inputs have something to watch this cycle (the axis is listed for its motion core in
         any case): wired switches, a drive-ready input, the actual value range, a switch still approached,
         a running active or passive homing.  Without them the kernel's check is a no-op."""
-        ls = self.limit_switches
-        if ls.range_check or ls.inputs["min"] or ls.inputs["max"] or self.drive_io.ready_input:
+        if self._wired_inputs:
             return True
-        if ls.approached["min"] or ls.approached["max"] or self.homing.passive is not None:
+        approached = self.limit_switches.approached
+        if approached["min"] or approached["max"] or self.homing.passive is not None:
             return True
         job = self.job
         return job is not None and job.kind == JobKind.HOME_ACTIVE

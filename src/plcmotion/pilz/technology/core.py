@@ -257,14 +257,14 @@ class MotionCore:
         s = self.status
         b, i = ax.ctl.bank, ax.index
         prof = ax.profile
-        follow = b.follow_act[i]
+        follow = b.follow_act.item(i)
         if t >= prof.t_end - _EPS and not follow:
             p, v, _a = prof.segments[-1].at(t)    # the profile's end state, without rounding of the segment before
         else:
             p, v, _a = prof.at(t)                 # the setpoint now (t is the controller's time)
             if follow:
-                p = float(b.act_p[i])
-        act_v = float(b.act_v[i])
+                p = b.act_p.item(i)
+        act_v = b.act_v.item(i)
         s.I86 = bool(ax.homed)
         s.I88 = act_v
         s.I96 = p
@@ -305,7 +305,7 @@ class MotionCore:
             return
         n = cmd.number
         if n in C.POSITIONING:
-            self._positioning(cmd, t, p, v, act_v, float(b.act_p[i]), e)
+            self._positioning(cmd, t, p, v, act_v, b.act_p.item(i), e)
         elif n in C.VELOCITY:
             self._velocity(cmd, t, v, act_v)
         elif n in C.STOPPING:

@@ -119,11 +119,13 @@ class DriveAxis(PositioningAxis):
     def _kernel_inputs(self) -> bool:
         """The kernel's inputs have something to watch this cycle (the axis is listed for its motion core in
         any case): wired switches, a drive-ready input, the actual value range, a switch still approached,
-        a running active or passive homing.  Without them the kernel's check is a no-op."""
+        a running active or passive homing, the torque limit of a torque-stop referencing.  Without them the kernel's check is a no-op."""
         if self._wired_inputs:
             return True
         approached = self.limit_switches.approached
         if approached["min"] or approached["max"] or self.homing.passive is not None:
+            return True
+        if self.referencing.torque_job is not None:
             return True
         job = self.job
         return job is not None and job.kind == JobKind.HOME_ACTIVE

@@ -3,11 +3,10 @@ command page shows its script verbatim with the plot that script drew, and the i
 V6.5 §1.1 ... §1.12).  tools/gen_pilz_plots.py renews the plots and the pages' copies of the scripts."""
 from __future__ import annotations
 
-import importlib.util
 import re
 import runpy
-import sys
 from pathlib import Path
+from types import SimpleNamespace
 
 import pytest
 
@@ -33,15 +32,9 @@ def test_pilz_docs_a_page_and_an_example_per_command():
         assert f"(commands/{name}.md)" in index
 
 
-def _tool():
-    spec = importlib.util.spec_from_file_location("gen_pilz_plots", ROOT / "tools" / "gen_pilz_plots.py")
-    tool = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = tool
-    try:
-        spec.loader.exec_module(tool)
-    finally:
-        del sys.modules[spec.name]
-    return tool
+def _tool() -> SimpleNamespace:
+    """tools/gen_pilz_plots.py's functions (run as a module, not as the script)."""
+    return SimpleNamespace(**runpy.run_path(str(ROOT / "tools" / "gen_pilz_plots.py"), run_name="gen_pilz_plots"))
 
 
 @pytest.mark.parametrize("script", [*SCRIPTS, ROOT / "examples" / "pilz_drive.py"], ids=lambda p: p.stem)

@@ -134,3 +134,42 @@ def test_pilz_cyclic_move_velocity_continuous_update():
         ax.registers.I404 = 80.0
         ctl.run(0.3)
         assert ax.status.E07 == expected
+
+
+@pytest.mark.parametrize("plant_inertia,feed,friction", [(2.0e-3, 10.0, 0.0), (5.0e-4, 4.0, 0.0),
+                                                         (2.0e-3, 10.0, 2.0e-3)])
+def test_pilz_cyclic_torque_control_on_the_drive_models_inertia(plant_inertia, feed, friction):
+    """Pilz V6.5 §1.10.5: the set torque E02 drives the load.  Without a load model of its own (Drive.Inertia
+    unset) the load is the simulated drive's: J = Plant.Inertia [kg m²] at the motor shaft, 2 pi / feed rad
+    per unit, so torque T gives the load acceleration a = (T - friction x v) / (J x 2 pi / feed); and the
+    drive's speed loop then asks for that same torque (axis.drive.torque, on average over its setpoint steps)."""
+    import math
+
+    ctl, ax = make_axis({"Plant.Inertia": plant_inertia, "Drive.FeedPerRevolution": feed, "Drive.Friction": friction,
+                         "E65": 10.0, "E66": 10.0})
+    torque = 0.05
+    _feed(ctl, ax, I428=torque)
+    t0 = start(ax, 9, I428=torque)
+    j = plant_inertia * 2.0 * math.pi / feed                      # torque per unit/s² of load acceleration
+    ctl.run(0.2)
+    t = ctl.time - t0
+    # v' = (T - c v) / j  ->  v(t) = T / c (1 - exp(-c t / j)), or T t / j without friction
+    expected = torque * t / j if friction == 0.0 else torque / friction * (1.0 - math.exp(-friction * t / j))
+    assert ax.status.E02 == torque and not ax.status.I194
+    assert ax.status.E07 == pytest.approx(expected, rel=0.02)
+    if friction == 0.0:
+        demand = []
+        for _ in range(200):
+            ctl.step()
+            demand.append(ax.drive.torque)
+        assert sum(demand) / len(demand) == pytest.approx(torque, rel=0.05)
+
+
+def test_pilz_cyclic_torque_control_own_load_model_wins():
+    """Pilz V6.5 §1.10.5: a load model of its own (Drive.Inertia) replaces the drive's inertia: 1.0 / 0.5 =
+    2 unit/s² whatever Plant.Inertia says."""
+    ctl, ax = make_axis({"Drive.Inertia": 0.5, "Plant.Inertia": 1.0})
+    _feed(ctl, ax, I428=1.0)
+    t0 = start(ax, 9, I428=1.0)
+    ctl.run(0.5)
+    assert ax.status.E07 == pytest.approx(2.0 * (ctl.time - t0), abs=0.01)

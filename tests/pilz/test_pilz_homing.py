@@ -134,3 +134,45 @@ def test_pilz_homing_torque_stop(params, point):
     offset = float(ctl.bank.act_p[ax.index]) - ax.drive.mechanical_position()
     assert offset == pytest.approx(I34 - point, abs=0.02)
     assert all(METHODS[c].feature is Feature.TORQUE_STOP for c in "PQRS")
+
+
+def test_pilz_homing_torque_stop_presses_with_the_torque_limit():
+    """Pilz V6.5 Tab. 21 I28 / I29, Tab. 22 P: at the end stop the drive's torque rises to the limit I28 and
+    stays there; the reference is set after I29 at the limit, not before; afterwards the limit is gone (a move
+    may use more torque than I28 again).  I28 lies above the torque of the search acceleration (I39 = 2000
+    unit/s² x 1e-3 kg m² x 2 pi / 10 unit = 1.26)."""
+    limit = 2.0
+    ctl, ax = make_axis({**BASE, "A586": -1, "Drive.EndStopPositive": 30.0, "I28": limit, "I29": 0.1,
+                         "I11": 10000.0}, referenced=False)
+    t0 = start(ax, 6)
+    at_limit = []                                      # times the drive pushed with the limit torque
+    referenced = None
+    while not (ax.status.I92 or ax.status.I91) and ctl.time < t0 + 5.0:
+        ctl.step()
+        if referenced is None and ax.status.I86:
+            referenced = ctl.time
+        if referenced is None and ax.drive.torque_limit_active:
+            assert ax.drive.torque == pytest.approx(limit)
+            at_limit.append(ctl.time)
+    assert ax.status.I92 and referenced is not None
+    assert at_limit and ax.drive.mechanical_position() == pytest.approx(30.0)
+    assert referenced - at_limit[0] >= 0.1 - 1e-9
+    # the limit has gone: 5000 unit/s² asks for 5000 x 1e-3 x 2 pi / 10 = 3.1 > I28 without being held back
+    start(ax, 2, I403=-20.0, I404=500.0, I405=5000.0, I406=5000.0, I407=1e7)
+    peak = 0.0
+    while not ax.status.I92 and ctl.time < t0 + 10.0:
+        ctl.step()
+        assert not ax.drive.torque_limit_active
+        peak = max(peak, abs(ax.drive.torque))
+    assert ax.status.I92 and peak > limit
+
+
+def test_pilz_homing_torque_stop_needs_the_limit_reached():
+    """Pilz V6.5 Tab. 21 I28: a torque limit the drive cannot reach at the stop (the speed loop asks for less)
+    sets no reference: the axis keeps pressing, MC_Home stays in homing (I89 = 8)."""
+    ctl, ax = make_axis({**BASE, "A586": -1, "Drive.EndStopPositive": 30.0, "I28": 1e9, "I29": 0.1},
+                        referenced=False)
+    t0 = start(ax, 6)
+    ctl.run(3.0)
+    assert ax.drive.mechanical_position() == pytest.approx(30.0)
+    assert not ax.status.I92 and not ax.status.I86 and ax.status.I89 == 8 and ctl.time > t0 + 2.5

@@ -13,10 +13,11 @@ See docs/pilz/index.md.
 from .motion import (INPUT_REFUSED, NOT_A_DRIVE_AXIS, MC_CyclicPosition, MC_CyclicSpeed, MC_Halt, MC_Home,
                      MC_MoveAbsolute, MC_MoveAdditive, MC_MoveRelative, MC_MoveSpeed, MC_MoveVelocity, MC_Stop,
                      MC_TorqueControl, MotionCommand)
+from .signals import trace_signals
 from .technology import PILZ, Cause, DriveAxis
 from .technology.registers import CommandRegister, RegisterError, StatusWords
 
 __all__ = ["Cause", "CommandRegister", "DriveAxis", "INPUT_REFUSED", "MC_CyclicPosition", "MC_CyclicSpeed",
            "MC_Halt", "MC_Home", "MC_MoveAbsolute", "MC_MoveAdditive", "MC_MoveRelative", "MC_MoveSpeed",
            "MC_MoveVelocity", "MC_Stop", "MC_TorqueControl", "MotionCommand", "NOT_A_DRIVE_AXIS", "PILZ",
-           "RegisterError", "StatusWords"]
+           "RegisterError", "StatusWords", "trace_signals"]

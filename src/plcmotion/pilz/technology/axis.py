@@ -14,7 +14,7 @@ from ...kernel import faults as F
 from ...kernel.axis import PositioningAxis
 from ...kernel.faults import Fault, Reaction
 from ...kernel.job_start import JobStart
-from ...kernel.jobs import Job, JobState
+from ...kernel.jobs import Job, JobKind, JobState
 from . import registers as R
 from .core import MotionCore
 from .parameters import PILZ_AXIS
@@ -64,6 +64,9 @@ class DriveAxis(PositioningAxis):
         self.job_start = _JobStart(self)
         self.core = MotionCore(self)
         self.referencing: Referencing = self.homing      # type: ignore[assignment]
+        ls = self.limit_switches                          # its inputs are fixed when the axis is created
+        self._wired_inputs = bool(ls.range_check or ls.inputs["min"] or ls.inputs["max"]
+                                  or self.drive_io.ready_input)
         if self not in ctl._input_axes:
             ctl._input_axes.append(self)                 # the motion core runs every cycle
 
@@ -109,9 +112,23 @@ class DriveAxis(PositioningAxis):
             core.reset()
 
     def _check_inputs(self, t: float) -> None:
-        if not self.sim:
+        if not self.sim and self._kernel_inputs():
             super()._check_inputs(t)
         self.core.cycle(t)
+
+    def _kernel_inputs(self) -> bool:
+        """The kernel's inputs have something to watch this cycle (the axis is listed for its motion core in
+        any case): wired switches, a drive-ready input, the actual value range, a switch still approached,
+        a running active or passive homing, the torque limit of a torque-stop referencing.  Without them the kernel's check is a no-op."""
+        if self._wired_inputs:
+            return True
+        approached = self.limit_switches.approached
+        if approached["min"] or approached["max"] or self.homing.passive is not None:
+            return True
+        if self.referencing.torque_job is not None:
+            return True
+        job = self.job
+        return job is not None and job.kind == JobKind.HOME_ACTIVE
 
     def commanded_velocity(self, velocity: float) -> float:
         """The velocity override I230 (read every cycle) scales the commanded velocity (§1.2.5)."""

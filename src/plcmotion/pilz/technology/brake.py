@@ -22,7 +22,7 @@ class Brake:
     def __init__(self, core: Any):
         self.core = core
         self.engaged = True                 # a drive starts with its holding brake applied
-        self._due: float | None = None      # when the brake engages (I42 after the end of the command)
+        self.due: float | None = None      # when the brake engages (I42 after the end of the command)
         self._armed_for: C.Command | None = None
         self._output()
 
@@ -38,7 +38,7 @@ class Brake:
 
     def on_start(self, cmd: C.Command) -> None:
         """A command started: the wait time is over; a motion command releases the brake."""
-        self._due = None
+        self.due = None
         if self.controlled and cmd.number not in C.STOPPING and cmd.denied is None and self.engaged:
             self.engaged = False
             self._output()
@@ -49,18 +49,18 @@ class Brake:
             return
         self._armed_for = cmd
         if self.controlled and cmd.number in WITH_BRAKE and cmd.value("I410"):
-            self._due = t + self.core.axis.eff["I42"]
+            self.due = t + self.core.axis.eff["I42"]
 
     def cycle(self, t: float) -> None:
-        if self._due is not None and t >= self._due - 1e-9:
-            self._due = None
+        if self.due is not None and t >= self.due - 1e-9:
+            self.due = None
             if not self.engaged:
                 self.engaged = True
                 self._output()
 
     def disabled(self) -> None:
         """The enable went off: the brake engages (the drive cannot hold the axis any more)."""
-        self._due = None
+        self.due = None
         if self.controlled and not self.engaged:
             self.engaged = True
             self._output()

@@ -24,8 +24,15 @@ _TAG_NAMES = MappingProxyType({
 })
 
 
+def _either(p: Mapping[str, Any], first: str, second: str) -> Any:
+    return p[first] if p[first] is not None else p[second]
+
+
 def drive_spec(p: Mapping[str, Any]) -> DriveSpec:
     feed = p["Drive.FeedPerRevolution"]
+    # the mechanical end stops of the torque/force stop referencing are the drive model's (decisions.md)
+    p = {**p, "Plant.EndStopMinPosition": _either(p, "Plant.EndStopMinPosition", "Drive.EndStopNegative"),
+         "Plant.EndStopMaxPosition": _either(p, "Plant.EndStopMaxPosition", "Drive.EndStopPositive")}
     return DriveSpec(
         actuator=ActuatorKind.SPEED_SERVO, interface=SetpointInterface.NONE,
         reference_speed=p["Drive.MaxSpeed"], max_speed=p["Drive.MaxSpeed"], length_per_revolution=feed,

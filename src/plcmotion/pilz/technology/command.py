@@ -23,7 +23,7 @@ OVERRIDDEN = frozenset({MOVE_ABSOLUTE, MOVE_RELATIVE, MOVE_ADDITIVE, MOVE_VELOCI
 BUFFERABLE = frozenset({MOVE_ABSOLUTE, MOVE_RELATIVE, MOVE_ADDITIVE, MOVE_VELOCITY, MOVE_SPEED})
 
 
-@dataclass(eq=False)
+@dataclass(eq=False, slots=True)
 class Command:
     number: int
     values: dict[str, Any]          # the command register latched at the rising edge of Execute

@@ -125,18 +125,26 @@ class MotionCore:
 
     # --- the cycle --------------------------------------------------------------------------------------
     def cycle(self, t: float) -> None:
-        """One motion-core cycle A150 at time ``t``."""
-        regs = self.registers
-        execute = regs.live["I402"]
+        """One motion-core cycle A150 at time ``t``.
+
+        Runs in every servo cycle of every axis, so it only looks at what can have changed: the edge of
+        I402, the enable, a due brake, a new I230; the status words are computed from this cycle's values."""
+        live = self.registers.live
+        execute = live["I402"]
         edge = execute and not self._execute
         self._execute = execute
-        self._watch_enable(t)
+        enabled = self.axis.state == "enabled"
+        if enabled is not self._enabled:
+            self._watch_enable(t)
         if edge:
             self._start(t)
-        self.brake.cycle(t)
+        if self.brake.due is not None:
+            self.brake.cycle(t)
         cmd = self.command
         if cmd is not None:
-            self._follow_override(cmd)
+            override = live["I230"]
+            if (override if override > 0.0 else 0.0) != self._override:
+                self._follow_override(cmd)
             if cmd.number in C.CYCLIC and cmd.denied is None:
                 self.cyclic.cycle(cmd, t)
         self._update(t)
@@ -249,17 +257,20 @@ class MotionCore:
         s = self.status
         b, i = ax.ctl.bank, ax.index
         prof = ax.profile
-        if t >= prof.t_end - _EPS and not b.follow_act[i]:
-            p, v, _a = prof.final.at(t)           # the profile's end state, without rounding of the segment before
+        follow = b.follow_act.item(i)
+        if t >= prof.t_end - _EPS and not follow:
+            p, v, _a = prof.segments[-1].at(t)    # the profile's end state, without rounding of the segment before
         else:
-            p, v, _a = ax._state_now()
-        act_v = float(b.act_v[i])
+            p, v, _a = prof.at(t)                 # the setpoint now (t is the controller's time)
+            if follow:
+                p = b.act_p.item(i)
+        act_v = b.act_v.item(i)
         s.I86 = bool(ax.homed)
         s.I88 = act_v
         s.I96 = p
         s.E07 = v
-        window = ax.eff["C40"]
-        s.I199 = abs(v) <= _EPS and abs(act_v) <= window
+        e = ax.parameters.effective
+        s.I199 = abs(v) <= _EPS and abs(act_v) <= e["C40"]
         cmd = self.command
         if self.stop_lock and s.I199 and not self.registers.live["I402"] and not self._moving():
             self.stop_lock = False
@@ -294,7 +305,7 @@ class MotionCore:
             return
         n = cmd.number
         if n in C.POSITIONING:
-            self._positioning(cmd, t, p, v, act_v)
+            self._positioning(cmd, t, p, v, act_v, b.act_p.item(i), e)
         elif n in C.VELOCITY:
             self._velocity(cmd, t, v, act_v)
         elif n in C.STOPPING:
@@ -326,7 +337,8 @@ class MotionCore:
         s.I89 = R.ERROR_STOP if self.axis.state == "enabled" else R.DISABLED
         s.I83 = R.I83_ERROR
 
-    def _positioning(self, cmd: C.Command, t: float, p: float, v: float, act_v: float) -> None:
+    def _positioning(self, cmd: C.Command, t: float, p: float, v: float, act_v: float, act_p: float,
+                     e: Any) -> None:
         s = self.status
         ax = self.axis
         job = cmd.job
@@ -339,7 +351,7 @@ class MotionCore:
         finished = ax.profile.t_end <= t + _EPS and (job is not ax.job or not ax._interpolating or end_v)
         # with an end velocity the profile ends where it passes the target (decisions.md, E15)
         s.I85 = finished and (bool(end_v) or abs(p - target) <= 1e-6 * max(1.0, abs(target)))
-        inside = self._in_window(cmd)
+        inside = abs(act_p - target) <= e["I22"] + _EPS         # the window I22 around the target
         s.I180 = inside
         if inside:
             cmd.window_reached = True
@@ -347,14 +359,17 @@ class MotionCore:
                 cmd.window_since = t
         else:
             cmd.window_since = None
-        commanded = min(abs(job.velocity) * self.override / 100.0, ax.eff["I10"])
+        commanded = abs(job.velocity) * self._override / 100.0
+        limit = e["I10"]
+        if commanded > limit:
+            commanded = limit
         if commanded > 0 and abs(v) >= commanded * (1 - 1e-9):
             cmd.speed_reached = True
         s.I183 = (cmd.speed_reached and abs(abs(v) - commanded) <= 1e-9 * max(1.0, commanded)
-                  and abs(act_v - math.copysign(commanded, v)) <= ax.eff["C40"])
+                  and abs(act_v - math.copysign(commanded, v)) <= e["C40"])
         if end_v and s.I85:
             cmd.done = True
-        elif s.I85 and inside and cmd.window_since is not None and t - cmd.window_since >= ax.eff["I87"] - _EPS:
+        elif s.I85 and inside and cmd.window_since is not None and t - cmd.window_since >= e["I87"] - _EPS:
             cmd.done = True
         s.I92 = cmd.done
         s.I89 = R.STANDSTILL if (s.I85 and abs(v) <= _EPS) else cmd.state

@@ -167,13 +167,25 @@ class CyclicSetValues:
             # a set value that is ignored: the speed loop brings the axis to a standstill (§1.10.5)
             acc = -math.copysign(min(e["I11"], abs(v) / dt), v) if abs(v) > _EPS else 0.0
         else:
-            acc = (torque - e["Drive.Friction"] * v) / e["Drive.Inertia"]
+            acc = (torque - e["Drive.Friction"] * v) / self.load_inertia()
         v_next = v + acc * dt
         if abs(v_next) > e["I10"]:                   # the velocity never exceeds I10
             v_next = math.copysign(e["I10"], v_next)
             acc = (v_next - v) / dt
         ax._start_profile(Profile([Segment(t, p, v, acc, 0.0), Segment(t + dt, p + v * dt + acc * dt * dt / 2,
                                                                       v_next, 0.0, 0.0)], t + dt))
+
+    def load_inertia(self) -> float:
+        """Torque per unit/s² of load acceleration: ``Drive.Inertia``, or when unset the inertia the simulated
+        drive's speed loop works against (motor and load at the shaft, ``Plant.Inertia`` [kg m²], times the
+        motor's angular acceleration per unit/s², 2 pi / ``Drive.FeedPerRevolution``) - so the set torque E02
+        and the torque the drive reports (``axis.drive.torque``) are the same quantity."""
+        ax = self.core.axis
+        inertia = ax.eff["Drive.Inertia"]
+        if inertia is not None:
+            return inertia
+        spec = ax.config.drive
+        return spec.plant.inertia * 2.0 * math.pi / spec.length_per_revolution
 
     # --- cyclic takeover of the profile commands -------------------------------------------------------------
     def follow_move_speed(self, cmd: C.Command, job: Job) -> None:

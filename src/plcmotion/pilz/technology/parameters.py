@@ -77,8 +77,9 @@ _PARAMS: list[Param] = [
           doc="load travel per motor revolution [unit]"),
     Param("Drive.EncoderIncrements", INT, 4096, R, (), 1, 1 << 24, 
           doc="encoder lines per revolution (the actual value resolves each into 2^11 counts)"),
-    Param("Drive.Inertia", REAL, 0.01, R, (), 0.0, E12, lo_open=True,
-          doc="MC_TorqueControl load model: torque per unit/s^2 of load acceleration"),
+    Param("Drive.Inertia", REAL, None, R, (), 0.0, E12, lo_open=True, optional=True,
+          doc="MC_TorqueControl load model: torque per unit/s^2 of load acceleration (unset: the simulated "
+              "drive's own, Plant.Inertia x 2 pi / Drive.FeedPerRevolution)"),
     Param("Drive.EndStopNegative", REAL, None, R, (), -E12, E12, optional=True,
           doc="machine position of a mechanical end stop at the negative end (torque/force stop referencing)"),
     Param("Drive.EndStopPositive", REAL, None, R, (), -E12, E12, optional=True,

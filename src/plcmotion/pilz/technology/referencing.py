@@ -15,8 +15,9 @@ path; this subclass runs the Pilz sequence for every method with a search moveme
 Dynamics: I39 (acceleration and deceleration), I44 (jerk), limited to I11 / I16 without setting I190/I191
 (§1.7.3); zero values are no denial (§1.7.2) and mean the maxima.  Setting the reference (method O) is the
 kernel's direct homing.  The torque/force stop methods (P-S) press against the mechanical end stop of the
-simulated machine (``Drive.EndStopNegative`` / ``Drive.EndStopPositive``) and set the reference once the
-torque/force has stayed at the limit I28 for I29 (decisions.md).
+simulated machine (``Drive.EndStopNegative`` / ``Drive.EndStopPositive``, the drive model's end stops) with
+the drive's torque limited to I28 and set the reference once the torque/force has stayed at that limit for I29
+(decisions.md).
 """
 from __future__ import annotations
 
@@ -30,6 +31,9 @@ from .homing_methods import Feature, Method, from_cia402, from_drive_based
 
 class Referencing(Homing):
     """The homing part of a Pilz drive axis (``axis.homing``, also ``axis.referencing``)."""
+
+    #: the torque-stop job that limits the drive's torque to I28 (None: no limit set by referencing)
+    torque_job: Job | None = None
 
     def method(self) -> Method | None:
         """The referencing method the parameters select (A586 if set, else I30/I31/I35); None: inactive."""
@@ -74,6 +78,9 @@ class Referencing(Homing):
         if m.feature is Feature.ZERO_PULSE:
             self._index(job, x["d"], t)
         elif m.feature is Feature.TORQUE_STOP:
+            # the drive pushes against the stop with at most I28; I28 = 0: no limit, the stop is never detected
+            self.axis.drive.set_torque_limit(self.axis.eff["I28"] or None)
+            self.torque_job = job
             self._run(job, "search", x["search"] * self._speed("I32"), t)
         elif self._feature_active(job):
             self._run(job, "brake", 0.0, t)
@@ -118,25 +125,38 @@ class Referencing(Homing):
         a._finish_job(job, JobState.DONE, t)
 
     def _torque_stop(self, job: Job, t: float) -> None:
-        """Methods P - S: press against the mechanical end stop; the torque/force rises to the limit I28 there,
-        and once it has stayed there for I29 the reference is set (or, with zero pulse, at the first zero pulse
-        away from the stop).  The simulated machine's end stop (``Drive.EndStop*``) holds the load where it is."""
+        """Methods P - S: press against the mechanical end stop.  The drive model's end stop holds the load, the
+        setpoint runs on, the speed loop's torque rises to the limit I28; once it has stayed there for I29 the
+        setpoint stops where the load stands and the reference is set there (or, with zero pulse, at the first
+        zero pulse away from the stop)."""
         a = self.axis
         x = job.extra
-        phase = x.get("phase")
-        if phase == "search":
-            d = x["search"]
-            stop = a.eff["Drive.EndStopPositive" if d > 0 else "Drive.EndStopNegative"]
-            mech = a.drive.mechanical_position()
-            if stop is not None and (mech - stop) * d >= 0.0:
-                at = float(a.ctl.bank.act_p[a.index]) + (stop - mech)
+        at_limit = a.drive.torque_limit_active
+        if x.get("phase") == "search":
+            if at_limit:
                 x["phase"], x["since"] = "press", t
-                a._start_profile(Planner.hold(t, at))
-        elif phase == "press" and t - x["since"] >= a.eff["I29"] - 1e-9:
+        elif not at_limit:
+            x["phase"] = "search"                        # the torque/force must stay at the limit
+        elif t - x["since"] >= a.eff["I29"] - 1e-9:
+            a._start_profile(Planner.hold(t, float(a.ctl.bank.act_p[a.index])))
+            self.release_torque()
             if x["method"].zero_pulse:
                 self._index(job, -x["search"], t)
             else:
                 self._reference(job, self._latch_position(), t)
+
+    def release_torque(self) -> None:
+        """The drive's torque limit of the torque-stop search goes (done, cancelled, or the axis took a new
+        command)."""
+        if self.torque_job is not None:
+            self.torque_job = None
+            self.axis.drive.set_torque_limit(None)
+
+    def check_inputs(self, t: float) -> None:
+        job = self.torque_job
+        if job is not None and (job is not self.axis.job or not job.busy):
+            self.release_torque()
+        super().check_inputs(t)
 
     def _active_inputs(self, job: Job, t: float) -> None:
         x = job.extra

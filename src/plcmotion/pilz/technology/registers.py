@@ -137,7 +137,7 @@ class CommandRegister:
         return "CommandRegister(" + ", ".join(f"{k}={v!r}" for k, v in self._values.items()) + ")"
 
 
-@dataclass
+@dataclass(slots=True)
 class StatusWords:
     """What the motion core reports (Pilz V6.5 status tables Tab. 5, 8, 12, 15, 18, 23, 26, 29, 32, 35, 38)."""
 

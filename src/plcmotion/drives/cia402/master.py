@@ -44,6 +44,7 @@ from ..base import DriveChannel, DriveGroup
 from ..spec import DriveSpec
 from .channel import Cia402Channel
 from .drive_core import MotorSpec
+from .homing import switch_plant
 from .link import Cia402Link
 from .profile import Mode
 
@@ -93,6 +94,7 @@ class Cia402Drives(DriveGroup):
         self._wall0: float | None = None
         self._t0 = 0.0
         self.late_cycles = 0              # cycles in which a node's TPDOs did not arrive in time
+        self._what = ""                   # the object an SDO set-up is writing (for its error message)
 
     def _claim_virtual(self) -> None:
         """python-can's virtual bus is one per process: a virtual channel belongs to one controller at a time,
@@ -131,10 +133,11 @@ class Cia402Drives(DriveGroup):
             if self.sim_network is None:
                 self.sim_network = self._connect()
             per_rev = inc or spec.encoder.steps_per_revolution << spec.encoder.fine_bits
+            scale = per_rev / spec.length_per_revolution          # increments per length unit
             motor = MotorSpec(speed_time_constant=spec.plant.speed_time_constant,
-                              initial_position=spec.plant.initial_position / spec.length_per_revolution * per_rev)
+                              initial_position=spec.plant.initial_position * scale,
+                              plant=switch_plant(spec.plant, scale, per_rev))
             sim = SimulatedCia402(link.node_id, eds=link.eds, motor=motor)
-            sim.values[(0x608F, 1)], sim.values[(0x608F, 2)] = per_rev, 1
             sim.connect(self.sim_network)
             self.simulated[link.node_id] = ch.simulated = sim
         self._configure(ch, spec, servo_cycle)
@@ -161,12 +164,8 @@ class Cia402Drives(DriveGroup):
         try:
             node.nmt.send_command(_NMT_PRE_OPERATIONAL)
             sdo = node.sdo
-            what = "0x608F position encoder resolution"
-            if link.increments_per_revolution is not None:
-                sdo[0x608F][1].raw = link.increments_per_revolution
-                sdo[0x608F][2].raw = 1
-            per_rev = sdo[0x608F][1].raw / max(sdo[0x608F][2].raw, 1)
-            ch.q = spec.length_per_revolution / per_rev
+            what = ""
+            what = self._scaling(ch, spec)
             us = int(round(servo_cycle * 1e6))
             value, exp = (us // 100, -4) if us % 1000 else (us // 1000, -3)
             for what, index, sub, v in (
@@ -174,18 +173,8 @@ class Cia402Drives(DriveGroup):
                     ("0x60C2 interpolation time period", 0x60C2, 1, min(value, 255)),
                     ("0x60C2 interpolation time index", 0x60C2, 2, exp),
                     ("0x1017 producer heartbeat time", 0x1017, None, link.heartbeat_ms),
-                    ("0x607E polarity", 0x607E, None, 0xC0 if spec.encoder.inverse_direction else 0),
-                    ("0x6080 max motor speed", 0x6080, None, int(round(spec.max_speed))),
                     ("0x6060 modes of operation", 0x6060, None, int(ch.mode))):
                 (sdo[index] if sub is None else sdo[index][sub]).raw = v
-            ramp = spec.max_velocity / ch.q / spec.off_ramp_time if spec.off_ramp_time > 0 else 2**32 - 1
-            ramp = int(min(ramp, 2**32 - 1))
-            for what, index, v in (("0x6085 quick stop deceleration", 0x6085, ramp),
-                                   ("0x6083 profile acceleration", 0x6083, ramp),
-                                   ("0x6084 profile deceleration", 0x6084, ramp),
-                                   ("0x6081 profile velocity", 0x6081,
-                                    int(min(spec.max_velocity / ch.q, 2**32 - 1)))):
-                sdo[index].raw = v
             target = {Mode.CYCLIC_SYNC_VELOCITY: (0x60FF, 32), Mode.PROFILE_VELOCITY: (0x60FF, 32),
                       Mode.CYCLIC_SYNC_TORQUE: (0x6071, 16)}.get(ch.mode, (0x607A, 32))
             maps = {0x1400: (0x200 + nid, [(0x6040, 16), target, (0x6060, 8)]),
@@ -208,11 +197,51 @@ class Cia402Drives(DriveGroup):
             what = "0x6064 position actual value"
             ch.position = sdo[0x6064].raw
         except (SdoCommunicationError, SdoAbortedError, KeyError) as exc:
+            what = what or self._what
             hint = " (is the drive on the bus, with this node id and bit rate?)" \
                 if isinstance(exc, SdoCommunicationError) else ""
             raise Cia402Error(f"CiA 402 drive node {nid} on {self.interface}/{self.channel}: {what}: {exc}{hint}"
                               ) from None
         ch.off = spec.plant.initial_position - ch.position * ch.q if link.simulate else 0.0
+
+    def _scaling(self, ch: Cia402Channel, spec: DriveSpec) -> str:
+        """SDO: what follows from the axis's mechanics and drive data - the position encoder resolution
+        0x608F (from the link; for a simulated drive from the axis's encoder), polarity 0x607E, max motor
+        speed 0x6080, the quick stop, profile acceleration and deceleration 0x6085/0x6083/0x6084 (the
+        maximum velocity within the off-ramp time) and profile velocity 0x6081 - and the channel's
+        increment ``q`` [length unit per increment].  At set-up and again when the mechanics change at run
+        time (``Cia402Channel.reconfigure``).  Returns "" (the name of the object being written is kept for
+        the error message of a failure)."""
+        sdo, link = ch.remote.sdo, ch.link
+        self._what = "0x608F position encoder resolution"
+        inc = link.increments_per_revolution
+        if inc is None and link.simulate:
+            inc = spec.encoder.steps_per_revolution << spec.encoder.fine_bits
+        if inc is not None:
+            sdo[0x608F][1].raw = inc
+            sdo[0x608F][2].raw = 1
+        per_rev = sdo[0x608F][1].raw / max(sdo[0x608F][2].raw, 1)
+        ch.q = spec.length_per_revolution / per_rev
+        ramp = spec.max_velocity / ch.q / spec.off_ramp_time if spec.off_ramp_time > 0 else 2**32 - 1
+        ramp = int(min(ramp, 2**32 - 1))
+        for self._what, index, v in (
+                ("0x607E polarity", 0x607E, 0xC0 if spec.encoder.inverse_direction else 0),
+                ("0x6080 max motor speed", 0x6080, int(round(spec.max_speed))),
+                ("0x6085 quick stop deceleration", 0x6085, ramp),
+                ("0x6083 profile acceleration", 0x6083, ramp),
+                ("0x6084 profile deceleration", 0x6084, ramp),
+                ("0x6081 profile velocity", 0x6081, int(min(spec.max_velocity / ch.q, 2**32 - 1)))):
+            sdo[index].raw = v
+        return ""
+
+    def rescale(self, ch: Cia402Channel, spec: DriveSpec) -> None:
+        """The axis's mechanics changed at run time: write the scaling again (:meth:`_scaling`).  A node that
+        does not take it is lost to the axis (communication fault), never an exception in the cycle."""
+        try:
+            self._scaling(ch, spec)
+        except (SdoCommunicationError, SdoAbortedError, KeyError) as exc:
+            ch.rescale_error = f"{self._what}: {exc}"
+            ch._report("communication_loss")
 
     # --- bus callbacks (the network's notifier thread) -------------------------------------------------
     def _on_tpdo(self, can_id: int, data: bytearray, timestamp: float) -> None:

@@ -206,7 +206,8 @@ class Cia402Drives(DriveGroup):
 
     def _scaling(self, ch: Cia402Channel, spec: DriveSpec) -> str:
         """SDO: what follows from the axis's mechanics and drive data - the position encoder resolution
-        0x608F (from the link; for a simulated drive from the axis's encoder), polarity 0x607E, max motor
+        0x608F (from the link; for a simulated drive from the axis's encoder) and with it the feed constant
+        0x6092 of the factor group (when the EDS has it), polarity 0x607E, max motor
         speed 0x6080, the quick stop, profile acceleration and deceleration 0x6085/0x6083/0x6084 (the
         maximum velocity within the off-ramp time) and profile velocity 0x6081 - and the channel's
         increment ``q`` [length unit per increment].  At set-up and again when the mechanics change at run
@@ -220,8 +221,13 @@ class Cia402Drives(DriveGroup):
         if inc is not None:
             sdo[0x608F][1].raw = inc
             sdo[0x608F][2].raw = 1
-        per_rev = sdo[0x608F][1].raw / max(sdo[0x608F][2].raw, 1)
-        ch.q = spec.length_per_revolution / per_rev
+        resolution = (sdo[0x608F][1].raw, max(sdo[0x608F][2].raw, 1))
+        if 0x6092 in ch.remote.object_dictionary:
+            # the factor group: a feed constant of one encoder resolution per shaft revolution makes the
+            # drive's position unit the increment (position factor 1), whatever it was set to before
+            self._what = "0x6092 feed constant"
+            sdo[0x6092][1].raw, sdo[0x6092][2].raw = resolution
+        ch.q = spec.length_per_revolution / (resolution[0] / resolution[1])
         ramp = spec.max_velocity / ch.q / spec.off_ramp_time if spec.off_ramp_time > 0 else 2**32 - 1
         ramp = int(min(ramp, 2**32 - 1))
         for self._what, index, v in (

@@ -112,3 +112,18 @@ def test_drives_cia402_home_in_drive_marks_pilz_axis_in_reference():
         assert ctl.bank.act_p[ax.index] - machine == pytest.approx(100.0 - 14.0, abs=1e-5)
     finally:
         ctl.close()
+
+
+def test_drives_cia402_home_in_drive_without_answer(rig):
+    """A drive that does not answer the SDO set-up of the homing run: no exception in the program, no run
+    (``homing`` = "error", the object named in ``homing_error``) and a station failure 16#800C/16#003E
+    (S7-1200 V6 §12.8) once the axis is enabled."""
+    r = rig()
+    r.steps(3)
+    r.sim.silence(True)
+    r.drive.home_in_drive(35)
+    assert r.drive.homing == "error" and r.drive.homing_error.startswith("0x6098 homing method")
+    assert not r.axis.StatusBits.HomingDone
+    r.power.Enable = True
+    r.steps(5)
+    assert (r.power.ErrorID, r.power.ErrorInfo) == (0x800C, 0x003E)

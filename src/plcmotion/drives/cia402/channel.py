@@ -16,6 +16,7 @@ import struct
 from typing import Any, Protocol
 
 import canopen
+from canopen.sdo import SdoAbortedError, SdoCommunicationError
 
 from ..base import DriveChannel, DriveReports
 from ..spec import DriveSpec
@@ -78,6 +79,7 @@ class Cia402Channel(DriveChannel):
         self._pp_pulse = False
         #: drive-based homing (``home_in_drive``): "", "running", "attained", "error"
         self.homing = ""
+        self.homing_error = ""          # why home_in_drive could not start the run ("" none)
         self._homing_started = False
         # supervision
         self.last_heartbeat = 0.0
@@ -257,11 +259,23 @@ class Cia402Channel(DriveChannel):
                                       or not math.isfinite(value)):
                 raise ValueError(f"{name} must be a finite number, got {value!r}")
         sdo = self.remote.sdo
-        sdo[0x6098].raw = method
-        sdo[0x607C].raw = self._clamp32(offset / self.q)
-        for value, obj in ((switch_speed, sdo[0x6099][1]), (zero_speed, sdo[0x6099][2]), (acceleration, sdo[0x609A])):
-            if value is not None:
-                obj.raw = min(self._clamp32(abs(value) / self.q), 2**32 - 1)
+        what = "0x6098 homing method"
+        try:
+            sdo[0x6098].raw = method
+            what = "0x607C home offset"
+            sdo[0x607C].raw = self._clamp32(offset / self.q)
+            for what, value, obj in (("0x6099:1 speed during search for switch", switch_speed, sdo[0x6099][1]),
+                                     ("0x6099:2 speed during search for zero", zero_speed, sdo[0x6099][2]),
+                                     ("0x609A homing acceleration", acceleration, sdo[0x609A])):
+                if value is not None:
+                    obj.raw = min(self._clamp32(abs(value) / self.q), 2**32 - 1)
+        except (SdoCommunicationError, SdoAbortedError) as exc:
+            # a drive that refuses a value (a method it does not offer) or does not answer: no homing run
+            self.homing, self.homing_error = "error", f"{what}: {exc}"
+            if isinstance(exc, SdoCommunicationError):
+                self._report("communication_loss")
+            return
+        self.homing_error = ""
         self.off = 0.0
         self.homing = "running"
         self._homing_started = False

@@ -30,19 +30,19 @@ def test_drives_cia402_s7t_leadscrew_written_at_run_time():
     axis = ctl.add_positioning_axis("Real", {"TypeOfAxis.MaxVelocity.maximum": 100.0,
                                              "TypeOfAxis.Homing.referencingNecessary": 0})
     try:
-        power, enable = MC_Power(), {"on": False}
-        ctl.program(lambda: power(Axis=axis, Enable=enable["on"]))
+        power, reset, inputs = MC_Power(), MC_Reset(), {"enable": False, "restart": False}
+
+        def ob1() -> None:
+            power(Axis=axis, Enable=inputs["enable"])
+            reset(Axis=axis, Execute=inputs["restart"], Restart=True)
+        ctl.program(ob1)
         ctl.run(0.01)
         write = MC_WriteParameter()(Axis=axis, Execute=True, ParameterNumber=1100, Index=1, Value=20.0)
         assert write.Done and write.ErrorID == 0x0020
-        reset = MC_Reset()
-        reset(Axis=axis, Execute=True, Restart=True)
-        for _ in range(200):
-            ctl.run(0.004)
-            if reset(Execute=True).Done:
-                break
-        assert reset.Done and axis.config.drive.length_per_revolution == 20.0
-        enable["on"] = True
+        inputs["restart"] = True
+        ctl.run_until(lambda: reset.Done, timeout=1.0)
+        assert axis.config.drive.length_per_revolution == 20.0
+        inputs["enable"] = True
         ctl.run(0.1)
         assert power.Status
         move = MC_MoveAbsolute()

@@ -52,8 +52,10 @@ _NMT_START, _NMT_PRE_OPERATIONAL = 0x01, 0x80
 #: the bound of the wait for TPDOs on the virtual bus [s] (wall clock; generous: it only costs when a node
 #: is lost, and a late thread must not look like a lost node)
 VIRTUAL_WAIT = 0.5
-#: SDO response timeout while a node is set up [s]
+#: SDO response timeout while a node is set up [s]; on the virtual bus the simulated drive answers from a
+#: thread of this process, which a loaded machine may schedule late (a lost node then costs this much longer)
 SDO_TIMEOUT = 1.0
+VIRTUAL_SDO_TIMEOUT = 3.0
 #: virtual CAN channel -> the group that has it (``Cia402Drives._claim_virtual``)
 _VIRTUAL_OWNERS: dict[str, "Cia402Drives"] = {}
 #: groups with an open bus: closed at interpreter exit, so that no notifier thread outlives the program
@@ -157,7 +159,7 @@ class Cia402Drives(DriveGroup):
         link = ch.link
         node = canopen.RemoteNode(link.node_id, link.eds)
         self.network.add_node(node)
-        node.sdo.RESPONSE_TIMEOUT = SDO_TIMEOUT
+        node.sdo.RESPONSE_TIMEOUT = VIRTUAL_SDO_TIMEOUT if self.interface == "virtual" else SDO_TIMEOUT
         ch.remote = node
         nid = link.node_id
         what = "NMT pre-operational"

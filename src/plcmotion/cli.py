@@ -189,9 +189,15 @@ def _describe(ax) -> str:
 
 
 def _values(ax) -> str:
-    """The two values printed per axis after a run: the family's own (``summary_tags``) or Position and
-    ActualPosition."""
-    return ", ".join(f"{tag} {ax.tag(tag):.6g}" for tag in getattr(ax, "summary_tags", ("Position", "ActualPosition")))
+    """The two values printed per axis after a run: the family's own (``summary_tags``), Position and
+    ActualPosition, or - for a family whose axis has neither (a Pilz drive axis names its values by
+    register) - the kernel's setpoint and actual position."""
+    tags = getattr(ax, "summary_tags", ("Position", "ActualPosition"))
+    try:
+        return ", ".join(f"{tag} {ax.tag(tag):.6g}" for tag in tags)
+    except KeyError:
+        b, i = ax.ctl.bank, ax.index
+        return f"setpoint {float(b.sp_p[i]):.6g}, actual {float(b.act_p[i]):.6g}"
 
 
 def load_program(ctl, program: str) -> None:

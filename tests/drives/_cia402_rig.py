@@ -3,9 +3,9 @@ from __future__ import annotations
 
 import itertools
 import os
-from collections.abc import Callable
 from typing import Any
 
+from _fb_program import FbProgram
 from plcmotion import Controller
 from plcmotion.drives.cia402 import Cia402Link
 from plcmotion.s7_1200 import MC_Power, MC_Reset
@@ -32,60 +32,23 @@ AXIS = {
 }
 
 
-class Rig:
+class Rig(FbProgram):
     """``Rig(mode)``: an S7-1200 axis ``Axis_1`` on node 1 of a fresh virtual bus; FBs added with ``add`` run
     once per application cycle."""
 
     def __init__(self, mode: str = "csp", *, enable: bool = True, heartbeat_ms: int = 20,
                  extra: dict[str, Any] | None = None, node_id: int = 1):
-        self.ctl = Controller()
+        ctl = Controller()
         self.link = Cia402Link(interface="virtual", channel=channel(), node_id=node_id, mode=mode, simulate=True,
                                heartbeat_ms=heartbeat_ms)
-        self.ctl.connect_drive("Axis_1", self.link)
-        self.axis = self.ctl.add_positioning_axis("Axis_1", {**AXIS, **(extra or {})})
-        self.drive = self.axis.drive
+        ctl.connect_drive("Axis_1", self.link)
+        axis = ctl.add_positioning_axis("Axis_1", {**AXIS, **(extra or {})})
+        self.drive = axis.drive
         self.sim = self.drive.simulated
-        self.fbs: list[Any] = []
-        self.power = self.add(MC_Power(Enable=enable))
-        self.ctl.program(self._scan)
-        if enable:
-            self.until(lambda: self.power.Status, 0.2, "axis enabled")
-
-    def add(self, fb: Any, **inputs: Any) -> Any:
-        fb.Axis = self.axis
-        for k, v in inputs.items():
-            setattr(fb, k, v)
-        self.fbs.append(fb)
-        return fb
-
-    def _scan(self) -> None:
-        for fb in self.fbs:
-            fb()
-
-    def until(self, pred: Callable[[], bool], timeout: float, what: str) -> None:
-        end = self.ctl.time + timeout
-        while not pred():
-            assert self.ctl.time < end, f"{what}: not within {timeout} s (t = {self.ctl.time:.3f})"
-            self.ctl.step()
-
-    def steps(self, n: int) -> None:
-        for _ in range(n):
-            self.ctl.step()
-
-    def start(self, fb: Any, **inputs: Any) -> Any:
-        if fb not in self.fbs:
-            self.add(fb)
-        for k, v in inputs.items():
-            setattr(fb, k, v)
-        fb.Execute = True
-        self.ctl.step()
-        return fb
+        super().__init__(ctl, axis, MC_Power(Enable=enable), enable=enable, enable_timeout=0.2)
 
     def reset(self) -> MC_Reset:
-        rs = self.start(MC_Reset())
-        self.until(lambda: rs.Done or rs.Error, 0.1, "MC_Reset done")
-        rs.Execute = False
-        return rs
+        return self.finish(self.start(MC_Reset()), 0.1, "MC_Reset done", release=False)
 
     def close(self) -> None:
         self.ctl.close()

@@ -152,3 +152,51 @@ def test_drives_cia402_cli_run_example(tmp_path):
     rows = list(csv.DictReader(out.open()))
     pos = [float(r["Slide.Position"]) for r in rows]
     assert abs(max(pos) - 80.0) <= 0.02 and pos[0] == 0.0
+
+
+@pytest.mark.parametrize("family", ["S7-Technology", "Pilz"])
+def test_drives_cia402_project_any_family(tmp_path, family):
+    """Family-neutral: an S7-Technology axis (a real axis by default) and a Pilz drive axis connect to a
+    CiA 402 drive from the project file the same way; the controller sets the node up (its position actual
+    value is read over SDO) and the axis has the CANopen interface."""
+    path = tmp_path / "p.toml"
+    path.write_text(f'''
+[controller]
+family = "{family}"
+servo_cycle = 0.002
+[axes.Axis_1]
+type = "positioning"
+[drives.Axis_1]
+type = "cia402"
+channel = "{channel()}"
+node_id = 5
+simulate = true
+''')
+    assert check_project(path) == []
+    ctl = load_project(path)
+    try:
+        ax = ctl.axes["Axis_1"]
+        assert ax.config.drive.interface is SetpointInterface.CANOPEN and ax.drive.node_id == 5
+        for _ in range(5):
+            ctl.step()
+        assert ax.drive.communication_ok and ax.drive.state is not None
+    finally:
+        ctl.close()
+
+
+def test_drives_cia402_cli_run_pilz_example(tmp_path, capsys):
+    """plcmotion run with the Pilz example: the drive homes itself (CiA 402-2 homing method 34), which makes
+    the Pilz axis "In reference" (I86, Pilz V6.5 §1.7.7) before it moves; MC_MoveAbsolute then reaches 200 mm
+    within the position window I22 (0.2 mm) and the run ends without an error."""
+    out = tmp_path / "trace.csv"
+    code = main(["run", str(EXAMPLES / "cia402_pilz.toml"), str(EXAMPLES / "cia402_pilz_program.py"),
+                 "--duration", "1.2", "--trace", str(out)])
+    assert code == 0
+    text = capsys.readouterr().out
+    assert "Conveyor: enabled" in text and "homed True" in text and "no error" in text
+    rows = list(csv.DictReader(out.open()))
+    pos = [float(r["Conveyor.I96"]) for r in rows]
+    homed = [float(r["Conveyor.I86"]) for r in rows]
+    assert abs(max(pos) - 200.0) <= 0.2
+    first_move = next(k for k, p in enumerate(pos) if p > 1.0 and k > 0 and homed[k])
+    assert all(h == 1.0 for h in homed[first_move:])

@@ -16,6 +16,7 @@ from canopen.profiles.p402 import BaseNode402  # noqa: E402
 from _cia402_rig import channel  # noqa: E402
 from plcmotion.drives.cia402 import EDS_PATH  # noqa: E402
 from plcmotion.drives.cia402.drive_core import MotorSpec  # noqa: E402
+from plcmotion.drives.cia402.homing import SwitchPlant  # noqa: E402
 from plcmotion.drives.cia402.simulated import start_simulated  # noqa: E402
 
 
@@ -140,7 +141,7 @@ def test_drives_cia402_homing_switch(bus):
     edge as the home position (home offset 0x607C = 0); then it stands with bits 10 and 12 set and the
     position reads the distance from the edge."""
     drive, master = bus
-    sim = drive(7, home_switch=100_000.0)
+    sim = drive(7, plant=SwitchPlant(home_low=100_000.0))
     node = canopen.RemoteNode(7, EDS_PATH)
     master.add_node(node)
     node.sdo.RESPONSE_TIMEOUT = 2.0

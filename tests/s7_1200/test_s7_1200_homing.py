@@ -20,11 +20,11 @@ one at and above 300.  ``axis.drive.mechanical_position()`` is where the load re
 """
 from __future__ import annotations
 
-from collections.abc import Callable
 from typing import Any
 
 import pytest
 
+from _fb_program import FbProgram
 from plcmotion import Controller
 from plcmotion.s7_1200 import (
     MC_Halt,
@@ -76,58 +76,22 @@ def config(actor: int = 2, extra: dict | None = None) -> dict:
     return cfg
 
 
-class Bench:
+class Bench(FbProgram):
     """A controller with one axis and a program that calls every added instance once per application cycle.
     A post-servo hook samples (t, Position, Velocity, machine position, HomingDone) every servo cycle."""
 
     def __init__(self, actor: int = 2, extra: dict | None = None, *, filt: float = 0.0, enable: bool = True,
                  state_file: str | None = None, cam_filter: float | None = None):
-        self.ctl = Controller(servo_cycle=SERVO, app_cycle=APP, input_filter=filt, state_file=state_file)
-        self.axis = self.ctl.add_positioning_axis("Axis_1", config(actor, extra))
+        ctl = Controller(servo_cycle=SERVO, app_cycle=APP, input_filter=filt, state_file=state_file)
+        axis = ctl.add_positioning_axis("Axis_1", config(actor, extra))
         if cam_filter is not None:
-            self.ctl.inputs.set_filter("I0.0", cam_filter)
-        self.fbs: list[Any] = []
+            ctl.inputs.set_filter("I0.0", cam_filter)
         self.trace: list[tuple[float, float, float, float, bool]] = []
-        self.power = self.add(MC_Power(Enable=enable))
-        self.ctl.program(self._scan)
-        self.ctl.on_post_servo(self._sample)
-        if enable:
-            self.until(lambda: self.power.Status, 1.0, "axis enabled")
-
-    def add(self, fb: Any, **inputs: Any) -> Any:
-        fb.Axis = self.axis
-        for k, v in inputs.items():
-            setattr(fb, k, v)
-        self.fbs.append(fb)
-        return fb
-
-    def _scan(self) -> None:
-        for fb in self.fbs:
-            fb()
+        super().__init__(ctl, axis, MC_Power(Enable=enable), enable=enable, sample=self._sample)
 
     def _sample(self, t: float) -> None:
         ax = self.axis
         self.trace.append((t, ax.Position, ax.Velocity, ax.drive.mechanical_position(), ax.StatusBits.HomingDone))
-
-    def until(self, pred: Callable[[], bool], timeout: float, what: str) -> None:
-        end = self.ctl.time + timeout
-        while not pred():
-            assert self.ctl.time < end, f"{what}: not within {timeout} s (t = {self.ctl.time:.3f})"
-            self.ctl.step()
-
-    def steps(self, n: int) -> None:
-        for _ in range(n):
-            self.ctl.step()
-
-    def start(self, fb: Any, **inputs: Any) -> Any:
-        """Rising edge at Execute (the instance is called at the next application cycle)."""
-        if fb not in self.fbs:
-            self.add(fb)
-        for k, v in inputs.items():
-            setattr(fb, k, v)
-        fb.Execute = True
-        self.ctl.step()
-        return fb
 
     def coordinate_of(self, machine: float) -> float:
         """Axis coordinate of a machine position (from the current actual value)."""

@@ -20,11 +20,11 @@ Simulated machine: low HW limit switch actuated at and below machine position -2
 """
 from __future__ import annotations
 
-from collections.abc import Callable
 from typing import Any
 
 import pytest
 
+from _fb_program import FbProgram
 from plcmotion import Controller
 from plcmotion.s7_1200 import MC_MoveRelative, MC_MoveVelocity, MC_Power, MC_Reset
 
@@ -60,61 +60,22 @@ def config(actor: int = 2, extra: dict | None = None) -> dict:
     return cfg
 
 
-class Bench:
+class Bench(FbProgram):
     """A controller with one axis and a program that calls every added instance once per application cycle;
     a post-servo hook samples (t, Position, Velocity, machine position) every servo cycle."""
 
     def __init__(self, actor: int = 2, extra: dict | None = None, *, filt: float = 0.0, enable: bool = True):
-        self.ctl = Controller(servo_cycle=SERVO, app_cycle=APP, input_filter=filt, state_file=None)
-        self.axis = self.ctl.add_positioning_axis("Axis_1", config(actor, extra))
-        self.fbs: list[Any] = []
+        ctl = Controller(servo_cycle=SERVO, app_cycle=APP, input_filter=filt, state_file=None)
         self.trace: list[tuple[float, float, float, float]] = []
-        self.power = self.add(MC_Power(Enable=enable))
-        self.ctl.program(self._scan)
-        self.ctl.on_post_servo(self._sample)
-        if enable:
-            self.until(lambda: self.power.Status, 1.0, "axis enabled")
-
-    def add(self, fb: Any, **inputs: Any) -> Any:
-        fb.Axis = self.axis
-        for k, v in inputs.items():
-            setattr(fb, k, v)
-        self.fbs.append(fb)
-        return fb
-
-    def _scan(self) -> None:
-        for fb in self.fbs:
-            fb()
+        super().__init__(ctl, ctl.add_positioning_axis("Axis_1", config(actor, extra)), MC_Power(Enable=enable),
+                         enable=enable, sample=self._sample)
 
     def _sample(self, t: float) -> None:
         ax = self.axis
         self.trace.append((t, ax.Position, ax.Velocity, ax.drive.mechanical_position()))
 
-    def until(self, pred: Callable[[], bool], timeout: float, what: str) -> None:
-        end = self.ctl.time + timeout
-        while not pred():
-            assert self.ctl.time < end, f"{what}: not within {timeout} s (t = {self.ctl.time:.3f})"
-            self.ctl.step()
-
-    def steps(self, n: int) -> None:
-        for _ in range(n):
-            self.ctl.step()
-
-    def start(self, fb: Any, **inputs: Any) -> Any:
-        if fb not in self.fbs:
-            self.add(fb)
-        for k, v in inputs.items():
-            setattr(fb, k, v)
-        fb.Execute = True
-        self.ctl.step()
-        return fb
-
     def reset(self) -> MC_Reset:
-        rs = self.start(MC_Reset())
-        self.until(lambda: rs.Done or rs.Error, 0.1, "MC_Reset ended")
-        rs.Execute = False
-        self.ctl.step()
-        return rs
+        return self.finish(self.start(MC_Reset()), 0.1, "MC_Reset ended")
 
 
 def peak_deceleration(b: Bench, k_from: int) -> float:

@@ -18,11 +18,11 @@ Project decisions (docs/decisions.md): #25 (ErrorBits: DriveFault for 16#8000 an
 """
 from __future__ import annotations
 
-from collections.abc import Callable
 from typing import Any
 
 import pytest
 
+from _fb_program import FbProgram
 from plcmotion import Controller
 from plcmotion.s7_1200 import MC_Home, MC_MoveVelocity, MC_Power, MC_Reset
 
@@ -54,48 +54,14 @@ def config(actor: int = 1, extra: dict | None = None) -> dict:
     return cfg
 
 
-class Bench:
+class Bench(FbProgram):
     """A controller with one axis and a program that calls every added instance once per application cycle."""
 
     def __init__(self, actor: int = 1, extra: dict | None = None, *, filt: float = 0.0064, enable: bool = True,
                  state_file: str | None = None):
-        self.ctl = Controller(servo_cycle=SERVO, app_cycle=APP, input_filter=filt, state_file=state_file)
-        self.axis = self.ctl.add_positioning_axis("Axis_1", config(actor, extra))
-        self.fbs: list[Any] = []
-        self.power = self.add(MC_Power(Enable=enable))
-        self.ctl.program(self._scan)
-        if enable:
-            self.until(lambda: self.power.Status, 1.0, "axis enabled")
-
-    def add(self, fb: Any, **inputs: Any) -> Any:
-        fb.Axis = self.axis
-        for k, v in inputs.items():
-            setattr(fb, k, v)
-        self.fbs.append(fb)
-        return fb
-
-    def _scan(self) -> None:
-        for fb in self.fbs:
-            fb()
-
-    def until(self, pred: Callable[[], bool], timeout: float, what: str) -> None:
-        end = self.ctl.time + timeout
-        while not pred():
-            assert self.ctl.time < end, f"{what}: not within {timeout} s (t = {self.ctl.time:.3f})"
-            self.ctl.step()
-
-    def steps(self, n: int) -> None:
-        for _ in range(n):
-            self.ctl.step()
-
-    def start(self, fb: Any, **inputs: Any) -> Any:
-        if fb not in self.fbs:
-            self.add(fb)
-        for k, v in inputs.items():
-            setattr(fb, k, v)
-        fb.Execute = True
-        self.ctl.step()
-        return fb
+        ctl = Controller(servo_cycle=SERVO, app_cycle=APP, input_filter=filt, state_file=state_file)
+        super().__init__(ctl, ctl.add_positioning_axis("Axis_1", config(actor, extra)), MC_Power(Enable=enable),
+                         enable=enable)
 
     def reset(self) -> MC_Reset:
         rs = self.start(MC_Reset())

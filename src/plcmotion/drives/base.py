@@ -36,12 +36,16 @@ from .spec import DriveSpec
 
 
 class DriveReports(Protocol):
-    """Where a drive that finds faults by itself (a drive on a bus: CiA 402 EMCY, statusword, heartbeat)
-    reports them: the axis's device fault list (``kernel.fault_injection.FaultInjection``).  ``kind`` is
+    """Where a drive that finds faults by itself (a drive on a bus: CiA 402 EMCY, statusword, heartbeat) or
+    homes by itself (CiA 402 homing mode: ``homed``) reports them: the axis's device fault list (``kernel.fault_injection.FaultInjection``).  ``kind`` is
     ``"drive"`` (a fault of the drive) or ``"communication_loss"`` (the bus connection is lost); the
     alarm then takes the family's reaction like any device fault."""
 
     def inject(self, kind: str, detail: str = "", *, persistent: bool = False) -> None: ...
+
+    def homed(self, position: float) -> None:
+        """The drive ran its own homing and its actual value reads ``position`` [axis length unit] now: the
+        axis is homed there (each family's homing status follows the kernel's)."""
 
 
 class DriveChannel(ABC):

@@ -68,7 +68,16 @@ class FaultHost(Protocol):
     servo: bool
     homed: bool
 
+    @property
+    def homing(self) -> "DriveHoming": ...
+
     def raise_alarm(self, fault: F.Fault) -> None: ...
+
+
+class DriveHoming(Protocol):
+    """The homing part of the axis, for a homing run in the drive."""
+
+    def drive_homed(self, position: float) -> None: ...
 
 
 class FaultInjection:
@@ -118,6 +127,13 @@ class FaultInjection:
                 ax.homed = False                       # §2.5: an encoder error resets "homed"
                 ax.ctl._retain_axis(ax)                # also for absolute encoders, across power cycles
             ax.raise_alarm(F.alarm(DEVICE_ALARMS[device], device_detail, Reaction.REMOVE_ENABLE))
+
+    def homed(self, position: float) -> None:
+        """A drive that homes by itself (CiA 402 homing mode) reports that it is homed and its actual value
+        reads ``position`` [axis length unit]: the axis's homing makes the axis homed there
+        (``kernel.homing.Homing.drive_homed``), so each family's "homed" status follows.  The fault list is
+        where the kernel attaches a drive's reports (``DriveChannel.attach``), so it hands this on."""
+        self.axis.homing.drive_homed(checked_real("position", position))
 
     def expand(self, kind: str, detail: str) -> list[tuple[str, str]]:
         """The device faults (device, detail) a fault kind stands for (ValueError when it cannot be)."""

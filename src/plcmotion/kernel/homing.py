@@ -188,6 +188,18 @@ class Homing:
         job.finish(JobState.DONE)
         a._replan()
 
+    def drive_homed(self, position: float) -> None:
+        """The drive homed itself (a homing run in the drive, e.g. CiA 402 homing mode) and its actual value
+        reads ``position`` now: the coordinates follow that value, the axis is homed and the reference mark
+        is there.  Every family's homing status is ``axis.homed``."""
+        a = self.axis
+        b, i = a.ctl.bank, a.index
+        self._shift(position - float(b.act_p[i]))
+        a.homed = True
+        self.reference_mark = a._wrap(position)
+        a.ctl._retain_axis(a)
+        a._replan()
+
     def _shift(self, delta: float) -> None:
         """Move the coordinate system by ``delta`` (setpoint, actual value, profile, targets)."""
         if delta == 0.0:
@@ -582,6 +594,9 @@ class NoHoming:
 
     def end_passive(self, state: JobState, fault: Fault | None = None) -> None:
         return None
+
+    def drive_homed(self, position: float) -> None:
+        return None                 # an axis kind without homing has no "homed" to set
 
     def on_profile_end(self, job: Job, t: float) -> None:
         return None

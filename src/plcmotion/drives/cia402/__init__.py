@@ -16,7 +16,9 @@ or from a project file with a ``[drives.Axis_1]`` table (``plcmotion.project``).
 * ``channel`` - ``Cia402Channel``, one axis's drive (``axis.drive``): controlword, set values, faults and
   heartbeat supervision, drive-based homing (``home_in_drive``), ``quick_stop``;
 * ``simulated`` / ``drive_core`` - ``SimulatedCia402``, a drive on the bus built on a canopen
-  LocalNode with the shipped EDS (``EDS_PATH``), for tests and demos without hardware.
+  LocalNode with the shipped EDS (``EDS_PATH``), for tests and demos without hardware;
+* ``homing`` - the homing methods of the simulated drive (1-14, 17-30, 33/34, 35/37) on its plant of limit
+  switches, home switch and index pulses (``SwitchPlant``).
 
 Determinism: the master sends its RPDOs at the end of a servo cycle and SYNC at the start of the next,
 then waits (bounded) for the TPDOs every node sends on that SYNC; the simulated drive does all its work on

@@ -16,6 +16,7 @@ import struct
 from typing import Any, Protocol
 
 import canopen
+from canopen.sdo import SdoAbortedError, SdoCommunicationError
 
 from ..base import DriveChannel, DriveReports
 from ..spec import DriveSpec
@@ -33,6 +34,15 @@ class BusClock(Protocol):
 
     now: float                      # the time of the last read [s]
     servo_cycle: float              # [s]
+
+    def rescale(self, ch: "Cia402Channel", spec: DriveSpec) -> None: ...
+
+
+def _drive_data(spec: DriveSpec) -> tuple[Any, ...]:
+    """What the SDO set-up of the scaling and ramps reads of a spec (``master.Cia402Drives._scaling``)."""
+    e = spec.encoder
+    return (spec.length_per_revolution, e.steps_per_revolution, e.fine_bits, e.inverse_direction,
+            spec.max_speed, spec.off_ramp_time)
 
 
 class Cia402Channel(DriveChannel):
@@ -69,6 +79,7 @@ class Cia402Channel(DriveChannel):
         self._pp_pulse = False
         #: drive-based homing (``home_in_drive``): "", "running", "attained", "error"
         self.homing = ""
+        self.homing_error = ""          # why home_in_drive could not start the run ("" none)
         self._homing_started = False
         # supervision
         self.last_heartbeat = 0.0
@@ -77,6 +88,7 @@ class Cia402Channel(DriveChannel):
         self.fault_reported = False
         self.comm_reported = False
         self.settle_until = -math.inf
+        self.rescale_error = ""             # why the last rewrite of the scaling failed ("" none)
         self._echo = False
         self._emcy_fault = False
 
@@ -110,6 +122,16 @@ class Cia402Channel(DriveChannel):
         self._nmt_start = self.heartbeat_state is not None and self.heartbeat_state != 0x05
         g = self.group
         self.settle_until = g.now + max(3 * g.servo_cycle, 0.02)
+
+    def reconfigure(self, spec: DriveSpec) -> None:
+        """The axis configuration became effective anew (a parameter write at its effective moment, a
+        restart): when what the drive was set up with changed - travel per revolution (leadscrew, gear),
+        encoder resolution and direction, maximum speed, off-ramp time - the master writes the position
+        scaling and the ramps to the drive again and converts with the new increment.  The actual value
+        stays the drive's count times the increment: a new travel per revolution scales it."""
+        old, self.spec = self.spec, spec
+        if self.remote is not None and _drive_data(old) != _drive_data(spec):
+            self.group.rescale(self, spec)
 
     def set_actual(self, bank: Any, value: float) -> None:
         self.off = value - self.position * self.q
@@ -150,6 +172,8 @@ class Cia402Channel(DriveChannel):
             self.statusword, self.position, self.mode_display = _TPDO1.unpack_from(tpdo1)
             self.velocity, self.torque_actual, self.error_code = _TPDO2.unpack_from(tpdo2)
             self.state = P.state_of(self.statusword)
+            if self.homing == "running":
+                self._homing_status()
         else:
             self.missed += 1
         if t < self.settle_until:
@@ -215,49 +239,78 @@ class Cia402Channel(DriveChannel):
                       zero_speed: float | None = None, acceleration: float | None = None) -> None:
         """Run the drive's own homing (CiA 402 homing mode 6) while the axis is disabled.
 
-        ``method`` is the drive's homing method 0x6098 (e.g. 35/37: here is home, 19: home switch), ``offset``
-        the home offset 0x607C [axis length unit]; the speeds 0x6099 [length unit/s] and the acceleration
-        0x609A [length unit/s^2] are written when given.  The master switches the drive on in homing mode,
-        starts it (controlword bit 4) and switches it off again when the statusword shows "homing attained"
-        (bits 12 + 10: :attr:`homing` = "attained") or a homing error (bit 13: "error").  The drive's
-        position then counts from its home position; MC_Home with direct homing marks the axis homed."""
+        ``method`` is the drive's homing method 0x6098 (1-14 limit/home switch and index pulse, 17-30 the same
+        without the index pulse, 33/34 index pulse, 35/37 here is home), ``offset`` the home offset 0x607C
+        [axis length unit]; the speeds 0x6099:1 (switch search) and 0x6099:2 (zero search) [length unit/s]
+        and the acceleration 0x609A [length unit/s^2] are written when given.  The master switches the drive
+        on in homing mode, starts it (controlword bit 4) and switches it off again when the statusword shows
+        "homing attained" (bits 12 + 10: :attr:`homing` = "attained") or a homing error (bit 13: "error").
+        The drive's position then reads ``offset`` at its home position, and the axis is homed there: the
+        channel reports it to the axis (``DriveReports.homed``), so every family's homing status follows."""
         if self.enable:
             raise RuntimeError(f"node {self.node_id}: drive-based homing needs the axis disabled (MC_Power "
                                "Enable = FALSE); the kernel moves an enabled axis itself")
         if isinstance(method, bool) or not isinstance(method, int) or not -128 <= method <= 127:
             raise ValueError(f"homing method must be an integer in [-128, 127] (0x6098), got {method!r}")
+        values = {"offset": offset, "switch_speed": switch_speed, "zero_speed": zero_speed,
+                  "acceleration": acceleration}
+        for name, value in values.items():
+            if value is not None and (isinstance(value, bool) or not isinstance(value, (int, float))
+                                      or not math.isfinite(value)):
+                raise ValueError(f"{name} must be a finite number, got {value!r}")
         sdo = self.remote.sdo
-        sdo[0x6098].raw = method
-        sdo[0x607C].raw = int(round(offset / self.q))
-        if switch_speed is not None:
-            sdo[0x6099][1].raw = int(round(abs(switch_speed) / self.q))
-        if zero_speed is not None:
-            sdo[0x6099][2].raw = int(round(abs(zero_speed) / self.q))
-        if acceleration is not None:
-            sdo[0x609A].raw = int(round(abs(acceleration) / self.q))
+        what = "0x6098 homing method"
+        try:
+            sdo[0x6098].raw = method
+            what = "0x607C home offset"
+            sdo[0x607C].raw = self._clamp32(offset / self.q)
+            for what, value, obj in (("0x6099:1 speed during search for switch", switch_speed, sdo[0x6099][1]),
+                                     ("0x6099:2 speed during search for zero", zero_speed, sdo[0x6099][2]),
+                                     ("0x609A homing acceleration", acceleration, sdo[0x609A])):
+                if value is not None:
+                    obj.raw = min(self._clamp32(abs(value) / self.q), 2**32 - 1)
+        except (SdoCommunicationError, SdoAbortedError) as exc:
+            # a drive that refuses a value (a method it does not offer) or does not answer: no homing run
+            self.homing, self.homing_error = "error", f"{what}: {exc}"
+            if isinstance(exc, SdoCommunicationError):
+                self._report("communication_loss")
+            return
+        self.homing_error = ""
         self.off = 0.0
         self.homing = "running"
         self._homing_started = False
 
+    def _homing_status(self) -> None:
+        """The statusword of a homing run (CiA 402-2 homing mode: bit 13 error, bit 12 attained, bit 10 target
+        reached): attained once the drive stands at home, with the axis homed at the position it reads."""
+        sw = self.statusword
+        if self.state in (State.FAULT, State.FAULT_REACTION_ACTIVE):
+            self.homing = "error"
+        elif not self._homing_started or self.mode_display != Mode.HOMING:
+            return
+        elif sw & P.SW_OMS13:
+            self.homing = "error"
+        elif sw & (P.SW_OMS12 | P.SW_TARGET_REACHED) == P.SW_OMS12 | P.SW_TARGET_REACHED:
+            self.homing = "attained"
+            if self.reports is not None:
+                self.reports.homed(self.position * self.q + self.off)
+
     def _homing_rpdo(self) -> bytes:
-        sw, state = self.statusword, self.state
+        state = self.state
         cw = P.next_command(state, True)
         if state is State.OPERATION_ENABLED and self.mode_display == Mode.HOMING:
-            if self._homing_started and sw & P.SW_OMS13:
-                self.homing, cw = "error", P.SHUTDOWN
-            elif self._homing_started and sw & (P.SW_OMS12 | P.SW_TARGET_REACHED) == P.SW_OMS12 | P.SW_TARGET_REACHED:
-                self.homing, cw = "attained", P.SHUTDOWN
-            else:
-                cw |= P.CW_NEW_SETPOINT
-                self._homing_started = self._homing_started or bool(self.controlword & P.CW_NEW_SETPOINT)
-        elif state in (State.FAULT, State.FAULT_REACTION_ACTIVE):
-            self.homing = "error"
-        mode = Mode.HOMING if self.homing == "running" else self.mode
+            cw |= P.CW_NEW_SETPOINT
+            # the drive takes bit 4 at the next SYNC: statuswords from the one after it belong to this run
+            self._homing_started = self._homing_started or bool(self.controlword & P.CW_NEW_SETPOINT)
         target = self.position if self.mode in (Mode.CYCLIC_SYNC_POSITION, Mode.PROFILE_POSITION) else 0
         size = "<h" if self.mode is Mode.CYCLIC_SYNC_TORQUE else "<i"
         self.controlword = cw
         self._sent = (cw, self._sent[0])
-        return struct.pack("<H", cw) + struct.pack(size, target) + struct.pack("<b", int(mode))
+        return struct.pack("<H", cw) + struct.pack(size, target) + struct.pack("<b", int(Mode.HOMING))
+
+    @staticmethod
+    def _clamp32(x: float) -> int:
+        return int(max(-2**31, min(2**31 - 1, round(x))))
 
     def _increments(self, position: float) -> int:
         n = round((position - self.off) / self.q)

@@ -16,10 +16,12 @@ speed is limited to 0x6080 (max motor speed, 1/min).  What feeds the speed loop 
   0x607A, started by the new-set-point handshake (controlword bit 4, statusword bit 12), absolute or
   relative (bit 6), at once (bit 5) or after the running one;
 * pv: a ramp (0x6083/0x6084) to the target velocity;
-* hm: methods 35 and 37 (the current position is the home position) and 19 (home switch, active at and
-  above ``MotorSpec.home_switch``: the home position is where the switch goes off, found moving in the
-  negative direction at the zero search speed 0x6099:2 after the switch search at 0x6099:1).  After
-  homing the position reads the home offset 0x607C at the home position.
+* hm: the homing methods of ``homing.py`` (1-14 with the index pulse, 17-30 without, 33/34, 35/37) on the
+  switches and index pulses of ``MotorSpec.plant``, at the speeds 0x6099:1/2 with the acceleration
+  0x609A.  After homing the position reads the home offset 0x607C at the home position.  Statusword bits
+  13/12/10 as CiA 402-2 defines them for homing mode: 0/0/1 not started or interrupted (halt), 0/0/0 in
+  progress, 0/1/0 home found and stopping, 0/1/1 attained, 1/0/0 error while moving, 1/0/1 error at
+  standstill.
 
 Without "operation enabled" the drive ramps down with the quick stop deceleration 0x6085 (quick stop,
 fault reaction, disable).  A fault (``inject_fault``, or following error beyond 0x6065 in csp) sends the
@@ -29,9 +31,11 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from dataclasses import field
 from typing import Callable
 
 from . import profile as P
+from .homing import HomingRun, SwitchPlant
 from .profile import Mode, PowerStateMachine, State
 
 
@@ -45,7 +49,8 @@ class MotorSpec:
     friction: float = 2.0                 #: viscous friction [1/s]
     position_window: int = 200            #: pp: target reached within this distance [inc]
     velocity_window: int = 2000           #: pv: target reached / speed zero within this [inc/s]
-    home_switch: float | None = None      #: home switch: active at and above this position [inc]
+    #: limit switches, home switch and index pulses of the machine (mechanical position [inc])
+    plant: SwitchPlant = field(default_factory=SwitchPlant)
     initial_position: float = 0.0         #: where the motor is at power on [inc]
 
 
@@ -78,7 +83,9 @@ class DriveCore:
         self.goal: float | None = None            # pp: the running target (mechanical)
         self.pending_goal: float | None = None
         self.ack = False                          # pp: set-point acknowledge (statusword bit 12)
-        self.home_phase = ""                      # "", "search", "back", "stop", "done", "error"
+        self.home_phase = ""                      # "", "running", "stop", "done", "error", "interrupted"
+        self.home_run: HomingRun | None = None
+        self._x_before = self.x
         self.error_code = 0
         self.cause = False                        # a fault cause that a reset cannot clear
         self.emcy: list[tuple[int, int]] = []     # (code, error register) to send
@@ -103,12 +110,8 @@ class DriveCore:
     def torque_actual(self) -> int:
         return max(-32768, min(32767, int(round(self.sign * self.torque))))
 
-    def home_switch_active(self) -> bool:
-        hs = self.motor.home_switch
-        return hs is not None and self.x >= hs
-
     def digital_inputs(self) -> int:
-        return 0x4 if self.home_switch_active() else 0
+        return self.motor.plant.digital_inputs(self.x)
 
     def _mech(self, user: float) -> float:
         return self.sign * (user - self.offset)
@@ -182,6 +185,7 @@ class DriveCore:
         m = self.motor
         st = self.sm.state
         vmax = self.vmax
+        self._x_before = self.x
         if st is State.OPERATION_ENABLED and self.mode == Mode.CYCLIC_SYNC_TORQUE:
             limit = self.param(0x6072, 0)
             self.torque = self.sign * max(-limit, min(limit, self.target_torque))
@@ -199,6 +203,8 @@ class DriveCore:
         if st is State.OPERATION_ENABLED and not (self.cw & P.CW_HALT and self.mode in (1, 3, 6)):
             ref = self._reference(dt)
         else:
+            if self.mode == Mode.HOMING and self.home_phase == "running":
+                self.home_phase = "interrupted"           # halt or leaving operation ends the homing run
             # halt, quick stop, fault reaction, disabled: ramp down (0x6084 for halt, else 0x6085)
             dec = self.param(0x6084 if st is State.OPERATION_ENABLED else 0x6085, 0) or 1.0
             self.gv = math.copysign(max(abs(self.gv if st is State.OPERATION_ENABLED else self.v) - dec * dt, 0.0),
@@ -235,6 +241,8 @@ class DriveCore:
         if self.mode != Mode.CYCLIC_SYNC_TORQUE or self.sm.state is not State.OPERATION_ENABLED:
             self.torque = 1000.0 * (self.acc + m.friction * self.v) / rated if rated else 0.0
         st = self.sm.state
+        if self.mode == Mode.HOMING and self.home_run is not None:
+            self._homing_moved()
         if st in (State.QUICK_STOP_ACTIVE, State.FAULT_REACTION_ACTIVE) and self.v == 0.0:
             self.sm.quick_stop_done()
             self.sm.reaction_done()
@@ -291,34 +299,31 @@ class DriveCore:
 
     # --- homing -----------------------------------------------------------------------------------------
     def _start_homing(self) -> None:
-        method = self.param(0x6098, 0)
-        if method in (35, 37):
-            self.offset = self.param(0x607C, 0) - self.sign * self.x
+        pitch = self.motor.plant.index_pitch or self._inc_per_rev()
+        run = HomingRun(self.param(0x6098, 0), self.motor.plant, self.x, pitch, self.param(0x6099, 1),
+                        self.param(0x6099, 2))
+        self.home_run, self.home_phase = run, "running"
+        self.gv = self.v
+        self._x_before = self.x                   # 35/37 (home here) and refused methods end at once
+        self._homing_moved()
+
+    def _homing_moved(self) -> None:
+        """After a SYNC period of homing: feed the motion to the run; set the home position once found."""
+        run = self.home_run
+        if self.home_phase == "running":
+            run.moved(self._x_before, self.x)
+            if run.error:
+                self.home_phase = "error"
+            elif run.home is not None:
+                # the home position reads the home offset 0x607C from now on
+                self.offset = self.param(0x607C, 0) - self.sign * run.home
+                self.home_phase = "stop"
+        if self.home_phase == "stop" and abs(self.v) < 1e-9 and abs(self.gv) < 1e-9:
             self.home_phase = "done"
-        elif method == 19 and self.motor.home_switch is not None:
-            self.home_phase = "back" if self.home_switch_active() else "search"
-            self.gv = self.v
-        else:
-            self.home_phase = "error"             # a method this drive does not offer / no home switch
 
     def _homing(self, dt: float) -> float:
-        phase = self.home_phase
-        fast, slow = self.param(0x6099, 1), self.param(0x6099, 2)
+        want = self.home_run.velocity() if self.home_phase == "running" and self.home_run else 0.0
         acc = float(self.param(0x609A, 0)) or 1.0
-        if phase == "search":
-            want = float(fast)
-            if self.home_switch_active():
-                self.home_phase, want = "back", -float(slow)
-        elif phase == "back":
-            want = -float(slow)
-            if not self.home_switch_active():
-                # the switch went off between the last position and this one: the home position is its edge
-                self.offset = self.param(0x607C, 0) - self.sign * float(self.motor.home_switch)
-                self.home_phase, want = "stop", 0.0
-        else:
-            want = 0.0
-            if phase == "stop" and abs(self.gv) < 1e-9:
-                self.home_phase = "done"
         lim = acc * dt
         self.gv += max(-lim, min(lim, want - self.gv))
         return self.gv
@@ -350,10 +355,12 @@ class DriveCore:
             if abs(self.v) <= m.velocity_window:
                 sw |= P.SW_OMS12
         elif mode == Mode.HOMING:
-            if self.home_phase in ("done", "error") or halted:
+            phase = self.home_phase
+            still = abs(self.v) < 1e-9
+            if phase in ("", "interrupted", "done") or halted or (phase == "error" and still):
                 sw |= P.SW_TARGET_REACHED
-            if self.home_phase == "done":
+            if phase in ("stop", "done"):
                 sw |= P.SW_OMS12
-            if self.home_phase == "error":
+            if phase == "error":
                 sw |= P.SW_OMS13
         return sw

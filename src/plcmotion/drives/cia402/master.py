@@ -44,6 +44,7 @@ from ..base import DriveChannel, DriveGroup
 from ..spec import DriveSpec
 from .channel import Cia402Channel
 from .drive_core import MotorSpec
+from .homing import switch_plant
 from .link import Cia402Link
 from .profile import Mode
 
@@ -51,8 +52,10 @@ _NMT_START, _NMT_PRE_OPERATIONAL = 0x01, 0x80
 #: the bound of the wait for TPDOs on the virtual bus [s] (wall clock; generous: it only costs when a node
 #: is lost, and a late thread must not look like a lost node)
 VIRTUAL_WAIT = 0.5
-#: SDO response timeout while a node is set up [s]
+#: SDO response timeout while a node is set up [s]; on the virtual bus the simulated drive answers from a
+#: thread of this process, which a loaded machine may schedule late (a lost node then costs this much longer)
 SDO_TIMEOUT = 1.0
+VIRTUAL_SDO_TIMEOUT = 3.0
 #: virtual CAN channel -> the group that has it (``Cia402Drives._claim_virtual``)
 _VIRTUAL_OWNERS: dict[str, "Cia402Drives"] = {}
 #: groups with an open bus: closed at interpreter exit, so that no notifier thread outlives the program
@@ -93,6 +96,7 @@ class Cia402Drives(DriveGroup):
         self._wall0: float | None = None
         self._t0 = 0.0
         self.late_cycles = 0              # cycles in which a node's TPDOs did not arrive in time
+        self._what = ""                   # the object an SDO set-up is writing (for its error message)
 
     def _claim_virtual(self) -> None:
         """python-can's virtual bus is one per process: a virtual channel belongs to one controller at a time,
@@ -131,10 +135,11 @@ class Cia402Drives(DriveGroup):
             if self.sim_network is None:
                 self.sim_network = self._connect()
             per_rev = inc or spec.encoder.steps_per_revolution << spec.encoder.fine_bits
+            scale = per_rev / spec.length_per_revolution          # increments per length unit
             motor = MotorSpec(speed_time_constant=spec.plant.speed_time_constant,
-                              initial_position=spec.plant.initial_position / spec.length_per_revolution * per_rev)
+                              initial_position=spec.plant.initial_position * scale,
+                              plant=switch_plant(spec.plant, scale, per_rev))
             sim = SimulatedCia402(link.node_id, eds=link.eds, motor=motor)
-            sim.values[(0x608F, 1)], sim.values[(0x608F, 2)] = per_rev, 1
             sim.connect(self.sim_network)
             self.simulated[link.node_id] = ch.simulated = sim
         self._configure(ch, spec, servo_cycle)
@@ -154,19 +159,15 @@ class Cia402Drives(DriveGroup):
         link = ch.link
         node = canopen.RemoteNode(link.node_id, link.eds)
         self.network.add_node(node)
-        node.sdo.RESPONSE_TIMEOUT = SDO_TIMEOUT
+        node.sdo.RESPONSE_TIMEOUT = VIRTUAL_SDO_TIMEOUT if self.interface == "virtual" else SDO_TIMEOUT
         ch.remote = node
         nid = link.node_id
         what = "NMT pre-operational"
         try:
             node.nmt.send_command(_NMT_PRE_OPERATIONAL)
             sdo = node.sdo
-            what = "0x608F position encoder resolution"
-            if link.increments_per_revolution is not None:
-                sdo[0x608F][1].raw = link.increments_per_revolution
-                sdo[0x608F][2].raw = 1
-            per_rev = sdo[0x608F][1].raw / max(sdo[0x608F][2].raw, 1)
-            ch.q = spec.length_per_revolution / per_rev
+            what = ""
+            what = self._scaling(ch, spec)
             us = int(round(servo_cycle * 1e6))
             value, exp = (us // 100, -4) if us % 1000 else (us // 1000, -3)
             for what, index, sub, v in (
@@ -174,18 +175,8 @@ class Cia402Drives(DriveGroup):
                     ("0x60C2 interpolation time period", 0x60C2, 1, min(value, 255)),
                     ("0x60C2 interpolation time index", 0x60C2, 2, exp),
                     ("0x1017 producer heartbeat time", 0x1017, None, link.heartbeat_ms),
-                    ("0x607E polarity", 0x607E, None, 0xC0 if spec.encoder.inverse_direction else 0),
-                    ("0x6080 max motor speed", 0x6080, None, int(round(spec.max_speed))),
                     ("0x6060 modes of operation", 0x6060, None, int(ch.mode))):
                 (sdo[index] if sub is None else sdo[index][sub]).raw = v
-            ramp = spec.max_velocity / ch.q / spec.off_ramp_time if spec.off_ramp_time > 0 else 2**32 - 1
-            ramp = int(min(ramp, 2**32 - 1))
-            for what, index, v in (("0x6085 quick stop deceleration", 0x6085, ramp),
-                                   ("0x6083 profile acceleration", 0x6083, ramp),
-                                   ("0x6084 profile deceleration", 0x6084, ramp),
-                                   ("0x6081 profile velocity", 0x6081,
-                                    int(min(spec.max_velocity / ch.q, 2**32 - 1)))):
-                sdo[index].raw = v
             target = {Mode.CYCLIC_SYNC_VELOCITY: (0x60FF, 32), Mode.PROFILE_VELOCITY: (0x60FF, 32),
                       Mode.CYCLIC_SYNC_TORQUE: (0x6071, 16)}.get(ch.mode, (0x607A, 32))
             maps = {0x1400: (0x200 + nid, [(0x6040, 16), target, (0x6060, 8)]),
@@ -208,11 +199,57 @@ class Cia402Drives(DriveGroup):
             what = "0x6064 position actual value"
             ch.position = sdo[0x6064].raw
         except (SdoCommunicationError, SdoAbortedError, KeyError) as exc:
+            what = what or self._what
             hint = " (is the drive on the bus, with this node id and bit rate?)" \
                 if isinstance(exc, SdoCommunicationError) else ""
             raise Cia402Error(f"CiA 402 drive node {nid} on {self.interface}/{self.channel}: {what}: {exc}{hint}"
                               ) from None
         ch.off = spec.plant.initial_position - ch.position * ch.q if link.simulate else 0.0
+
+    def _scaling(self, ch: Cia402Channel, spec: DriveSpec) -> str:
+        """SDO: what follows from the axis's mechanics and drive data - the position encoder resolution
+        0x608F (from the link; for a simulated drive from the axis's encoder) and with it the feed constant
+        0x6092 of the factor group (when the EDS has it), polarity 0x607E, max motor
+        speed 0x6080, the quick stop, profile acceleration and deceleration 0x6085/0x6083/0x6084 (the
+        maximum velocity within the off-ramp time) and profile velocity 0x6081 - and the channel's
+        increment ``q`` [length unit per increment].  At set-up and again when the mechanics change at run
+        time (``Cia402Channel.reconfigure``).  Returns "" (the name of the object being written is kept for
+        the error message of a failure)."""
+        sdo, link = ch.remote.sdo, ch.link
+        self._what = "0x608F position encoder resolution"
+        inc = link.increments_per_revolution
+        if inc is None and link.simulate:
+            inc = spec.encoder.steps_per_revolution << spec.encoder.fine_bits
+        if inc is not None:
+            sdo[0x608F][1].raw = inc
+            sdo[0x608F][2].raw = 1
+        resolution = (sdo[0x608F][1].raw, max(sdo[0x608F][2].raw, 1))
+        if 0x6092 in ch.remote.object_dictionary:
+            # the factor group: a feed constant of one encoder resolution per shaft revolution makes the
+            # drive's position unit the increment (position factor 1), whatever it was set to before
+            self._what = "0x6092 feed constant"
+            sdo[0x6092][1].raw, sdo[0x6092][2].raw = resolution
+        ch.q = spec.length_per_revolution / (resolution[0] / resolution[1])
+        ramp = spec.max_velocity / ch.q / spec.off_ramp_time if spec.off_ramp_time > 0 else 2**32 - 1
+        ramp = int(min(ramp, 2**32 - 1))
+        for self._what, index, v in (
+                ("0x607E polarity", 0x607E, 0xC0 if spec.encoder.inverse_direction else 0),
+                ("0x6080 max motor speed", 0x6080, int(round(spec.max_speed))),
+                ("0x6085 quick stop deceleration", 0x6085, ramp),
+                ("0x6083 profile acceleration", 0x6083, ramp),
+                ("0x6084 profile deceleration", 0x6084, ramp),
+                ("0x6081 profile velocity", 0x6081, int(min(spec.max_velocity / ch.q, 2**32 - 1)))):
+            sdo[index].raw = v
+        return ""
+
+    def rescale(self, ch: Cia402Channel, spec: DriveSpec) -> None:
+        """The axis's mechanics changed at run time: write the scaling again (:meth:`_scaling`).  A node that
+        does not take it is lost to the axis (communication fault), never an exception in the cycle."""
+        try:
+            self._scaling(ch, spec)
+        except (SdoCommunicationError, SdoAbortedError, KeyError) as exc:
+            ch.rescale_error = f"{self._what}: {exc}"
+            ch._report("communication_loss")
 
     # --- bus callbacks (the network's notifier thread) -------------------------------------------------
     def _on_tpdo(self, can_id: int, data: bytearray, timestamp: float) -> None:

@@ -129,7 +129,11 @@ class SimulatedCia402:
             self.core.clear_cause()
 
     def silence(self, on: bool = True) -> None:
-        """The drive stops answering anything (power or cable lost), or comes back."""
+        """The drive stops answering anything - SYNC, PDOs, SDO requests (power or cable lost) - or comes
+        back."""
+        if on != self._silent and self.network is not None:
+            sdo = self.node.sdo
+            (self.network.unsubscribe if on else self.network.subscribe)(sdo.rx_cobid, sdo.on_request)
         self._silent = on
 
     def heartbeat(self, on: bool) -> None:

@@ -21,8 +21,13 @@ from typing import Any, ClassVar
 
 import numpy as np
 
+from .kernel.axis import PositioningAxis
 from .kernel.faults import Fault
 from .kernel.jobs import Job, JobState
+from .kernel.power import ENABLED as _ENABLED, PowerControl
+from .kernel.runtime import RUN as _RUN
+
+_AXIS_POWER = PositioningAxis.power
 
 _BOOL_TYPES = (bool, np.bool_)
 
@@ -121,7 +126,8 @@ class Instruction:
         self.__dict__.update(values)
 
     def __call__(self, **inputs: Any) -> "Instruction":
-        self._set_inputs(inputs)
+        if inputs:
+            self._set_inputs(inputs)
         try:
             self._evaluate()
         except ProgramError:
@@ -207,6 +213,8 @@ class Instruction:
         return f"<{type(self).__name__} {outs}>"
 
 
+_JOB_BUSY = JobState.BUSY
+
 _DONE_OUTPUTS = {"Done": False, "Busy": False, "CommandAborted": False, "Error": False, "ErrorID": 0,
                  "ErrorInfo": 0}
 
@@ -216,6 +224,39 @@ class ExecuteInstruction(Instruction):
 
     INPUTS = {"Axis": None, "Execute": False}
     OUTPUTS = dict(_DONE_OUTPUTS)
+
+    #: whether a call may take the steady-state shortcut of ``__call__`` (set per class: only for
+    #: classes that keep this class's evaluation, see ``__init_subclass__``)
+    _STEADY: ClassVar[bool] = True
+    #: the class shows Busy (``_set_busy`` writes it)
+    _HAS_BUSY: ClassVar[bool] = True
+
+    def __init_subclass__(cls, **kwargs: Any) -> None:
+        super().__init_subclass__(**kwargs)
+        base = ExecuteInstruction
+        cls._STEADY = ("Execute" in cls.INPUTS and cls._evaluate is base._evaluate
+                       and cls._update is base._update and cls._set_busy is base._set_busy
+                       and cls._running is base._running)
+        cls._HAS_BUSY = "Busy" in cls.OUTPUTS
+
+    def __call__(self, **inputs: Any) -> "Instruction":
+        # Steady state (no edge, nothing ended, nothing to show): an evaluation would change nothing, so
+        # the call returns at once.  Execute is compared by identity with the last sampled value, a Python
+        # bool, so any other value (a numpy bool, an int, a bad value) takes the full evaluation.
+        d = self.__dict__
+        if inputs:
+            if inputs.keys() <= self.INPUTS.keys():
+                d.update(inputs)
+            else:
+                self._set_inputs(inputs)
+        if self._STEADY and d["Execute"] is d["_prev_execute"] and d["_final"] is None:
+            job = d["_job"]
+            if job is None:
+                return self                                   # idle: _update has nothing to do
+            if (job.state is _JOB_BUSY and d["_busy_axis"] is not None
+                    and (d["Busy"] is True or not self._HAS_BUSY)):
+                return self                                   # running, Busy already shown
+        return Instruction.__call__(self)
 
     def _reinit(self) -> None:
         super()._reinit()
@@ -481,9 +522,55 @@ class PowerInstruction(Instruction):
     def _alarm_codes(self, axis: Any) -> tuple[int, int]:
         raise NotImplementedError  # pragma: no cover
 
+    #: the class keeps this evaluation, so the steady-state shortcut of ``__call__`` applies
+    _STEADY: ClassVar[bool] = True
+
+    def __init_subclass__(cls, **kwargs: Any) -> None:
+        super().__init_subclass__(**kwargs)
+        base = PowerInstruction
+        cls._STEADY = (cls._evaluate is base._evaluate and cls._status is base._status
+                       and cls._axis is Instruction._axis and cls._register is Instruction._register)
+
     def _reinit(self) -> None:
         super()._reinit()
         object.__setattr__(self, "_stop_mode", 0)
+        object.__setattr__(self, "_steady", None)
+
+    def __call__(self, **inputs: Any) -> "Instruction":
+        # Steady state: enabled by this instance with the same input objects as the last call, which
+        # showed Status/Busy and no error; the axis still enabled by it, without alarms, in RUN.  A full
+        # evaluation would only write the same stop mode to the axis and the same outputs again.
+        d = self.__dict__
+        if inputs:
+            if inputs.keys() <= self.INPUTS.keys():
+                d.update(inputs)
+            else:
+                self._set_inputs(inputs)
+        key = d["_steady"]
+        if key is not None:
+            axis = key[0]
+            if (axis is d["Axis"] and key[1] is d["Enable"] and key[2] is d["StartMode"]
+                    and key[3] is d["StopMode"] and axis.power_owner is self and axis.state == _ENABLED
+                    and not axis.alarms and axis.ctl.mode == _RUN):
+                axis.stop_mode = d["_stop_mode"]
+                return self
+            object.__setattr__(self, "_steady", None)
+        return Instruction.__call__(self)
+
+    def _steady_key(self, axis: Any, enable: bool) -> tuple[Any, ...] | None:
+        """The inputs under which the next call may take the shortcut, or None.  Only for the kernel's
+        own enable state machine, whose call in this state sets nothing but the stop mode."""
+        if not (enable and self.Enable is True and type(axis).power is _AXIS_POWER
+                and type(axis.power_control) is PowerControl):
+            return None
+        if not (axis.power_owner is self and axis.state == _ENABLED and not axis.alarms
+                and axis.ctl.mode == _RUN):
+            return None
+        if axis.pto and axis.config.pulse_output.generator:
+            # the pulse generator is held by this axis for as long as it is not disabled
+            if axis.ctl._pto_holder.get(axis.config.pulse_output.generator) is not axis:
+                return None
+        return (axis, self.Enable, self.StartMode, self.StopMode)
 
     def _evaluate(self) -> None:
         enable = as_bool(self, "Enable", self.Enable)
@@ -509,6 +596,8 @@ class PowerInstruction(Instruction):
             self._status(axis, enable, self._fault_codes(reject))
             return
         self._status(axis, enable, own)
+        if own is None and self._STEADY:
+            object.__setattr__(self, "_steady", self._steady_key(axis, enable))
 
     def _status(self, axis: Any, enable: bool, own: tuple[int, int] | None) -> None:
         if axis is None:

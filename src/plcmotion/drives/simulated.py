@@ -259,15 +259,20 @@ class ServoDrives(DriveGroup):
         # enabled: exact solution of the first-order speed loop for a command held over dt
         v_on = c + (v0 - c) * self.e
         x_on = c * dt + (v0 - c) * self.tfac
-        # not enabled: the drive ramps down on its own
-        speed = np.abs(v0)
-        dv = self.off_dec * dt
-        v_off = np.sign(v0) * np.maximum(speed - dv, 0.0)
-        with np.errstate(invalid="ignore", divide="ignore"):
-            x_off = np.where(speed > dv, (v0 + v_off) * (0.5 * dt), v0 * speed / (2 * self.off_dec))
-        self.v = np.where(on, v_on, v_off)
+        if on.all():
+            # the usual case: every drive of the group follows its setpoint (the ramp-down is not needed)
+            self.v = v_on
+            dx = x_on
+        else:
+            # not enabled: the drive ramps down on its own
+            speed = np.abs(v0)
+            dv = self.off_dec * dt
+            v_off = np.sign(v0) * np.maximum(speed - dv, 0.0)
+            with np.errstate(invalid="ignore", divide="ignore"):
+                x_off = np.where(speed > dv, (v0 + v_off) * (0.5 * dt), v0 * speed / (2 * self.off_dec))
+            self.v = np.where(on, v_on, v_off)
+            dx = np.where(on, x_on, x_off)
         x_prev = self.x
-        dx = np.where(on, x_on, x_off)
         if self.limited:
             dx = self._limit(v0, dx, dt)
         if self.disturbed:

@@ -228,6 +228,10 @@ class ExecuteInstruction(Instruction):
     #: whether a call may take the steady-state shortcut of ``__call__`` (set per class: only for
     #: classes that keep this class's evaluation, see ``__init_subclass__``)
     _STEADY: ClassVar[bool] = True
+    #: the class has its own ``_running`` hook (the shortcut calls it as the evaluation would)
+    _RUNNING: ClassVar[bool] = False
+    #: showing the held final output again writes the same outputs (the shortcut may skip it)
+    _RESHOW: ClassVar[bool] = True
     #: the class shows Busy (``_set_busy`` writes it)
     _HAS_BUSY: ClassVar[bool] = True
 
@@ -235,27 +239,41 @@ class ExecuteInstruction(Instruction):
         super().__init_subclass__(**kwargs)
         base = ExecuteInstruction
         cls._STEADY = ("Execute" in cls.INPUTS and cls._evaluate is base._evaluate
-                       and cls._update is base._update and cls._set_busy is base._set_busy
-                       and cls._running is base._running)
+                       and cls._update is base._update and cls._set_busy is base._set_busy)
+        cls._RUNNING = cls._running is not base._running
+        # the base's _show / _clear_outputs (and MC_Home's reference mark) depend on the final output alone
+        cls._RESHOW = (cls._show in (base._show, ReferenceMarkOutput._show)
+                       and cls._clear_outputs in (base._clear_outputs, ReferenceMarkOutput._clear_outputs))
         cls._HAS_BUSY = "Busy" in cls.OUTPUTS
 
     def __call__(self, **inputs: Any) -> "Instruction":
-        # Steady state (no edge, nothing ended, nothing to show): an evaluation would change nothing, so
-        # the call returns at once.  Execute is compared by identity with the last sampled value, a Python
-        # bool, so any other value (a numpy bool, an int, a bad value) takes the full evaluation.
+        # Steady state: an evaluation would change nothing, so the call returns at once - idle, running
+        # with Busy shown (only the class's _running hook runs), or a final output held by Execute = TRUE
+        # and shown already.  Execute is compared by identity with the last sampled value, a Python bool,
+        # so any other value (a numpy bool, an int, a bad value) takes the full evaluation.
         d = self.__dict__
         if inputs:
             if inputs.keys() <= self.INPUTS.keys():
                 d.update(inputs)
             else:
                 self._set_inputs(inputs)
-        if self._STEADY and d["Execute"] is d["_prev_execute"] and d["_final"] is None:
+        if self._STEADY and d["Execute"] is d["_prev_execute"]:
             job = d["_job"]
-            if job is None:
-                return self                                   # idle: _update has nothing to do
-            if (job.state is _JOB_BUSY and d["_busy_axis"] is not None
-                    and (d["Busy"] is True or not self._HAS_BUSY)):
-                return self                                   # running, Busy already shown
+            if d["_final"] is None:
+                if job is None:
+                    return self                               # idle: _update has nothing to do
+                if (job.state is _JOB_BUSY and d["_busy_axis"] is not None
+                        and (d["Busy"] is True or not self._HAS_BUSY)):
+                    if self._RUNNING:                         # as in the evaluation, defects contained
+                        try:
+                            self._running(d["_prev_execute"])
+                        except ProgramError:
+                            raise
+                        except Exception as exc:
+                            self._internal_failure(exc)
+                    return self
+            elif d["_latched"] and d["_shown"] and d["_prev_execute"] is True and self._RESHOW:
+                return self                                   # held final output, already shown
         return Instruction.__call__(self)
 
     def _reinit(self) -> None:

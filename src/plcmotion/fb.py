@@ -125,9 +125,17 @@ class Instruction:
     def _out(self, **values: Any) -> None:
         self.__dict__.update(values)
 
+    #: the class has a steady-state shortcut (``_steady``); set per class by the bases that have one
+    _STEADY: ClassVar[bool] = False
+
     def __call__(self, **inputs: Any) -> "Instruction":
         if inputs:
-            self._set_inputs(inputs)
+            if inputs.keys() <= self.INPUTS.keys():
+                self.__dict__.update(inputs)           # the common case, called every cycle: one update
+            else:
+                self._set_inputs(inputs)
+        if self._STEADY and self._steady():
+            return self
         try:
             self._evaluate()
         except ProgramError:
@@ -135,6 +143,10 @@ class Instruction:
         except Exception as exc:       # a defect behind the instruction never reaches the user program
             self._internal_failure(exc)
         return self
+
+    def _steady(self) -> bool:
+        """True when this call, its inputs set, would change nothing: it returns at once (steady state)."""
+        return False
 
     def _internal_failure(self, exc: Exception) -> None:
         """An unexpected exception while the instruction ran: the axis it works on is stopped with the
@@ -246,22 +258,16 @@ class ExecuteInstruction(Instruction):
                        and cls._clear_outputs in (base._clear_outputs, ReferenceMarkOutput._clear_outputs))
         cls._HAS_BUSY = "Busy" in cls.OUTPUTS
 
-    def __call__(self, **inputs: Any) -> "Instruction":
-        # Steady state: an evaluation would change nothing, so the call returns at once - idle, running
-        # with Busy shown (only the class's _running hook runs), or a final output held by Execute = TRUE
-        # and shown already.  Execute is compared by identity with the last sampled value, a Python bool,
-        # so any other value (a numpy bool, an int, a bad value) takes the full evaluation.
+    def _steady(self) -> bool:
+        # Idle, running with Busy shown (only the class's _running hook runs), or a final output held by
+        # Execute = TRUE and shown already.  Execute is compared by identity with the last sampled value, a
+        # Python bool, so any other value (a numpy bool, an int, a bad value) takes the full evaluation.
         d = self.__dict__
-        if inputs:
-            if inputs.keys() <= self.INPUTS.keys():
-                d.update(inputs)
-            else:
-                self._set_inputs(inputs)
-        if self._STEADY and d["Execute"] is d["_prev_execute"]:
+        if d["Execute"] is d["_prev_execute"]:
             job = d["_job"]
             if d["_final"] is None:
                 if job is None:
-                    return self                               # idle: _update has nothing to do
+                    return True                               # idle: _update has nothing to do
                 if (job.state is _JOB_BUSY and d["_busy_axis"] is not None
                         and (d["Busy"] is True or not self._HAS_BUSY)):
                     if self._RUNNING:                         # as in the evaluation, defects contained
@@ -271,10 +277,10 @@ class ExecuteInstruction(Instruction):
                             raise
                         except Exception as exc:
                             self._internal_failure(exc)
-                    return self
+                    return True
             elif d["_latched"] and d["_shown"] and d["_prev_execute"] is True and self._RESHOW:
-                return self                                   # held final output, already shown
-        return Instruction.__call__(self)
+                return True                                   # held final output, already shown
+        return False
 
     def _reinit(self) -> None:
         super()._reinit()
@@ -552,30 +558,25 @@ class PowerInstruction(Instruction):
     def _reinit(self) -> None:
         super()._reinit()
         object.__setattr__(self, "_stop_mode", 0)
-        object.__setattr__(self, "_steady", None)
+        object.__setattr__(self, "_steady_key", None)
 
-    def __call__(self, **inputs: Any) -> "Instruction":
-        # Steady state: enabled by this instance with the same input objects as the last call, which
-        # showed Status/Busy and no error; the axis still enabled by it, without alarms, in RUN.  A full
-        # evaluation would only write the same stop mode to the axis and the same outputs again.
+    def _steady(self) -> bool:
+        # Enabled by this instance with the same input objects as the last call, which showed Status/Busy
+        # and no error; the axis still enabled by it, without alarms, in RUN.  A full evaluation would only
+        # write the same stop mode to the axis and the same outputs again.
         d = self.__dict__
-        if inputs:
-            if inputs.keys() <= self.INPUTS.keys():
-                d.update(inputs)
-            else:
-                self._set_inputs(inputs)
-        key = d["_steady"]
+        key = d["_steady_key"]
         if key is not None:
             axis = key[0]
             if (axis is d["Axis"] and key[1] is d["Enable"] and key[2] is d["StartMode"]
                     and key[3] is d["StopMode"] and axis.power_owner is self and axis.state == _ENABLED
                     and not axis.alarms and axis.ctl.mode == _RUN):
                 axis.stop_mode = d["_stop_mode"]
-                return self
-            object.__setattr__(self, "_steady", None)
-        return Instruction.__call__(self)
+                return True
+            object.__setattr__(self, "_steady_key", None)
+        return False
 
-    def _steady_key(self, axis: Any, enable: bool) -> tuple[Any, ...] | None:
+    def _steady_inputs(self, axis: Any, enable: bool) -> tuple[Any, ...] | None:
         """The inputs under which the next call may take the shortcut, or None.  Only for the kernel's
         own enable state machine, whose call in this state sets nothing but the stop mode."""
         if not (enable and self.Enable is True and type(axis).power is _AXIS_POWER
@@ -615,7 +616,7 @@ class PowerInstruction(Instruction):
             return
         self._status(axis, enable, own)
         if own is None and self._STEADY:
-            object.__setattr__(self, "_steady", self._steady_key(axis, enable))
+            object.__setattr__(self, "_steady_key", self._steady_inputs(axis, enable))
 
     def _status(self, axis: Any, enable: bool, own: tuple[int, int] | None) -> None:
         if axis is None:

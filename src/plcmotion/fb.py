@@ -21,8 +21,13 @@ from typing import Any, ClassVar
 
 import numpy as np
 
+from .kernel.axis import PositioningAxis
 from .kernel.faults import Fault
 from .kernel.jobs import Job, JobState
+from .kernel.power import ENABLED as _ENABLED, PowerControl
+from .kernel.runtime import RUN as _RUN
+
+_AXIS_POWER = PositioningAxis.power
 
 _BOOL_TYPES = (bool, np.bool_)
 
@@ -120,8 +125,17 @@ class Instruction:
     def _out(self, **values: Any) -> None:
         self.__dict__.update(values)
 
+    #: the class has a steady-state shortcut (``_steady``); set per class by the bases that have one
+    _STEADY: ClassVar[bool] = False
+
     def __call__(self, **inputs: Any) -> "Instruction":
-        self._set_inputs(inputs)
+        if inputs:
+            if inputs.keys() <= self.INPUTS.keys():
+                self.__dict__.update(inputs)           # the common case, called every cycle: one update
+            else:
+                self._set_inputs(inputs)
+        if self._STEADY and self._steady():
+            return self
         try:
             self._evaluate()
         except ProgramError:
@@ -129,6 +143,10 @@ class Instruction:
         except Exception as exc:       # a defect behind the instruction never reaches the user program
             self._internal_failure(exc)
         return self
+
+    def _steady(self) -> bool:
+        """True when this call, its inputs set, would change nothing: it returns at once (steady state)."""
+        return False
 
     def _internal_failure(self, exc: Exception) -> None:
         """An unexpected exception while the instruction ran: the axis it works on is stopped with the
@@ -207,6 +225,8 @@ class Instruction:
         return f"<{type(self).__name__} {outs}>"
 
 
+_JOB_BUSY = JobState.BUSY
+
 _DONE_OUTPUTS = {"Done": False, "Busy": False, "CommandAborted": False, "Error": False, "ErrorID": 0,
                  "ErrorInfo": 0}
 
@@ -216,6 +236,51 @@ class ExecuteInstruction(Instruction):
 
     INPUTS = {"Axis": None, "Execute": False}
     OUTPUTS = dict(_DONE_OUTPUTS)
+
+    #: whether a call may take the steady-state shortcut of ``__call__`` (set per class: only for
+    #: classes that keep this class's evaluation, see ``__init_subclass__``)
+    _STEADY: ClassVar[bool] = True
+    #: the class has its own ``_running`` hook (the shortcut calls it as the evaluation would)
+    _RUNNING: ClassVar[bool] = False
+    #: showing the held final output again writes the same outputs (the shortcut may skip it)
+    _RESHOW: ClassVar[bool] = True
+    #: the class shows Busy (``_set_busy`` writes it)
+    _HAS_BUSY: ClassVar[bool] = True
+
+    def __init_subclass__(cls, **kwargs: Any) -> None:
+        super().__init_subclass__(**kwargs)
+        base = ExecuteInstruction
+        cls._STEADY = ("Execute" in cls.INPUTS and cls._evaluate is base._evaluate
+                       and cls._update is base._update and cls._set_busy is base._set_busy)
+        cls._RUNNING = cls._running is not base._running
+        # the base's _show / _clear_outputs (and MC_Home's reference mark) depend on the final output alone
+        cls._RESHOW = (cls._show in (base._show, ReferenceMarkOutput._show)
+                       and cls._clear_outputs in (base._clear_outputs, ReferenceMarkOutput._clear_outputs))
+        cls._HAS_BUSY = "Busy" in cls.OUTPUTS
+
+    def _steady(self) -> bool:
+        # Idle, running with Busy shown (only the class's _running hook runs), or a final output held by
+        # Execute = TRUE and shown already.  Execute is compared by identity with the last sampled value, a
+        # Python bool, so any other value (a numpy bool, an int, a bad value) takes the full evaluation.
+        d = self.__dict__
+        if d["Execute"] is d["_prev_execute"]:
+            job = d["_job"]
+            if d["_final"] is None:
+                if job is None:
+                    return True                               # idle: _update has nothing to do
+                if (job.state is _JOB_BUSY and d["_busy_axis"] is not None
+                        and (d["Busy"] is True or not self._HAS_BUSY)):
+                    if self._RUNNING:                         # as in the evaluation, defects contained
+                        try:
+                            self._running(d["_prev_execute"])
+                        except ProgramError:
+                            raise
+                        except Exception as exc:
+                            self._internal_failure(exc)
+                    return True
+            elif d["_latched"] and d["_shown"] and d["_prev_execute"] is True and self._RESHOW:
+                return True                                   # held final output, already shown
+        return False
 
     def _reinit(self) -> None:
         super()._reinit()
@@ -481,9 +546,50 @@ class PowerInstruction(Instruction):
     def _alarm_codes(self, axis: Any) -> tuple[int, int]:
         raise NotImplementedError  # pragma: no cover
 
+    #: the class keeps this evaluation, so the steady-state shortcut of ``__call__`` applies
+    _STEADY: ClassVar[bool] = True
+
+    def __init_subclass__(cls, **kwargs: Any) -> None:
+        super().__init_subclass__(**kwargs)
+        base = PowerInstruction
+        cls._STEADY = (cls._evaluate is base._evaluate and cls._status is base._status
+                       and cls._axis is Instruction._axis and cls._register is Instruction._register)
+
     def _reinit(self) -> None:
         super()._reinit()
         object.__setattr__(self, "_stop_mode", 0)
+        object.__setattr__(self, "_steady_key", None)
+
+    def _steady(self) -> bool:
+        # Enabled by this instance with the same input objects as the last call, which showed Status/Busy
+        # and no error; the axis still enabled by it, without alarms, in RUN.  A full evaluation would only
+        # write the same stop mode to the axis and the same outputs again.
+        d = self.__dict__
+        key = d["_steady_key"]
+        if key is not None:
+            axis = key[0]
+            if (axis is d["Axis"] and key[1] is d["Enable"] and key[2] is d["StartMode"]
+                    and key[3] is d["StopMode"] and axis.power_owner is self and axis.state == _ENABLED
+                    and not axis.alarms and axis.ctl.mode == _RUN):
+                axis.stop_mode = d["_stop_mode"]
+                return True
+            object.__setattr__(self, "_steady_key", None)
+        return False
+
+    def _steady_inputs(self, axis: Any, enable: bool) -> tuple[Any, ...] | None:
+        """The inputs under which the next call may take the shortcut, or None.  Only for the kernel's
+        own enable state machine, whose call in this state sets nothing but the stop mode."""
+        if not (enable and self.Enable is True and type(axis).power is _AXIS_POWER
+                and type(axis.power_control) is PowerControl):
+            return None
+        if not (axis.power_owner is self and axis.state == _ENABLED and not axis.alarms
+                and axis.ctl.mode == _RUN):
+            return None
+        if axis.pto and axis.config.pulse_output.generator:
+            # the pulse generator is held by this axis for as long as it is not disabled
+            if axis.ctl._pto_holder.get(axis.config.pulse_output.generator) is not axis:
+                return None
+        return (axis, self.Enable, self.StartMode, self.StopMode)
 
     def _evaluate(self) -> None:
         enable = as_bool(self, "Enable", self.Enable)
@@ -509,6 +615,8 @@ class PowerInstruction(Instruction):
             self._status(axis, enable, self._fault_codes(reject))
             return
         self._status(axis, enable, own)
+        if own is None and self._STEADY:
+            object.__setattr__(self, "_steady_key", self._steady_inputs(axis, enable))
 
     def _status(self, axis: Any, enable: bool, own: tuple[int, int] | None) -> None:
         if axis is None:

@@ -43,6 +43,7 @@ DEFAULT_TAGS: tuple[str, ...] = (
     "Decelerating", "PositioningCommand", "VelocityCommand"))
 
 _FLUSH_ROWS = 4096          # rows per CSV write: few syscalls, small buffer
+_PENDING_BYTES = 1 << 21    # at most this much of rows waiting for the stream (fewer rows when wide)
 _READ_ROWS = 8192           # rows per block when reading a CSV back
 _BAD_NAME_CHARS = ',"\r\n'
 
@@ -283,7 +284,10 @@ class Trace:
         self._getters = [getter for _, getter in table]
         self._store = _Decimator(len(self.columns), keep)
         self._stream: IO[str] | None = None
-        self._pending: list[list[float]] = []       # rows not yet written to the stream
+        # rows not yet written to the stream: a preallocated float block, filled up to ``_npending``
+        rows = max(16, min(_FLUSH_ROWS, _PENDING_BYTES // (8 * len(self.columns))))
+        self._pending = np.empty((rows, len(self.columns))) if stream_to is not None else np.empty((0, 0))
+        self._npending = 0
         self._streamed = False                      # the stream file was created already
         self._recording = False
 
@@ -336,8 +340,10 @@ class Trace:
             row = self._careful_row(t)
         self._store.add(row)
         if self._stream is not None:
-            self._pending.append(row)
-            if len(self._pending) >= _FLUSH_ROWS:
+            pending = self._pending
+            pending[self._npending] = row
+            self._npending += 1
+            if self._npending == len(pending):
                 self._flush()
 
     def _careful_row(self, t: float) -> list[float]:
@@ -355,9 +361,10 @@ class Trace:
         return row
 
     def _flush(self) -> None:
-        if self._pending and self._stream is not None:
+        if self._npending and self._stream is not None:
             try:
-                self._stream.write(_csv_text(self._pending))
+                # tolist() gives back the very floats sampled, so the text is that of the rows themselves
+                self._stream.write(_csv_text(self._pending[:self._npending].tolist()))
                 self._stream.flush()
             except OSError as exc:
                 # a full disk must not stop the servo cycle (this runs in its hook): stop streaming, keep the
@@ -366,7 +373,7 @@ class Trace:
                 stream, self._stream = self._stream, None
                 with contextlib.suppress(OSError):
                     stream.close()
-            self._pending = []
+        self._npending = 0
 
     # --- results ---------------------------------------------------------------------------------------
     @property

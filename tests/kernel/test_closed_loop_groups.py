@@ -36,3 +36,32 @@ def test_kernel_control_stage_runs_only_with_a_closed_loop_group(closed):
     bank.sp_p[i], bank.act_p[i], bank.sp_v[i] = 5.0, 4.5, 20.0
     servo_cycle.control(SimpleNamespace(_closed_loop=closed, bank=bank), 0.0)
     assert float(bank.cmd_v[i]) == (1.0 * 20.0 + 10.0 * 0.5 if closed else 0.0)
+
+
+def test_kernel_loop_mask_counts_follow_enable_and_disable():
+    """S7-1200 V6 §5.4.4.7, §11.1.1: an enabled, position-controlled servo axis is in the position loop; a
+    disabled one has its setpoint follow the actual value.  The bank counts both masks for the servo cycle,
+    and a partly closed loop still gives the enabled axis Kpc * v + Kv * e and the disabled one its
+    setpoint velocity."""
+    from plcmotion.s7_1200 import MC_Power
+
+    ctl = Controller(servo_cycle=0.001, app_cycle=0.004)
+    servo = {"Actor": {"Type": 1, "DriveParameter": {"MaxSpeed": 3000.0, "ReferenceSpeed": 3000.0}}}
+    a = ctl.add_positioning_axis("A", servo)
+    b = ctl.add_positioning_axis("B", servo)
+    bank = ctl.bank
+    assert (bank.n_closed, bank.n_follow) == (0, 2)           # both disabled: setpoints follow
+    power = MC_Power()
+    for _ in range(100):
+        power(Axis=a, Enable=True)
+        ctl.step()
+    assert power.Status
+    assert list(bank.closed_loop) == [True, False] and list(bank.follow_act) == [False, True]
+    assert (bank.n_closed, bank.n_follow) == (1, 1)
+    assert float(bank.cmd_v[b.index]) == float(bank.sp_v[b.index])    # outside the loop: setpoint velocity
+    for _ in range(100):
+        power(Axis=a, Enable=False)
+        ctl.step()
+    assert not power.Status
+    assert (bank.n_closed, bank.n_follow) == (0, 2)
+    assert not bank.closed_loop.any() and bank.follow_act.all()

@@ -172,6 +172,15 @@ def _limit_value(limit: float | None, what: str) -> float:
     return float(limit)
 
 
+def _selector(idx: np.ndarray) -> slice | np.ndarray:
+    """Where a group's members sit in the axis bank: a slice when they are consecutive axes (the usual
+    case; a view instead of a gathered copy), else the index array."""
+    n = len(idx)
+    if n and int(idx[-1]) - int(idx[0]) == n - 1 and bool(np.all(np.diff(idx) == 1)):
+        return slice(int(idx[0]), int(idx[0]) + n)
+    return idx
+
+
 class ServoDrives(DriveGroup):
     """Closed-loop drives (PROFIdrive telegram or analog speed setpoint) with incremental encoders.
 
@@ -227,6 +236,11 @@ class ServoDrives(DriveGroup):
         for name in self._FIELDS:
             setattr(self, name, np.append(getattr(self, name), values[name]))
         self.idx = np.append(self.idx, index)
+        self.sel = _selector(self.idx)
+        # constant factors of the setpoint word (computed as the write did every cycle)
+        self.neg_vlim = -self.vlim
+        self.wscale = 60.0 * self.qscale
+        self.wmin = -self.qmax - 1.0
         self.en = np.append(self.en, False)
         self.flt = np.append(self.flt, False)
         self.pulses = np.append(self.pulses, False)
@@ -259,15 +273,20 @@ class ServoDrives(DriveGroup):
         # enabled: exact solution of the first-order speed loop for a command held over dt
         v_on = c + (v0 - c) * self.e
         x_on = c * dt + (v0 - c) * self.tfac
-        # not enabled: the drive ramps down on its own
-        speed = np.abs(v0)
-        dv = self.off_dec * dt
-        v_off = np.sign(v0) * np.maximum(speed - dv, 0.0)
-        with np.errstate(invalid="ignore", divide="ignore"):
-            x_off = np.where(speed > dv, (v0 + v_off) * (0.5 * dt), v0 * speed / (2 * self.off_dec))
-        self.v = np.where(on, v_on, v_off)
+        if on.all():
+            # the usual case: every drive of the group follows its setpoint (the ramp-down is not needed)
+            self.v = v_on
+            dx = x_on
+        else:
+            # not enabled: the drive ramps down on its own
+            speed = np.abs(v0)
+            dv = self.off_dec * dt
+            v_off = np.sign(v0) * np.maximum(speed - dv, 0.0)
+            with np.errstate(invalid="ignore", divide="ignore"):
+                x_off = np.where(speed > dv, (v0 + v_off) * (0.5 * dt), v0 * speed / (2 * self.off_dec))
+            self.v = np.where(on, v_on, v_off)
+            dx = np.where(on, x_on, x_off)
         x_prev = self.x
-        dx = np.where(on, x_on, x_off)
         if self.limited:
             dx = self._limit(v0, dx, dt)
         if self.disturbed:
@@ -277,8 +296,9 @@ class ServoDrives(DriveGroup):
         if self.zm_dir.any():
             self._zero_marks(x_prev)
         act = np.floor(self.x / self.q) * self.q + self.off
-        bank.act_v[self.idx] = (act - self.last) / dt
-        bank.act_p[self.idx] = act
+        sel = self.sel
+        bank.act_v[sel] = (act - self.last) / dt
+        bank.act_p[sel] = act
         self.last = act
 
     @staticmethod
@@ -314,9 +334,11 @@ class ServoDrives(DriveGroup):
         if len(self.idx):
             # the speed setpoint travels as an integer word: 16#4000 / 16#40000000 = 100 % of the reference
             # speed (PROFIdrive), 27648 = 100 % on an analog output (§2.2.2, §5.4.3.2)
-            cmd = np.clip(bank.cmd_v[self.idx], -self.vlim, self.vlim)
-            self.word = np.clip(np.round(cmd * (60.0 * self.qscale) / self.lead), -self.qmax - 1.0, self.qmax)
-            self.cmd = self.word * self.lead / (60.0 * self.qscale)
+            # np.minimum(np.maximum()) gives np.clip's result bit for bit (signed zeros, NaN), without its wrappers
+            cmd = np.minimum(np.maximum(bank.cmd_v[self.sel], self.neg_vlim), self.vlim)
+            word = np.minimum(np.maximum((cmd * self.wscale / self.lead).round(), self.wmin), self.qmax)
+            self.word = word
+            self.cmd = word * self.lead / self.wscale
 
     def _zero_marks(self, x_prev: np.ndarray) -> None:
         """Latch the exact encoder value at a zero mark crossed in the armed direction (hardware latch)."""
@@ -404,6 +426,7 @@ class SetpointDrives(DriveGroup):
     def add(self, index: int, spec: DriveSpec, servo_cycle: float, t: float) -> DriveChannel:
         pulse = spec.pulse_length if self.stepper else 0.0
         self.idx = np.append(self.idx, index)
+        self.sel = _selector(self.idx)
         self.pulse = np.append(self.pulse, pulse)
         self.grid = np.append(self.grid, 0.0)
         self.mech_offset = np.append(self.mech_offset, spec.plant.initial_position)
@@ -415,8 +438,9 @@ class SetpointDrives(DriveGroup):
     def write(self, bank: Any, t: float) -> None:
         if not len(self.idx):
             return
-        sp = bank.sp_p[self.idx]
+        sel = self.sel
+        sp = bank.sp_p[sel]
         if self.stepper:
-            sp = np.round((sp - self.grid) / self.pulse) * self.pulse + self.grid
-        bank.act_p[self.idx] = sp
-        bank.act_v[self.idx] = bank.sp_v[self.idx]
+            sp = ((sp - self.grid) / self.pulse).round() * self.pulse + self.grid
+        bank.act_p[sel] = sp
+        bank.act_v[sel] = bank.sp_v[sel]

@@ -113,7 +113,7 @@ class PositioningAxis(TagViews):
         x0 = spec.plant.initial_position if self.servo else 0.0
         b.act_p[i] = b.sp_p[i] = x0
         b.servo[i] = self.servo
-        b.follow_act[i] = self.servo
+        self._set_follow_act(self.servo)
         self._apply_bank_config()
         if self.absolute_encoder():
             # an absolute encoder gives its position at once; the adjustment (modes 6/7) is retentive
@@ -260,12 +260,20 @@ class PositioningAxis(TagViews):
         self.drive.reconfigure(c.drive)
         self._set_loop_flags()
 
+    def _set_follow_act(self, follow: bool) -> None:
+        b, i = self.ctl.bank, self.index
+        if follow != b.follow_act[i]:
+            b.follow_act[i] = follow
+            b.n_follow += 1 if follow else -1
+
     def _set_loop_flags(self) -> None:
         b, i = self.ctl.bank, self.index
         on = self.state in (ENABLED, DISABLING) and self.servo
         closed = on and self.position_controlled
-        b.closed_loop[i] = closed
-        b.follow_act[i] = self.servo and not closed
+        if closed != b.closed_loop[i]:
+            b.closed_loop[i] = closed
+            b.n_closed += 1 if closed else -1          # counted: the servo cycle skips uniform masks
+        self._set_follow_act(self.servo and not closed)
         fe = closed and self.config.following_error.enabled
         if fe != b.fe_on[i]:
             b.fe_on[i] = fe

@@ -42,6 +42,10 @@ BOOL_FIELDS = (
 class AxisBank:
     def __init__(self) -> None:
         self.n = 0
+        # how many elements of closed_loop / follow_act are TRUE, kept by the axes that set them
+        # (PositioningAxis._set_loop_flags) so that the servo cycle can skip a uniform mask
+        self.n_closed = 0
+        self.n_follow = 0
         for name in FLOAT_FIELDS:
             setattr(self, name, np.zeros(0))
         for name in BOOL_FIELDS:

@@ -150,10 +150,13 @@ def control(ctl: Controller, t: float) -> None:
             # a simulation mode of the family: the setpoints are the actual values, the drive stands still
             b.act_p = np.where(b.simulated, b.sp_p, b.act_p)
             b.act_v = np.where(b.simulated, b.sp_v, b.act_v)
-        b.sp_p = np.where(b.follow_act, b.act_p, b.sp_p)
+        # the masks are counted (``AxisBank.n_follow``, ``n_closed``): a uniform one needs no np.where
+        if b.n_follow:
+            b.sp_p = np.where(b.follow_act, b.act_p, b.sp_p)
         err = b.sp_p - b.act_p
         b.fe = err
-        b.cmd_v = np.where(b.closed_loop, b.kpc * b.sp_v + b.kv * err, b.sp_v)
+        cmd = b.kpc * b.sp_v + b.kv * err
+        b.cmd_v = cmd if b.n_closed == b.n else np.where(b.closed_loop, cmd, b.sp_v)
 
 
 def monitor(ctl: Controller, t: float) -> None:

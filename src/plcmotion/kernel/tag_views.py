@@ -9,6 +9,7 @@ tag: the vocabularies are the families' (``s7_1200.technology.tags``, ``s7_1500.
 from __future__ import annotations
 
 import difflib
+import functools
 from typing import Any, Callable, Protocol
 
 from .schema import P as PLANT
@@ -211,7 +212,7 @@ class TagViews:
         canon = self._dynamic_aliases.get(path, path)
         getter = self._dynamic.get(canon)
         if getter is not None:
-            return lambda: getter(self)  # type: ignore[arg-type]
+            return functools.partial(getter, self)    # no Python frame of its own: traces call it per sample
         word, _, bit = canon.rpartition(".")
         word_getter = self._dynamic.get(word)
         if word_getter is not None and bit:

@@ -81,12 +81,19 @@ def scenarios_part1(rnd: random.Random, ep: Any, gen: Any, Op: Any) -> None:
         if rnd.random() < 0.4:
             ep.ops += [Op(min(ep.cycles - 1, c + rnd.randint(5, 60)), "in", f"power_{name}", "StopMode", 3),
                        Op(min(ep.cycles - 1, c + rnd.randint(5, 60)), "in", f"power_{name}", "Enable", False)]
-    stops = _real(gen, lambda p: "TypeOfAxis.NumberOfDataSets.DataSet_1.ClampingMonitoring.recognitionMode" in p)
+    stops = _real(gen, lambda p: "TypeOfAxis.NumberOfDataSets.DataSet_1.ClampingMonitoring.recognitionMode" in p
+                  and p["Wizard.Technology"] != 0)
     if stops and rnd.random() < 0.6:
         name = rnd.choice(stops)
         ep.cycles = max(ep.cycles, rnd.randint(100, 300))
-        _add(ep, gen, "endpos", "MC_MoveToEndPos", Ref(name), 0.5, Direction=rnd.choice((0, 1, 1, 3)))
+        params = next(a for a in ep.axes if a["name"] == name)["params"]
+        torque = params.get("TypeOfAxis.SetPointDriverInfo.DriveData.maxTorque", 3.2) * rnd.uniform(0.05, 1.1)
+        _add(ep, gen, "endpos", "MC_MoveToEndPos", Ref(name), 0.3, Direction=rnd.choice((0, 1, 1, 3)),
+             Velocity=round(gen.vmax[name] * rnd.uniform(0.1, 0.5), 2), Torque=round(torque, 3))
+        power = next(f for f in ep.fbs if f["name"] == f"power_{name}")
+        power["init"].update(Enable=True, Mode=0)         # enabled position-controlled (§6.2.11)
         c = rnd.randint(1, 20)
+        ep.ops += [Op(c - 1, "in", power["name"], "Enable", True), Op(c - 1, "in", power["name"], "Mode", 0)]
         _pulse(ep, Op, c, "endpos", rnd.randint(1, 200))
         if rnd.random() < 0.6:
             cls = rnd.choice(("MC_MoveRelative", "MC_MoveVelocity", "MC_MoveToEndPos", "MC_Stop", "MC_Halt",

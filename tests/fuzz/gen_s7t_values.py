@@ -27,8 +27,25 @@ DRIVE_PARAMETERS = (922, 1082, 1120, 2000, 63, 947, 0, 1, 999, 65535)
 _BAD_INT = (-1, 32768, -32769, 2 ** 31, HUGE_INT, None, "1", 1.5, float("nan"))
 
 
+def _configured() -> tuple[int, ...]:
+    """The numbers a plain positioning axis resolves (about a third of the list of §9.4: the others are
+    parameters of features an axis has only when configured, or of other TOs' kinds), so that most reads
+    and writes reach a value."""
+    from plcmotion import Controller
+    from plcmotion.s7t.technology import parameter_access as PA
+    axis = Controller(family="S7-Technology").add_positioning_axis("A", {"Wizard.Virtual": 1})
+    return tuple(p.number for p in _PARAMS if not isinstance(PA.resolve(axis, p.number, 1), int))
+
+
+_CONFIGURED: list[tuple[int, ...]] = []
+
+
 def parameter_number(rnd: random.Random) -> Any:
     r = rnd.random()
+    if r < 0.6:
+        if not _CONFIGURED:
+            _CONFIGURED.append(_configured())
+        return rnd.choice(_CONFIGURED[0])
     if r < 0.85:
         return rnd.choice(_PARAMS).number
     if r < 0.95:

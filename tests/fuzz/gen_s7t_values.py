@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import random
 import struct
-from typing import Any
+from typing import Any, Callable
 
 from plcmotion.s7t.technology.enums import ENUMS
 from plcmotion.s7t.technology.parameters import all_parameters
@@ -53,13 +53,17 @@ def parameter_number(rnd: random.Random) -> Any:
     return rnd.choice(_BAD_INT)
 
 
-def parameter_index(rnd: random.Random) -> Any:
+def _tiers(rnd: random.Random, good: Callable[[], Any] | None, p_good: float, near: tuple, bad: tuple) -> Any:
+    """``good()`` with probability ``p_good`` (never when None), else one of ``near`` (plausible but often
+    refused) up to 90 %, else one of ``bad`` (out of range, wrong type)."""
     r = rnd.random()
-    if r < 0.6:
-        return 1
-    if r < 0.9:
-        return rnd.choice((0, 2, 3, 4, 8, 16, 17))
-    return rnd.choice(_BAD_INT)
+    if r < p_good and good is not None:
+        return good()
+    return rnd.choice(near) if r < 0.9 else rnd.choice(bad)
+
+
+def parameter_index(rnd: random.Random) -> Any:
+    return _tiers(rnd, lambda: 1, 0.6, (0, 2, 3, 4, 8, 16, 17), _BAD_INT)
 
 
 def parameter_real(rnd: random.Random, number: Any) -> Any:
@@ -139,30 +143,17 @@ def write_area(rnd: random.Random) -> Any:
 
 
 def dp_address(rnd: random.Random, slaves: int) -> Any:
-    r = rnd.random()
-    if r < 0.75 and slaves:
-        return DP_BASE + 32 * rnd.randrange(slaves)
-    if r < 0.9:
-        return rnd.choice((0, 64, 255, 257, DP_BASE + 32 * slaves, 1023))
-    return rnd.choice(_BAD_INT)
+    return _tiers(rnd, (lambda: DP_BASE + 32 * rnd.randrange(slaves)) if slaves else None, 0.75,
+                  (0, 64, 255, 257, DP_BASE + 32 * slaves, 1023), _BAD_INT)
 
 
 def diagnostic_address(rnd: random.Random, slaves: int) -> Any:
-    r = rnd.random()
-    if r < 0.75 and slaves:
-        return DP_DIAG - rnd.randrange(slaves)
-    if r < 0.9:
-        return rnd.choice((0, 256, DP_DIAG - slaves, 1024))
-    return rnd.choice(_BAD_INT)
+    return _tiers(rnd, (lambda: DP_DIAG - rnd.randrange(slaves)) if slaves else None, 0.75,
+                  (0, 256, DP_DIAG - slaves, 1024), _BAD_INT)
 
 
 def record_number(rnd: random.Random) -> Any:
-    r = rnd.random()
-    if r < 0.7:
-        return 47
-    if r < 0.9:
-        return rnd.choice((0, 1, 46, 48, 255))
-    return rnd.choice((-1, 256, HUGE_INT, None, 47.0))
+    return _tiers(rnd, lambda: 47, 0.7, (0, 1, 46, 48, 255), (-1, 256, HUGE_INT, None, 47.0))
 
 
 def drive_parameter(rnd: random.Random) -> Any:

@@ -49,7 +49,8 @@ class S7TOracle:
         if cls == "MC_ReadPeriphery" and out.get("DataValid") and (not busy or error):
             yield ("exclusive", name, f"{cls} DataValid without Busy or with Error", (cls, "DataValid"))
         if cls == "MC_MoveToEndPos" and out.get("InClamping") and (not busy or error or out.get("CommandAborted")):
-            yield ("exclusive", name, f"{cls} InClamping without Busy or with Error/CommandAborted", (cls, "InClamping"))
+            yield ("exclusive", name, f"{cls} InClamping without Busy or with Error/CommandAborted",
+                   (cls, "InClamping"))
         if cls == "MC_ReadSysParameter" and not math.isfinite(_float(out.get("Value", 0.0))):
             yield ("nonfinite", name, f"{cls}.Value = {out.get('Value')!r}", (cls, "Value"))
         status = out.get("Status")

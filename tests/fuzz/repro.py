@@ -135,7 +135,8 @@ def script(ep: Episode, failure: Failure | None = None) -> str:
             lines.append(f"TO[{a['name']!r}] = ctl.add_positioning_axis({a['name']!r}, {lit(a['params'])})")
     for c in ep.cams:
         if "db" in c:                  # S7-Technology: a cam disk (valve profile)
-            lines.append(f"TO[{c['name']!r}] = add_cam_disk(ctl, {c['name']!r}, {lit(c['points'])}, db_number={c['db']})")
+            lines.append(f"TO[{c['name']!r}] = add_cam_disk(ctl, {c['name']!r}, {lit(c['points'])}, "
+                         f"db_number={c['db']})")
             continue
         lines.append(f"TO[{c['name']!r}] = ctl.add_cam({c['name']!r}, {lit(c['points'])}, "
                      f"interpolation_mode={c['interpolation']}, boundary_conditions={c['boundary']})")

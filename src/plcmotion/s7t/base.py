@@ -44,8 +44,10 @@ class _S7T:
     TECHNOLOGIES: ClassVar[tuple[int, ...]] = ALL_AXES
     #: the instruction also takes the MCDevice DB (MC_Reset)
     TAKES_MCDEVICE: ClassVar[bool] = False
-    #: the instruction serves a deactivated technology object (MC_ActivateTO); others give 16#8045
+    #: the instruction serves a deactivated technology object (MC_ActivateTO); others give DEACTIVATED_ERROR
     WHILE_DEACTIVATED: ClassVar[bool] = False
+    #: the refusal at a deactivated object (§6.7.2: it takes no commands): 16#8045 (docs/s7t/decisions.md D75)
+    DEACTIVATED_ERROR: ClassVar[int] = E.NOT_ALLOWED_IN_STATE
 
     ENO = True
 
@@ -97,9 +99,7 @@ class _S7T:
         if not isinstance(to, AxisT) or to.technology not in self.TECHNOLOGIES:
             raise self._listed(E.NOT_SUPPORTED_BY_TO, E.INVALID_TECHNOLOGY_DB)
         if not self.WHILE_DEACTIVATED and activation.deactivated(to):
-            # deactivated by MC_ActivateTO, it takes no commands (§6.7.2): 8045; MC_Stop and MC_SetCharacteristic
-            # list no 8045, they give 8044 (the object does not take the command)
-            raise self._listed(E.NOT_ALLOWED_IN_STATE, E.NOT_SUPPORTED_BY_TO)
+            raise InstructionError(self.DEACTIVATED_ERROR)      # deactivated by MC_ActivateTO (§6.7.2)
         self._register(to)
         object.__setattr__(self, "_to", to)
         return to

@@ -18,13 +18,12 @@ from .technology.device import TechnologyDevice, current
 from .technology.hydraulic_params import MAX_TORQUE, TORQUE_TELEGRAMS, VALVE_PROFILES
 
 
-def _refused(fb: ExecuteInstruction, axis: AxisT, command: str) -> None:
-    """8045 (MC_Stop active, restart running) or 8056 (clamped) from the override policy (§6.8.3); an FB whose
-    ErrorID table lists no 8045 (MC_SetCharacteristic, §6.2.13) gives 8044: the object does not take it now."""
+def _refused(axis: AxisT, command: str) -> None:
+    """8045 (MC_Stop active, restart running) or 8056 (clamped) from the override policy (§6.8.3)."""
     reject = O.refusal(command, axis._activities())
     if reject is not None:
         code = O.error_id(reject.fault())
-        raise fb._listed(code if code is not None else E.NOT_ALLOWED_IN_STATE, E.NOT_SUPPORTED_BY_TO)
+        raise InstructionError(code if code is not None else E.NOT_ALLOWED_IN_STATE)
 
 
 def _done(owner: Any) -> Job:
@@ -57,7 +56,7 @@ class MC_SetTorqueLimit(ExecuteInstruction):  # noqa: N801 - instruction name of
             raise InstructionError(E.INVALID_AXIS_TYPE)
         if value < 0.0 or axis.cfg["Wizard.Telegram"] not in TORQUE_TELEGRAMS:
             raise InstructionError(E.ILLEGAL_PARAMETER)
-        _refused(self, axis, O.SET_TORQUE_LIMIT)
+        _refused(axis, O.SET_TORQUE_LIMIT)
         if axis.state != "enabled":
             raise InstructionError(E.NOT_ALLOWED_IN_STATE)     # its table has no 8040 (§6.2.12)
         limit = (value if value > 0.0 else axis.eff[MAX_TORQUE]) if enable else None
@@ -92,7 +91,7 @@ class MC_SetCharacteristic(ExecuteInstruction):  # noqa: N801
             raise InstructionError(E.INVALID_AXIS_TYPE)
         if cam.db_number not in [axis.cfg[tag] for tag in VALVE_PROFILES]:
             raise InstructionError(E.MISSING_CONNECTION)
-        _refused(self, axis, O.SET_CHARACTERISTIC)
+        _refused(axis, O.SET_CHARACTERISTIC)
         axis.drive.set_characteristic(cam.characteristic)
         axis.__dict__["valve_profile"] = cam
         return _done(self)

@@ -88,6 +88,29 @@ with Busy (S7-Technology V4.1 §5.8); 10. errorid: ErrorID is 0 or a code of the
 failure of kind "internal"; 6. also strictly: a generated setpoint does not pass an effective SW limit
 switch at all (§4.5.7.3: the axis travels up to the switch).
 
+S7-Technology part 1 beyond the motion commands (``gen_s7t_objects``, ``gen_s7t_values``, ``gen_s7t_scenarios``):
+hydraulic axes on Q and P/Q valves (force limit, output limits 1401/1402, load force, valve overlap) with cam
+disks as valve profiles; homing configurations (homingMode 22/23/24/88, passive modes, reference cam and
+external zero mark inputs, zero marks, distance monitoring) on the simulated plant near the start; 2-4 data
+sets with every changeMode; fixed end stops with recognitionMode 105-107 on telegrams 102/105/106; the FBs
+MC_Home (Mode 0-9), MC_ChangeDataset, MC_MoveToEndPos, MC_SetTorqueLimit, MC_SetCharacteristic,
+MC_ReadSysParameter / MC_WriteParameter (numbers of §9.4 and invalid ones, values in and out of range, NaN,
+inf, huge, ENUM codes), MC_Read/WritePeriphery, MC_Read/WriteRecord, MC_Read/WriteDriveParameter (valid and
+wrong addresses, empty / short / long / read-only / missing areas), MC_ActivateTO and MC_ActivateDPSlave
+(deactivation while moving, commands to a deactivated object).  Further invariants (``oracle_s7t``):
+11. exclusive: MC_ReadPeriphery DataValid only with Busy and without Error (§6.7.6); MC_MoveToEndPos
+InClamping only with Busy, without Error/CommandAborted (§6.2.11);
+12. nonfinite: MC_ReadSysParameter.Value is finite; a hydraulic axis's valve output and cylinder force are
+finite;
+13. errorid: MC_ActivateTO / MC_ActivateDPSlave Status is one of the manual's (§6.7.2, §6.7.3); a read record /
+drive parameter is Done with DataLength within its Data area;
+14. dataset: at the rising Done of MC_ChangeDataset the data set it was started with is in force (§6.2.5);
+15. homing: at the rising Done of MC_Home Mode 0, 1, 2, 3 or 5 the axis is homed (§6.2.2);
+16. activation: a deactivated axis is disabled and its setpoint velocity is 0 (§6.7.2);
+17. hydraulic: the valve output stays within the effective manipulated variable limits (1401/1402, one
+count of the output word of tolerance); stuck: the §6.7 FBs, MC_SetTorqueLimit and MC_SetCharacteristic are
+not Busy longer than 2.5 s.
+
 Not checked (yet): HW limit switches, physical drive behaviour (the simulated drive's actual values are
 only required to be finite), following error or positioning monitoring alarms, the exact ramps of the
 manual's function charts (the acceptance tests do that), user programs (the harness has none).

@@ -16,6 +16,8 @@ import math
 import random
 from typing import Any
 
+from . import gen_s7t_objects as O
+from . import gen_s7t_values as PV
 from . import values as V
 from .values import Ref
 
@@ -43,7 +45,37 @@ CATALOG: dict[str, dict[str, Any]] = {
     "MC_MoveVelocity": {"Axis": "axis", "Execute": "bool", "Velocity": "vel", **_DYN,
                         "Direction": ("int", (0, 1, 2, 3, 4)), "Current": "bool", "PositionControl": "bool",
                         "Mode": ("int", (0, 1)), "DoneFlag": _FLAG},
+    # Mode 9 is refused (16#8043); which of 0-8 an axis takes depends on its encoder (§6.2.2 note)
+    "MC_Home": {"Axis": "axis", "Execute": "bool", "Position": "pos", "Mode": ("int", tuple(range(10))),
+                "DoneFlag": _FLAG},
+    "MC_ChangeDataset": {"Axis": "axis", "Execute": "bool", "SyncEncoder": "bool",
+                         "Dataset": ("int", (0, 1, 1, 2, 2, 3, 4, 5, 16, 17)), "DoneFlag": _FLAG},
+    "MC_MoveToEndPos": {"Axis": "axis", "Execute": "bool", "Direction": ("int", (0, 1, 2, 3, 4)), "Torque": "torque",
+                        "Velocity": "vel", **_DYN, "DoneFlag": _FLAG},
+    "MC_SetTorqueLimit": {"Axis": "axis", "Execute": "bool", "EnableLimit": "bool", "MaxTorque": "torque",
+                          "DoneFlag": _FLAG},
+    "MC_SetCharacteristic": {"Axis": "axis", "CamTable": "cam", "Execute": "bool", "Mode": ("int", (0, 0, 0, 1)),
+                             "DoneFlag": _FLAG},
+    "MC_ReadSysParameter": {"Axis": "any_to", "Execute": "bool", "ParameterNumber": "pnum", "Index": "pidx"},
+    "MC_WriteParameter": {"Axis": "any_to", "Execute": "bool", "ParameterNumber": "pnum", "Index": "pidx",
+                          "Value": "preal", "ValueDInt": "pdint", "ValueDword1": "dword", "ValueDword2": "dword",
+                          "ValueBool": "bool"},
+    "MC_ReadPeriphery": {"Enable": "bool", "InputOutput": "bool", "ByteAddress": "byteaddr", "Data": "rdata"},
+    "MC_WritePeriphery": {"Execute": "bool", "ByteAddress": "byteaddr", "Data": "wdata", "DoneFlag": _FLAG},
+    "MC_ReadRecord": {"Execute": "bool", "InOut": "bool", "Address": "dpaddr", "RecordNumber": "record",
+                      "Data": "rdata", "DoneFlag": _FLAG},
+    "MC_WriteRecord": {"Execute": "bool", "InOut": "bool", "Address": "dpaddr", "RecordNumber": "record",
+                       "Data": "wdata", "DoneFlag": _FLAG},
+    "MC_ReadDriveParameter": {"Execute": "bool", "InOut": "bool", "Address": "dpaddr", "ParameterNumber": "dpnum",
+                              "SubIndex": "sub", "NumberOfElements": "nelem", "Data": "rdata", "DoneFlag": _FLAG},
+    "MC_WriteDriveParameter": {"Execute": "bool", "InOut": "bool", "Address": "dpaddr", "ParameterNumber": "dpnum",
+                               "SubIndex": "sub", "NumberOfElements": "nelem", "Data": "wdata", "DoneFlag": _FLAG},
+    "MC_ActivateTO": {"Axis": "any_to", "Execute": "bool", "Mode": ("int", (0, 1, 2, 2, 3))},
+    "MC_ActivateDPSlave": {"DiagnosticAddress": "diag", "Execute": "bool", "Mode": ("int", (0, 1, 2, 2, 3))},
 }
+#: how often generate_s7t picks each FB for a random instance (the motions twice as often as the rest)
+WEIGHTS = {c: 2 if c in ("MC_MoveAbsolute", "MC_MoveRelative", "MC_MoveAdditive", "MC_MoveSuperImposed",
+                         "MC_MoveVelocity") else 1 for c in CATALOG if c != "MC_Power"}
 MOVES = ("MC_MoveAbsolute", "MC_MoveRelative", "MC_MoveAdditive", "MC_MoveSuperImposed", "MC_MoveVelocity")
 #: the ENUM values of ``userdefaultdynamics.direction`` (§9.4.12 EnumDirection)
 _DIRECTIONS = (3, 4, 5, 38, 39)
@@ -94,6 +126,26 @@ def axis_s7t(rnd: random.Random, db: int, technology: int) -> dict[str, Any]:
     return p
 
 
+def options_s7t(rnd: random.Random, p: dict[str, Any], k: int, cams: list[int]) -> None:
+    """The objects of part 1 beyond the plain axis on axis ``k`` (``gen_s7t_objects``): a hydraulic drive, the
+    homing configuration on the simulated plant, data sets, a fixed end stop (electric drives)."""
+    if p["Wizard.Virtual"]:
+        return
+    if p["Wizard.Technology"] != 0 and rnd.random() < 0.3:
+        O.hydraulic(rnd, p, cams)
+    if p["Wizard.Technology"] != 0 and rnd.random() < 0.7:
+        O.homing(rnd, p, k, p["TypeOfAxis.MaxVelocity.maximum"])
+    if rnd.random() < 0.4:
+        O.data_sets(rnd, p)
+    if p.get("Wizard.DriveTechnology", 0) == 0 and rnd.random() < 0.4:
+        O.end_stop(rnd, p)
+    if "swlimit.state" in p and "Plant.InitialPosition" in p:
+        # the SW limits around the start of the cylinder: the axis starts inside them
+        x = p["Plant.InitialPosition"]
+        p["swlimit.minusposition"] = round(min(p["swlimit.minusposition"] + x, x - 1.0), 1)
+        p["swlimit.plusposition"] = round(max(p["swlimit.plusposition"] + x, x + 1.0), 1)
+
+
 class GenS7T:
     """Draws the input values of one S7-Technology episode."""
 
@@ -104,6 +156,9 @@ class GenS7T:
         self.dbs = {a["name"]: a["params"]["DBNumber"] for a in ep.axes}
         self.vmax = {a["name"]: a["params"]["TypeOfAxis.MaxVelocity.maximum"] for a in ep.axes}
         self.amax = {a["name"]: a["params"]["TypeOfAxis.MaxAcceleration.maximum"] for a in ep.axes}
+        self.cams = [(c["name"], c["db"]) for c in ep.cams]
+        self.slaves = sum(1 for a in ep.axes if not a["params"]["Wizard.Virtual"]      # DP(DRIVE) slaves
+                          and not a["params"].get("Wizard.DriveTechnology"))
 
     def axis(self, mcdevice: bool = False) -> Any:
         """The Axis input: the technology object mostly, else its DB number, another DB or no DB at all."""
@@ -160,6 +215,28 @@ class GenS7T:
             return V.real(rnd, amax * rnd.choice((0.0, 10.0, 100.0)), signed=False)
         if kind == "pct":
             return V.real(rnd, 100.0, garbage=0.2)
+        return self._basic(fb, kind)
+
+    def _basic(self, fb: dict[str, Any], kind: str) -> Any:
+        """The inputs of the §6.7 basic functions, MC_SetCharacteristic and the torque FBs."""
+        rnd = self.rnd
+        number = fb["init"].get("ParameterNumber")
+        draw = {"pnum": PV.parameter_number, "pidx": PV.parameter_index, "dword": PV.dword,
+                "byteaddr": PV.byte_address, "rdata": PV.read_area, "wdata": PV.write_area,
+                "record": PV.record_number, "dpnum": PV.drive_parameter, "sub": PV.sub_index,
+                "nelem": PV.elements, "torque": PV.torque}.get(kind)
+        if draw is not None:
+            return draw(rnd)
+        if kind == "preal":
+            return PV.parameter_real(rnd, number)
+        if kind == "pdint":
+            return PV.parameter_dint(rnd, number)
+        if kind == "dpaddr":
+            return PV.dp_address(rnd, self.slaves)
+        if kind == "diag":
+            return PV.diagnostic_address(rnd, self.slaves)
+        if kind == "cam":
+            return PV.cam_table(rnd, self.cams, self.names)
         raise ValueError(kind)  # pragma: no cover
 
 
@@ -167,6 +244,9 @@ def _fill(gen: GenS7T, fb: dict[str, Any], p: float = 0.7) -> None:
     for inp, kind in CATALOG[fb["cls"]].items():
         if inp not in fb["init"] and kind not in ("axis", "any_to", "bool") and gen.rnd.random() < p:
             fb["init"][inp] = gen.value(fb, inp, kind)
+    if fb["cls"] in ("MC_ReadPeriphery", "MC_ReadRecord", "MC_ReadDriveParameter", "MC_WritePeriphery",
+                     "MC_WriteRecord", "MC_WriteDriveParameter") and "Data" not in fb["init"]:
+        fb["init"]["Data"] = gen.value(fb, "Data", CATALOG[fb["cls"]]["Data"])     # an area mostly
 
 
 def generate_s7t(rnd: random.Random, ep: Any) -> None:
@@ -177,27 +257,38 @@ def generate_s7t(rnd: random.Random, ep: Any) -> None:
     dbs = rnd.sample(range(2, 600), n)
     if rnd.random() < 0.1:
         dbs[0] = rnd.choice((32768, 40000, 65535))          # a DB number beyond the INT range
+    cams = [O.CAM_DB + k for k in range(rnd.choice((0, 1, 1, 2)))]
     for i in range(n):
         technology = rnd.choices((0, 1, 2), (0.2, 0.6, 0.2))[0]
-        a = {"name": f"Axis_{i + 1}", "kind": "sync" if technology == 2 else "pos",
-             "params": axis_s7t(rnd, dbs[i], technology)}
+        params = axis_s7t(rnd, dbs[i], technology)
+        options_s7t(rnd, params, i, cams)
+        a = {"name": f"Axis_{i + 1}", "kind": "sync" if technology == 2 else "pos", "params": params}
         if technology == 2:
             a["leading"] = [x["name"] for x in ep.axes]
         ep.axes.append(a)
+    vmax = max(a["params"]["TypeOfAxis.MaxVelocity.maximum"] for a in ep.axes)
+    for k, db in enumerate(cams):
+        ep.cams.append({"name": f"Cam_{k + 1}", "db": db, "points": O.valve_profile(rnd, vmax)})
     gen = GenS7T(rnd, ep)
     for a in ep.axes:
         ep.fbs.append({"name": f"power_{a['name']}", "cls": "MC_Power",
                        "init": {"Axis": Ref(a["name"]), "Enable": rnd.random() < 0.9,
                                 "Mode": rnd.choice((0, 0, 0, 1, 5)) if not a["params"]["Wizard.Virtual"] else 0,
-                                "StopMode": rnd.choice((0, 1, 2, 4))}})
-    names = [c for c in CATALOG if c != "MC_Power"] + list(MOVES)     # motions twice as likely
-    for k in range(rnd.randint(2, 8)):
-        cls = rnd.choice(names)
+                                "StopMode": rnd.choice((0, 1, 2, 3, 4) if a["params"].get("Wizard.DriveTechnology")
+                                                       else (0, 1, 2, 4)),
+                                "QOutputValue": round(rnd.uniform(-100.0, 100.0), 1)}})
+    names, weights = list(WEIGHTS), list(WEIGHTS.values())
+    for k in range(rnd.randint(2, 10)):
+        cls = rnd.choices(names, weights)[0]
         fb = {"name": f"fb{k}_{cls[3:]}", "cls": cls, "init": {}}
-        fb["init"]["Axis"] = gen.axis(mcdevice=cls == "MC_Reset") if rnd.random() < 0.3 else Ref(rnd.choice(gen.names))
+        kind = CATALOG[cls].get("Axis")
+        if kind is not None:
+            fb["init"]["Axis"] = gen.axis(mcdevice=kind == "any_to") if rnd.random() < 0.3 \
+                else Ref(rnd.choice(gen.names))
         _fill(gen, fb)
         ep.fbs.append(fb)
     _scenarios_s7t(rnd, ep, gen, Op)
+    scenarios_part1(rnd, ep, gen, Op)
     initial = []
     for fb in ep.fbs:
         start = {}
@@ -296,4 +387,6 @@ def _scenarios_s7t(rnd: random.Random, ep: Any, gen: GenS7T, Op: Any) -> None:
                    Op(min(last, c + rnd.randint(9, 30)), "in", "resetter", "Execute", False)]
 
 
-__all__ = ["S7T", "CATALOG", "generate_s7t", "axis_s7t"]
+from .gen_s7t_scenarios import scenarios_part1  # noqa: E402 - it uses CATALOG and _fill of this module
+
+__all__ = ["S7T", "CATALOG", "generate_s7t", "axis_s7t", "options_s7t"]

@@ -117,7 +117,7 @@ def script(ep: Episode, failure: Failure | None = None) -> str:
         "import numpy as np",
         "from plcmotion import Controller",
         "from plcmotion.s7_1200 import variables",
-        f"from {mod} import {', '.join(classes)}",
+        f"from {mod} import {', '.join(classes + (['add_cam_disk'] if ep.dialect == 'S7-Technology' else []))}",
     ]
     if ep.proxies:
         lines.append("from tests.fuzz.sources import FuzzLeadingSource")
@@ -134,6 +134,10 @@ def script(ep: Episode, failure: Failure | None = None) -> str:
         else:
             lines.append(f"TO[{a['name']!r}] = ctl.add_positioning_axis({a['name']!r}, {lit(a['params'])})")
     for c in ep.cams:
+        if "db" in c:                  # S7-Technology: a cam disk (valve profile)
+            lines.append(f"TO[{c['name']!r}] = add_cam_disk(ctl, {c['name']!r}, {lit(c['points'])}, "
+                         f"db_number={c['db']})")
+            continue
         lines.append(f"TO[{c['name']!r}] = ctl.add_cam({c['name']!r}, {lit(c['points'])}, "
                      f"interpolation_mode={c['interpolation']}, boundary_conditions={c['boundary']})")
     for t in ep.tables:

@@ -27,6 +27,7 @@ from plcmotion.kernel.tag_views import TagAccessError
 from plcmotion.s7_1200 import variables
 
 from .gen import Episode, Op
+from .oracle_s7t import S7TOracle
 from .sources import FuzzLeadingSource
 from .values import Ref, TagRefSpec, VarSpec, lit
 
@@ -39,6 +40,9 @@ STUCK_CHECKED = {"MC_MoveAbsolute", "MC_MoveRelative", "MC_Halt", "MC_Reset", "M
                  # S7-Technology V4.1 (the manual's spelling of FB 413)
                  "MC_MoveSuperImposed", "MC_MoveAdditive"}
 S7T_DIALECT = "S7-Technology"
+#: ErrorIDs outside an FB's table that docs/s7t/decisions.md decides: MC_SetCharacteristic refused during a
+#: restart or at a deactivated object, 8045 (D65, D75)
+S7T_DECIDED = frozenset({("MC_SetCharacteristic", 0x8045)})
 #: the float members of an axis technology DB (S7-Technology V4.1 §7.1, §7.2): finite after every cycle
 S7T_DB_REALS = ("CommandVelocity", "CommandAcceleration", "ActualVelocity", "ActualAcceleration", "SpeedOverride",
                 "AccelerationOverride", "ActualPosition", "CommandPosition", "TargetPosition", "Distance",
@@ -75,6 +79,8 @@ def _resolve(v: Any, objs: dict[str, Any]) -> Any:
         return objs[v.name].ref(v.path)
     if isinstance(v, VarSpec):
         return getattr(variables, v.kind)(v.value)
+    if isinstance(v, bytearray):
+        return bytearray(v)            # an ANY area the FB fills: every run of the episode starts with its own
     return v
 
 
@@ -178,6 +184,7 @@ class Run:
         self.stopped = False
         self._prev_out: dict[str, dict] = {}
         self.ctl: Controller | None = None
+        self.oracle: S7TOracle | None = None
         try:
             self._build()
         except Exception as exc:
@@ -199,6 +206,9 @@ class Run:
             else:
                 self.objs[a["name"]] = ctl.add_positioning_axis(a["name"], a["params"])
         for c in ep.cams:
+            if self.s7t:             # a cam disk as valve profile (S7-Technology V4.1 §4.6.4)
+                self.objs[c["name"]] = S7T.add_cam_disk(ctl, c["name"], c["points"], db_number=c["db"])
+                continue
             self.objs[c["name"]] = ctl.add_cam(c["name"], c["points"], interpolation_mode=c["interpolation"],
                                                boundary_conditions=c["boundary"])
         for t in ep.tables:
@@ -218,6 +228,7 @@ class Run:
             self.getters = [[(tag, ax.tag_getter(tag)) for tag in ("Position", "Velocity", "ActualPosition",
                                                                    "ActualVelocity")] for ax in self.axes]
         self.watch = [_AxisWatch(ax, self.is1500, self.s7t) for ax in self.axes]
+        self.oracle = S7TOracle(self) if self.s7t else None
         # S7-Technology: an Axis input may be the number of the technology DB (also as INT below 0, §6.9.3)
         self._by_db = {n: ax for ax in self.axes if self.s7t for n in (ax.db_number, ax.db_number - 65536)}
         self.index = np.array([ax.index for ax in self.axes], dtype=int)
@@ -345,6 +356,8 @@ class Run:
         for name, fb in self.fbs.items():
             ex = fb.__dict__.get("Execute")
             if ex is True and not self._prev_exec.get(name):
+                if self.oracle is not None:
+                    self.oracle.edge(name, self.fb_cls[name], fb)
                 # a job works on the axes wired at its start, whatever is wired later
                 self._job_axes[name] = [a for a in (self._by_db.get(a, a) if self.s7t and type(a) is int else a
                                                     for a in (fb.__dict__.get(k) for k in ("Axis", "Master", "Slave")))
@@ -358,7 +371,8 @@ class Run:
                 continue
             self.calls += 1
             self._check_outputs(name, fb)
-        if ops or self.cycle == 0 or any(fb.Done for fb in self._tag_writers):
+        # S7-Technology: MC_WriteParameter, MC_ChangeDataset and restarts change the bounds at any time
+        if ops or self.cycle == 0 or self.s7t or any(fb.Done for fb in self._tag_writers):
             for w in self.watch:
                 w.update_bounds()
             self._jlim[:] = [w.jlim for w in self.watch]
@@ -412,6 +426,8 @@ class Run:
                        f"16#{out.get('ErrorInfo', 0):04X}", "", (cls, "8FFF"))
         if self.s7t:
             self._check_outputs_s7t(name, cls, fb, out, outs)
+            for kind, where, message, key in self.oracle.outputs(name, cls, fb, out):
+                self._fail(kind, where, message, "", key)
             return
         if self.is1500:
             self._check_errorid_1500(name, cls, out)
@@ -465,7 +481,7 @@ class Run:
         if eid == 0x8001 or fb.__dict__.get("_internal_fault") is not None:
             self._fail("internal", name, f"{cls} ErrorID 16#{eid:04X} (internal error): "
                        f"{getattr(fb.__dict__.get('_internal_fault'), 'message', '')}", "", (cls, "8001"))
-        if not isinstance(eid, int) or eid not in fb_codes(cls):
+        if not isinstance(eid, int) or eid not in fb_codes(cls) and (cls, eid) not in S7T_DECIDED:
             self._fail("errorid", name, f"{cls} ErrorID {eid!r} is not in its table of §6", "",
                        (cls, eid if isinstance(eid, int) else type(eid).__name__))
         if out.get("Error") and not (isinstance(eid, int) and eid >= 0x8000):
@@ -527,6 +543,9 @@ class Run:
                     self._fail("nonfinite", ax.name, f"{ax.name}.{tag} = {x!r}", "", (tag, self.ep.dialect))
             self._check_dynamics(k, ax, w, coupled_before[k])
             self._check_sw_limits(k, ax, w)
+        if self.oracle is not None:
+            for kind, where, message, key in self.oracle.cycle():
+                self._fail(kind, where, message, "", key)
 
     def _check_dynamics(self, k: int, ax: Any, w: _AxisWatch, coupled_before: bool) -> None:
         if coupled_before or w.coupled():

@@ -43,6 +43,8 @@ def lit(v: Any) -> str:
         return f"variables.{v.kind}({lit(v.value)})"
     if isinstance(v, bool) or v is None or isinstance(v, str):
         return repr(v)
+    if isinstance(v, bytearray) and not any(v):
+        return f"bytearray({len(v)})"        # an empty ANY area of that length (S7-Technology)
     if isinstance(v, int):
         return "10 ** 400" if v == HUGE_INT else ("-10 ** 400" if v == -HUGE_INT else repr(v))
     if isinstance(v, float):

@@ -25,6 +25,7 @@ from ..kernel.faults import Fault
 from ..kernel.jobs import Job, JobState
 from ..kernel.profiles import INF
 from . import errors as E
+from .fb_tables import FB_BY_NAME
 from .technology import activation
 from .technology.axes import AxisT
 from .technology.builder import POSITIONING, SPEED, SYNCHRONIZATION
@@ -43,8 +44,10 @@ class _S7T:
     TECHNOLOGIES: ClassVar[tuple[int, ...]] = ALL_AXES
     #: the instruction also takes the MCDevice DB (MC_Reset)
     TAKES_MCDEVICE: ClassVar[bool] = False
-    #: the instruction serves a deactivated technology object (MC_ActivateTO); others give 16#8045
+    #: the instruction serves a deactivated technology object (MC_ActivateTO); others give DEACTIVATED_ERROR
     WHILE_DEACTIVATED: ClassVar[bool] = False
+    #: the refusal at a deactivated object (§6.7.2: it takes no commands): 16#8045 (docs/s7t/decisions.md D75)
+    DEACTIVATED_ERROR: ClassVar[int] = E.NOT_ALLOWED_IN_STATE
 
     ENO = True
 
@@ -79,17 +82,24 @@ class _S7T:
             raise InstructionError(E.NOT_A_TECHNOLOGY_DB)
         return ext, ext.object(number) or db
 
+    def _listed(self, code: int, instead: int) -> InstructionError:
+        """``code`` if the instruction's ErrorID table of §6 lists it, else ``instead`` (the code of that table
+        that says the same thing for this FB, docs: the fuzz report's decisions)."""
+        table = FB_BY_NAME.get(type(self).__name__)
+        return InstructionError(code if table is None or code in table.all_codes() else instead)
+
     def _axis(self, name: str = "Axis") -> Any:
         ext, to = self._resolve(getattr(self, name, None))
         if to is getattr(ext, "mcdevice", None):
             if self.TAKES_MCDEVICE:
                 object.__setattr__(self, "_to", ext)
                 return ext
-            raise InstructionError(E.NOT_SUPPORTED_BY_TO)
+            # MC_ActivateTO's table has no 8044: the MCDevice DB belongs to no technology object (8084)
+            raise self._listed(E.NOT_SUPPORTED_BY_TO, E.INVALID_TECHNOLOGY_DB)
         if not isinstance(to, AxisT) or to.technology not in self.TECHNOLOGIES:
-            raise InstructionError(E.NOT_SUPPORTED_BY_TO)
+            raise self._listed(E.NOT_SUPPORTED_BY_TO, E.INVALID_TECHNOLOGY_DB)
         if not self.WHILE_DEACTIVATED and activation.deactivated(to):
-            raise InstructionError(E.NOT_ALLOWED_IN_STATE)      # deactivated by MC_ActivateTO (§6.7.2)
+            raise InstructionError(self.DEACTIVATED_ERROR)      # deactivated by MC_ActivateTO (§6.7.2)
         self._register(to)
         object.__setattr__(self, "_to", to)
         return to

@@ -58,7 +58,7 @@ class MC_SetTorqueLimit(ExecuteInstruction):  # noqa: N801 - instruction name of
             raise InstructionError(E.ILLEGAL_PARAMETER)
         _refused(axis, O.SET_TORQUE_LIMIT)
         if axis.state != "enabled":
-            raise InstructionError(E.AXIS_DISABLED)
+            raise InstructionError(E.NOT_ALLOWED_IN_STATE)     # its table has no 8040 (§6.2.12)
         limit = (value if value > 0.0 else axis.eff[MAX_TORQUE]) if enable else None
         axis.__dict__["set_torque_limit"] = limit
         if not clamping_active(axis):          # MC_MoveToEndPos keeps its own limit until it ends

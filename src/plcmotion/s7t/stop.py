@@ -3,6 +3,7 @@ from __future__ import annotations
 
 from ..kernel import axis_status as S
 from ..kernel.jobs import Job, JobKind, JobState
+from . import errors as E
 from .base import ALL_AXES, ExecuteInstruction, dynamic
 from .technology.axes import AxisT
 
@@ -23,6 +24,9 @@ class MC_Stop(ExecuteInstruction):  # noqa: N801 - instruction name of the manua
     MC_Stop aborts it.  Deceleration / Jerk above 1E12: the maximum of the axis (TypeOfAxis.MaxAcceleration /
     MaxJerk); Deceleration = 0: the default deceleration and warning 16#0028 at ErrorID.
     """
+
+    #: a deactivated axis takes no command (§6.7.2); MC_Stop's ErrorID table (§6.2.3) has no 8045: 8044
+    DEACTIVATED_ERROR = E.NOT_SUPPORTED_BY_TO
 
     INPUTS = {"Axis": 0, "Execute": False, "Deceleration": -1.0, "Jerk": -1.0, "DoneFlag": 0}
     TECHNOLOGIES = ALL_AXES

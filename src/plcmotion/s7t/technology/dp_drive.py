@@ -4,7 +4,8 @@ technology's command slices (S7-Technology V4.1 §2.4, §5.6, §6.7.3, §6.7.8-�
 Addresses (plcmotion's HW Config, as the manual leaves them to the project): the drives of the real axes in
 the order of their technology DB numbers get PROFIBUS addresses 2, 3, ..., the logical base address
 ``BASE_ADDRESS + 32 k`` (input and output, in the technology's area 64..1023 of §5.6) and the diagnostic
-address ``DIAGNOSTIC_ADDRESS - k``.  The integrated I/O of the CPU has the base address 0 (not on
+address ``DIAGNOSTIC_ADDRESS - k``.  A hydraulic axis is no DP(DRIVE) slave: its valve is driven by an
+analog output (§3.1.4), there is no drive to talk to.  The integrated I/O of the CPU has the base address 0 (not on
 DP(DRIVE)).  ``MCDevice.StationLifeList[address]`` is 1 while the slave takes part in cyclic exchange.
 
 Each drive slave carries record 47, the PROFIdrive parameter channel, answered by a
@@ -131,7 +132,8 @@ class DPDrive:
         """Take the real axes configured so far onto the bus (new ones at the end)."""
         known = {id(s.axis) for s in self.slaves}
         axes = sorted((a for a in self.device.ctl.axes.values()
-                       if getattr(a, "db_number", None) is not None and not getattr(a, "virtual", True)),
+                       if getattr(a, "db_number", None) is not None and not getattr(a, "virtual", True)
+                       and not getattr(a, "hydraulic", False)),
                       key=lambda a: a.db_number)
         for axis in axes:
             if id(axis) not in known:

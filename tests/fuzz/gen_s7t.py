@@ -27,7 +27,7 @@ MCDEVICE_DB = 1
 _DYN = {"Acceleration": "acc", "Deceleration": "acc", "Jerk": "jerk"}
 _FLAG = ("int", tuple(range(0, 33)))
 CATALOG: dict[str, dict[str, Any]] = {
-    # Mode 4 (simulation) is refused by every axis here; StopMode 3 only by hydraulic axes: invalid on purpose
+    # Mode 4 (simulation) runs on real axes and is refused (8043) by virtual ones; StopMode 3 only by hydraulic axes
     "MC_Power": {"Axis": "axis", "Enable": "bool", "Mode": ("int", (0, 0, 0, 1, 2, 3, 4, 5)),
                  "StopMode": ("int", (0, 1, 2, 3, 4, 5, 6)), "QOutputValue": "pct"},
     "MC_Reset": {"Axis": "any_to", "Execute": "bool", "Restart": "bool"},

@@ -124,3 +124,18 @@ def test_kernel_alarm_reactions_max_dynamics_brakes_with_the_configured_limits()
     drops = [a - b for a, b in zip([v0] + velocities, velocities)]
     assert max(drops) == pytest.approx(dec * 0.001, rel=1e-6) and velocities[-1] == 0.0
     assert axis.state == "enabled"
+
+
+def test_kernel_alarm_reactions_software_limit_braking_with_maximum_deceleration():
+    """An axis that brakes at a software limit switch with its maximum dynamic values (a family's alarm
+    reaction "stop with maximum dynamic values", ``sw_limit_max_deceleration``) gets the configured maximum
+    deceleration for that braking; an axis without it keeps the deceleration of its job."""
+    from plcmotion.kernel.motion import _limit_braking
+    from plcmotion.kernel.profiles import Limits
+    config = SimpleNamespace(limits=SimpleNamespace(max_deceleration=6000.0, max_acceleration=5000.0, max_jerk=0.0,
+                                                    max_velocity=1000.0),
+                             defaults=SimpleNamespace(deceleration=800.0, acceleration=500.0))
+    job = Limits(velocity=100.0, acceleration=500.0, deceleration=800.0, jerk=1.0e5)
+    strong = _limit_braking(SimpleNamespace(config=config, sw_limit_max_deceleration=True), job)
+    assert (strong.deceleration, strong.acceleration, strong.jerk, strong.velocity) == (6000.0, 500.0, 1.0e5, 100.0)
+    assert _limit_braking(SimpleNamespace(config=config), job) is job

@@ -30,7 +30,7 @@ CPU_LIST = {
     411: (4, "E", 5, False), 412: (4, "E", 5, False), 421: (4, "E", 4, False), 431: (4, "E", 7, False),
     501: (0, "W", 6, False), 502: (0, "W", 6, False), 503: (0, "W", 6, False), 521: (4, "E", 11, False),
     522: (0, "W", 11, False), 531: (4, "E", 9, False), 533: (2, "E", 8, False), 534: (4, "E", 8, False),
-    541: (4, "E", 12, False), 601: (2, "E", 14, False), 900: (0, "E", 2, False),
+    541: (4, "E", 12, False), 601: (2, "E", 14, False), 612: (4, "E", 2, False), 900: (0, "E", 2, False),
 }
 
 DT = 0.001
@@ -204,7 +204,7 @@ def test_s7_1500_alarm_101_configuration_error_removes_enable_and_needs_a_restar
     assert r.detail() == (101, 4) and r.axis.ErrorWord.ConfigFault and r.axis.StatusWord.RestartRequired
     assert not r.axis.StatusWord.Enable and r.v[-1] == 0.0 and not r.power.Status
     rs = r.reset()
-    assert rs.Error and r.detail() == (101, 4)
+    assert rs.Error and rs.ErrorID == 0x8015 and r.detail() == (101, 4)   # only a restart clears it
     r.enable = False
     r.ctl.run(0.01)
     assert r.reset(restart=True).Done
@@ -220,6 +220,8 @@ def test_s7_1500_alarm_533_software_limit_stops_at_the_switch_s7_1_1():
     r.ctl.run_until(lambda: mv.Error, timeout=3.0)
     assert mv.ErrorID == 0x8001 and r.detail() == (533, 2) and r.axis.ErrorWord.SWLimit
     assert max(r.p) == pytest.approx(50.0, abs=1e-9) and r.v[-1] == 0.0
+    # reaction 2: the braking at the switch uses DynamicLimits.MaxDeceleration (6000), not the job's 800
+    assert braking(r.v, 0) == pytest.approx(6000.0, rel=1e-6)
 
 
 def test_s7_1500_alarm_534_passed_software_limit_removes_enable_s7_1_1():
@@ -243,11 +245,53 @@ def test_s7_1500_alarm_601_unconfigured_leading_axis_stops_with_maximum_dynamics
     r.calls.append(lambda: gear(Master=r.masters[1], Slave=r.axis, Execute=True, RatioNumerator=1,
                                 RatioDenominator=1))
     r.ctl.run(0.05)
-    assert gear.Error and mv.Error                 # their ErrorIDs: the instruction side (16#8001)
+    assert gear.Error and gear.ErrorID == 0x8001 and mv.Error and mv.ErrorID == 0x8001
     assert r.detail() == (601, 2) and r.axis.ErrorWord.SynchronousError
     assert braking(r.v, n) == pytest.approx(6000.0, rel=1e-6) and r.v[-1] == 0.0
     r.calls.clear()
     assert r.reset().Done and r.detail() == (0, 0)
+
+
+def test_s7_1500_alarm_612_cam_not_interpolated_removes_enable_s7_1_1():
+    """MC_CamIn with a cam MC_InterpolateCam has not interpolated: alarm 612 at the following axis (ErrorWord.X2
+    UserFault), reaction 4 - the moving axis loses its enable at once; MC_CamIn and the running job end with
+    16#8001; MC_Reset acknowledges (no restart)."""
+    from plcmotion.s7_1500 import MC_CamIn
+    r = Rig(VIRTUAL, synchronous=True, masters=1)
+    cam = r.ctl.add_cam("Cam", [(0, 0), (180, 100), (360, 0)])
+    mv = r.moving()
+    camin = MC_CamIn()
+    r.calls.append(lambda: camin(Master=r.masters[0], Slave=r.axis, Cam=cam, Execute=True))
+    r.ctl.run(0.02)
+    assert camin.Error and camin.ErrorID == 0x8001 and mv.Error and mv.ErrorID == 0x8001
+    assert r.detail() == (612, 4) and r.axis.ErrorWord.UserFault and not r.axis.StatusWord.RestartRequired
+    assert not r.axis.StatusWord.Enable and r.v[-1] == 0.0 and not r.power.Status
+    r.calls.clear()
+    assert r.reset().Done and r.detail() == (0, 0)
+
+
+def test_s7_1500_alarm_201_internal_error_removes_enable_and_needs_a_restart_s7_1_1(monkeypatch):
+    """A defect inside plcmotion (planted: the motion planner fails) is alarm 201 (ErrorWord.X0 SystemFault),
+    reaction 4, a fatal error: the job ends with 16#8001, MC_Reset alone cannot acknowledge it (16#8015,
+    StatusWord.X3), disabling and MC_Reset Restart = TRUE clear it.  (The kernel's fault injection acts on
+    the simulated devices only, so the defect is planted here.)"""
+    from plcmotion.kernel.profiles import PlanningError
+    r = Rig(VIRTUAL)
+
+    def defect(*args, **kw):
+        raise PlanningError("planted defect")
+    monkeypatch.setattr(r.axis.motion, "plan", defect)
+    mr = r.call(MC_MoveRelative(), Execute=True, Distance=10.0)
+    r.ctl.run(0.02)
+    assert mr.Error and mr.ErrorID == 0x8001 and r.detail() == (201, 4) and r.axis.ErrorWord.SystemFault
+    assert r.axis.StatusWord.RestartRequired and not r.axis.StatusWord.Enable and not r.power.Status
+    monkeypatch.undo()
+    r.calls.clear()
+    rs = r.reset()
+    assert rs.Error and rs.ErrorID == 0x8015 and r.detail() == (201, 4)
+    r.enable = False
+    r.ctl.run(0.01)
+    assert r.reset(restart=True).Done and r.detail() == (0, 0) and not r.axis.StatusWord.RestartRequired
 
 
 @pytest.mark.parametrize("kind, detail, number, bit", [
@@ -317,7 +361,8 @@ def test_s7_1500_alarm_531_with_both_switches_actuated_needs_a_restart_s6_1_5_3(
     assert r.detail() == (531, 4) and r.axis.StatusWord.RestartRequired
     r.ctl.plant.switch("I0.1").repair()
     r.ctl.plant.switch("I0.2").repair()
-    assert r.reset().Error and r.detail() == (531, 4)
+    rs = r.reset()
+    assert rs.Error and rs.ErrorID == 0x8015 and r.detail() == (531, 4)
     r.enable = False
     r.ctl.run(0.01)
     assert r.reset(restart=True).Done and r.detail() == (0, 0)

@@ -1,9 +1,10 @@
 """Every ErrorID the S7-1500 instructions give, provoked in its situation through instruction calls over
 application cycles, with the CPU's number from the S7-1500/S7-1500T Motion Control ErrorID list (the
 synchronous operation manual S7-1500T V5 prints none; the situations are those of its §9.1 and §9.2 input
-tables and requirements).  16#8001 means a technology alarm is behind the error; only the ErrorID is
-checked here (the alarm's number in ErrorDetail belongs to the technology alarms).  Instruction errors need
-no acknowledgement, and a refused job leaves running jobs alone."""
+tables and requirements).  16#8001 means a technology alarm is behind the error: every 16#8001 case also
+checks the alarm in ``<TO>.ErrorDetail.Number`` / ``.Reaction`` (the CPU's alarm list, shared reference
+s7-1500-errorids.md §4.2).  Instruction errors need no acknowledgement, and a refused job leaves running
+jobs alone."""
 from __future__ import annotations
 
 import math
@@ -235,6 +236,16 @@ def s_configuration_still_invalid() -> Any:
     return c.job(MC_Reset(), Axis=c.m, Execute=True)
 
 
+def s_reset_without_restart() -> Any:
+    """Alarm 101 (configuration error, restart needed): the value is valid again, but only a restart of the
+    technology object clears the alarm; MC_Reset with Restart = FALSE cannot acknowledge it."""
+    c = Cell(cam=None)
+    c.m.write_tag("PositionControl.Kv", 0.0)
+    c.ctl.run(0.05)
+    c.m.write_tag("PositionControl.Kv", 10.0)
+    return c.job(MC_Reset(), Axis=c.m, Execute=True, Restart=False)
+
+
 def s_coupling_cycle() -> Any:
     ctl = Controller(family="S7-1500T")
     m = ctl.add_positioning_axis("M", VIRTUAL)
@@ -361,6 +372,7 @@ CASES: list[tuple[int, str, Callable[..., Any]]] = [
     (0x8010, "MC_Home Mode 6 with an incremental encoder", s_absolute_mode_on_incremental),
     (0x8011, "MC_Home Mode 3 with an absolute encoder", s_homing_mode_on_absolute),
     (0x8015, "MC_Reset while the configuration is still invalid", s_configuration_still_invalid),
+    (0x8015, "MC_Reset without Restart on an alarm that needs a restart", s_reset_without_restart),
     (0x8017, "RatioNumerator 0", _sync(MC_GearIn, RatioNumerator=0)),
     (0x8018, "RatioDenominator 0", _sync(MC_GearIn, RatioDenominator=0)),
     (0x8019, "a coupling that closes a cycle", s_coupling_cycle),
@@ -394,14 +406,34 @@ CASES: list[tuple[int, str, Callable[..., Any]]] = [
 ]
 
 
+#: the technology alarm behind each 16#8001 case: (ErrorDetail.Number, ErrorDetail.Reaction, ErrorWord bit) of
+#: the CPU's alarm list - 321 emergency stop ramp (3) X3, 601 maximum dynamic values (2) X14, 612 remove enable
+#: (4) X2; the MC_Reset 16#8015 case keeps alarm 101 (remove enable, X1) pending
+ALARM_BEHIND = {
+    "absolute positioning of an unhomed axis (alarm 321)": (321, 3, 3),
+    "leading axis not configured as a leading value (alarm 601)": (601, 2, 14),
+    "camming with a cam not interpolated (alarm 612)": (612, 4, 2),
+    "MC_Reset without Restart on an alarm that needs a restart": (101, 4, 1),
+}
+
+
 @pytest.mark.parametrize("error_id, situation, scenario", CASES, ids=[f"{c[0]:04X}-{c[1]}" for c in CASES])
 def test_s7_1500_every_errorid_in_its_situation(error_id, situation, scenario, monkeypatch):
     """Motion Control ErrorID list / S7-1500T V5 §9.1, §9.2: the instruction ends with Error, the CPU's ErrorID,
-    Busy FALSE, and the code belongs to that instruction's list."""
+    Busy FALSE, and the code belongs to that instruction's list.  With 16#8001 the alarm behind it is in the
+    technology object's ErrorDetail (and its ErrorWord bit); an instruction error leaves ErrorDetail at 0."""
     fb = scenario(monkeypatch) if scenario is s_internal else scenario()
     assert fb.Error and fb.ErrorID == error_id, (situation, hex(fb.ErrorID), fb.outputs)
     assert not fb.Busy or "Enable" in type(fb).INPUTS        # MC_Power is Busy while Enable is TRUE
     assert error_id in E.INSTRUCTION_CODES[type(fb).__name__], (type(fb).__name__, hex(error_id))
+    to = getattr(fb, "Slave", None) or getattr(fb, "Axis", None)
+    detail = getattr(to, "ErrorDetail", None)
+    if error_id == E.TO_ALARM or situation in ALARM_BEHIND:
+        number, reaction, bit = ALARM_BEHIND[situation]
+        assert (detail.Number, detail.Reaction) == (number, reaction), (situation, detail.Number, detail.Reaction)
+        assert int(to.ErrorWord) & (1 << bit) and to.StatusWord.Error
+    elif detail is not None and error_id not in (E.CONFIG_NOT_ACKNOWLEDGEABLE, E.INTERNAL):
+        assert (detail.Number, detail.Reaction) == (0, 0), (situation, detail.Number)
 
 
 def test_s7_1500_every_producible_errorid_has_a_situation():

@@ -102,7 +102,7 @@ def test_s7_1500_done_stays_true_during_passive_homing_s6_1_5_5():
 def test_s7_1500_absolute_move_of_an_unhomed_axis_is_alarm_321_s7_1_1():
     """§7.1.1 "Job rejected ... (for example, technology object not homed)" is an ErrorWord bit: the CPU's
     technology alarm 321 (ErrorWord.X3, reaction 3 emergency stop ramp), 16#8001 at the instruction and at
-    MC_Power, until MC_Reset; after it a relative move runs (docs/s7_1500/decisions_alarms.txt, 321)."""
+    MC_Power, until MC_Reset; after it a relative move runs (docs/s7_1500/decisions.md #84)."""
     ctl, axis, steps, power = axis_rig()
     absolute = MC_MoveAbsolute()
     steps.append(lambda: absolute(Axis=axis, Execute=True, Position=10.0))

@@ -56,7 +56,7 @@ def test_s7_1500_gear_in_pos_synchronous_exactly_at_the_synchronous_positions_s4
 def test_s7_1500_sync_direction_on_a_modulo_following_axis_s4_3(sync_direction, slave_start, slave_sync):
     """SyncDirection 1: the following axis covers a non-negative net distance during synchronization,
     2 a non-positive one, 3 the shortest correction to the synchronous law (at most half a revolution);
-    the synchronous position is reached modulo the axis length (docs/decisions_s7_1500.md)."""
+    the synchronous position is reached modulo the axis length (docs/s7_1500/decisions.md #17)."""
     rig = Rig(slave_params=merge(VIRTUAL, modulo(360.0)))
     from plcmotion.s7_1500 import MC_Home
     home = MC_Home()

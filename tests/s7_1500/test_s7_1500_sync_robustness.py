@@ -33,7 +33,7 @@ def test_s7_1500_absurd_leading_value_of_an_external_encoder_never_reaches_the_f
     def main():
         pe(Axis=enc, Enable=True)
         ps(Axis=s, Enable=True)
-        # Execute stays TRUE once started: the encoder fault (alarm 203) removes the encoder's enable,
+        # Execute stays TRUE once started: the encoder fault (alarm 411) removes the encoder's enable,
         # and with a falling Execute the gearing's Error would show for one call only
         if pe.Status and ps.Status and not go:
             go.append(True)

@@ -308,12 +308,12 @@ class MotionPlanner:
                                    lim.start_stop), side, "exceeded", cross_time=t)
         moving_out = v * sign > 1e-12
         if moving_out:
-            stop = pl.stop_position(p, v, a, limits(ax, None, job=job))
+            stop = pl.stop_position(p, v, a, _limit_braking(ax, limits(ax, None, job=job)))
         else:
             stop = p
         if (stop - limit) * sign <= _TOL:
             speed = max(min(cruise, ax.config.limits.max_velocity), lim.start_stop, 1e-12)
-            lim2 = limits(ax, speed, job=job)
+            lim2 = _limit_braking(ax, limits(ax, speed, job=job))
             try:
                 profile = pl.position(t, p, v, a, limit, lim2)
             except ReversalRequired:  # pragma: no cover - position() reverses when allowed
@@ -331,6 +331,16 @@ class MotionPlanner:
         disc = v * v - 2 * emerg * d
         tau = (abs(v) - math.sqrt(max(disc, 0.0))) / emerg
         return Plan(profile, side, "exceeded", cross_time=t + tau)
+
+
+def _limit_braking(axis: "PositioningAxis", lim: Limits) -> Limits:
+    """The dynamics of a motion that comes to a stop at a software limit switch.  An axis whose
+    ``sw_limit_max_deceleration`` is set brakes there with its maximum deceleration (the alarm's reaction
+    "stop with the maximum dynamic values"); the motion up to the braking keeps the job's dynamics."""
+    if not getattr(axis, "sw_limit_max_deceleration", False):
+        return lim
+    dec = max_dynamics(axis).deceleration
+    return dataclasses.replace(lim, deceleration=dec) if dec > lim.deceleration else lim
 
 
 def _ramp_stop(t: float, p: float, v: float, dec: float, vss: float) -> Profile:

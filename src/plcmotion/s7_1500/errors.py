@@ -16,6 +16,7 @@ from dataclasses import dataclass
 
 from ..kernel import faults as F
 from ..kernel.faults import Fault
+from .technology import alarms as A
 
 
 @dataclass(frozen=True)
@@ -144,12 +145,15 @@ CODES: tuple[Code, ...] = (
        "wait until running jobs have ended", "list; #78",
        "an S7-1500 job of each kind aborts the one before it, so no axis reaches 100 busy instructions"),
     _C(CONFIG_NOT_ACKNOWLEDGEABLE, "the alarm cannot be acknowledged: the configuration itself is invalid",
-       "MC_Reset while a configuration alarm persists (a tag value still out of range)",
-       "correct the configuration, then acknowledge"),
+       "MC_Reset while a configuration alarm persists (a tag value still out of range); MC_Reset with Restart = "
+       "FALSE while an alarm that needs a restart of the technology object is pending (101, 201, 531 with "
+       "swapped or both switches; StatusWord.X3)",
+       "correct the configuration, then acknowledge; an alarm that needs a restart: disable the object and call "
+       "MC_Reset with Restart = TRUE", "list; #100"),
     _C(ACTUAL_INVALID, "the actual values are not valid",
        "a position-controlled job or homing on a drive axis whose encoder reports no valid actual value",
        "restore the encoder, wait for StatusSensor.State = 2", "list; #75",
-       "an encoder fault is alarm 203 until it is gone, so a job meets the alarm (16#8001) first"),
+       "an encoder fault is alarm 411 until it is gone, so a job meets the alarm (16#8001) first"),
     _C(NUMERATOR, "invalid gear ratio numerator", "RatioNumerator 0, not whole or outside the DINT range",
        "give a whole number other than 0"),
     _C(DENOMINATOR, "invalid gear ratio denominator", "RatioDenominator < 1, not whole or outside the DINT range",
@@ -286,7 +290,9 @@ _BY_INSTRUCTION = {
 def code(fault: Fault, instruction: str = "") -> int:
     """The ErrorID instruction ``instruction`` shows for a kernel fault."""
     if fault.ack:                                  # a technology alarm ended the job (or MC_Reset kept it)
-        return CONFIG_NOT_ACKNOWLEDGEABLE if instruction == "MC_Reset" and fault.kind == F.CONFIG else TO_ALARM
+        if instruction == "MC_Reset" and (fault.kind == F.CONFIG or A.needs_restart(fault)):
+            return CONFIG_NOT_ACKNOWLEDGEABLE          # only a correct configuration / a restart clears it (#100)
+        return TO_ALARM
     by_instruction = _BY_INSTRUCTION.get((instruction, fault.kind))
     if by_instruction is not None:
         return by_instruction

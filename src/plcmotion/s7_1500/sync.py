@@ -4,7 +4,7 @@ MC_LeadingValueAdditive.
 
 The jobs run in the following axis (``kernel.follower``); these classes check the inputs, hand the
 jobs over and show their state.  StartSync stays TRUE once synchronization has begun, until the job
-ends (the manual leaves open whether it drops with InSync; docs/decisions_s7_1500.md).
+ends (the manual leaves open whether it drops with InSync; docs/s7_1500/decisions.md #18).
 """
 from __future__ import annotations
 

@@ -6,7 +6,7 @@ and reactions from the CPU's alarm list, ../shared/reference/s7-1500-errorids.md
 from it, the S7-1500 axis takes the reaction it executes from it (``enforce``), and docs/s7_1500/alarms.md
 is rendered from it (``render_markdown``; a test keeps the page current).  The kernel reports its faults
 in its own vocabulary (``kernel.faults``); :func:`number` says which CPU alarm each one is.  The choices
-where the CPU's list needed a reading are in docs/s7_1500/decisions_alarms.txt.
+where the CPU's list needed a reading are rows #79-#101 of docs/s7_1500/decisions.md.
 """
 from __future__ import annotations
 
@@ -24,7 +24,7 @@ REACTIONS = {0: "no reaction", 1: "stop with current dynamic values", 2: "stop w
 CAM_STOP, PROXY_INVALID, ENCODER_DISABLE = 6, 13, 4
 #: the kernel reaction that carries out an axis reaction code
 KERNEL_REACTION = {0: Reaction.NONE, 2: Reaction.MAX_DYNAMICS, 3: Reaction.EMERGENCY, 4: Reaction.REMOVE_ENABLE}
-#: which pending alarm ErrorDetail shows: the one with the strongest reaction (decisions_alarms.txt, ErrorDetail)
+#: which pending alarm ErrorDetail shows: the one with the strongest reaction (decisions.md #97)
 _SEVERITY = {4: 5, 5: 4, 3: 3, 2: 2, 1: 1, 0: 0}
 
 AXIS, ENCODER, PROXY, CAM = "axis", "external encoder", "leading axis proxy", "cam"
@@ -158,6 +158,11 @@ ALARMS: dict[int, Alarm] = {a.number: a for a in (
        "MC_GearIn/MC_GearInPos/MC_CamIn with an unconfigured Master; a coupled leading axis proxy or external "
        "encoder whose value becomes invalid",
        2, "E", 14, False, "configure the leading value / restore the leading value, then MC_Reset"),
+    _A(612, "Cam not interpolated",
+       "the cam given for camming has not been interpolated",
+       "MC_CamIn with a cam technology object that MC_InterpolateCam has not interpolated (since its start or "
+       "its last restart)",
+       4, "E", 2, False, "interpolate the cam with MC_InterpolateCam, then MC_Reset and start MC_CamIn again"),
     _A(900, "External leading value invalid",
        "no valid leading value telegram arrived within the tolerance time",
        "the leading axis proxy (Parameter.ToleranceTimeExternalLeadingValueInvalid)",
@@ -169,7 +174,7 @@ _BY_KIND = {
     F.INTERNAL: 201, F.SW_LIMIT_ORDER: 104, F.NOT_HOMED: 321, F.HOMING_APPROACH_ZERO: 341,
     F.HOMING_REFERENCING_ZERO: 341, F.REFERENCE_NOT_FOUND: 342, F.POSITION_RANGE: 412, F.DRIVE_NOT_READY: 421,
     F.FOLLOWING_ERROR: 521, F.HW_LIMIT_MIN: 531, F.HW_LIMIT_MAX: 531, F.HW_LIMIT_FREE: 531,
-    F.POSITIONING: 541, F.STANDSTILL: 541, F.SYNC_MASTER: 601, F.LV_INVALID: 601,
+    F.POSITIONING: 541, F.STANDSTILL: 541, F.SYNC_MASTER: 601, F.LV_INVALID: 601, F.CAM_NOT_INTERPOLATED: 612,
 }
 _COMMUNICATION = ("station", "sign_of_life")
 _VELOCITY_LIMITS = ("DynamicLimits.Velocity", "DynamicLimits.MaxVelocity")
@@ -326,10 +331,13 @@ def render_markdown() -> str:
         objects = "" if a.objects == (AXIS,) else " (" + ", ".join(a.objects) + ")"
         lines.append(f"| {a.number} | {a.title}{objects} | {a.meaning} | {a.arises} | {_reaction_cell(a)} | "
                      f"{word}.X{a.bit} | {restart} | {a.remedy} |")
-    lines += ["", "Alarms of the CPU's list that plcmotion does not raise (no such function in the model): "
-              "102, 103, 105-114, 202-204, 306-308, 322, 323, 343, 401, 504, 511, 542, 550-552, 561-563, 603, 608, "
-              "612, 700-758 (output cams, cam tracks, measuring inputs), 801-820 (kinematics), 901-903, "
-              "1001-1012 (Interpreter).", ""]
+    lines += ["", "Alarms of the CPU's list that plcmotion does not raise (no situation of the model leads there, "
+              "decisions.md #101): 102, 103, 105-114 (drive/encoder adaptation, isochronous mode, cross-PLC "
+              "configuration), 202-204, 306 (MaxJerk 0 means no jerk limit), 307, 308 (targets beyond 1.0E12 are "
+              "refused at the instruction), 322, 323, 343, 401, 504, 511, 542, 550 (a drive moving on its own: the "
+              "simulated drives have no such function), 551, 552, 561-563, 603, 608, 700-758 (output cams, cam "
+              "tracks, measuring inputs), 801-820 (kinematics), 901-903, 1001-1012 (Interpreter). Reaction 5 "
+              "(follow-up setpoints) belongs to 550 only, so no alarm shows it.", ""]
     return "\n".join(lines)
 
 

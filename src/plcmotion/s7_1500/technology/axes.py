@@ -44,6 +44,9 @@ class PositioningAxis1500(LayeredAxis):
     _status_groups = T.GROUPS
     _read_param_tags = frozenset(T.DYNAMIC)
     command_not_accepted = False
+    # alarm 533 brakes at a software limit switch with the maximum dynamic values (reaction 2; V5 has no
+    # PositionLimits_SW.LimitReachedBehavior, so 0 = maximum dynamics always applies; decisions.md #91)
+    sw_limit_max_deceleration = True
 
     # a leading TO (S7-1500T V5 §3.3): setpoints, actual values and the delayed value (see lv_provider)
     provides_setpoints = True
@@ -93,7 +96,7 @@ class PositioningAxis1500(LayeredAxis):
     def check_start(self, job: Job) -> Fault | None:
         """An absolute positioning of an axis that is not homed is technology alarm 321 (ErrorWord.X3,
         emergency stop ramp; §7.1.1 "Job rejected ... for example, technology object not homed"), not a
-        plain rejection (docs/s7_1500/decisions_alarms.txt, 321)."""
+        plain rejection (docs/s7_1500/decisions.md #84)."""
         fault = super().check_start(job)
         if fault is not None and fault.kind == F.NOT_HOMED and not fault.ack:
             fault = F.alarm(F.NOT_HOMED, fault.detail, Reaction.EMERGENCY, "the axis is not homed")
@@ -187,7 +190,14 @@ class SynchronousAxis(PositioningAxis1500):
         return self.follower.possible_leading_values
 
     def sync_submit(self, job: Job) -> None:
+        """Hand a synchronous job to the follower.  MC_CamIn with a cam that is not interpolated is the
+        CPU's technology alarm 612 at the following axis (reaction 4 remove enable, ErrorWord.X2); the job
+        ends with 16#8001 (docs/s7_1500/decisions.md #62)."""
         self.follower.submit(job)
+        fault = job.fault
+        if fault is not None and fault.kind == F.CAM_NOT_INTERPOLATED and not fault.ack:
+            self.raise_alarm(F.alarm(F.CAM_NOT_INTERPOLATED, "", Reaction.REMOVE_ENABLE,
+                                     "the cam used for camming is not interpolated"))
 
     def phase_shift(self, t: float | None = None) -> float:
         return self.follower.phase_shift(t)

@@ -4,7 +4,7 @@ The tags are declared with the names, ranges and effectiveness of the appendix (
 written by the user program, RES and RON tags are configuration), and turned into the neutral
 typed configuration the kernel reads by ``builder.axis_config``: the kernel runs the same motion,
 monitoring and drive models for every family.  Start values: the manual gives ranges only (catalog §11.2
-item 12); the values chosen here are documented in docs/decisions_s7_1500.md.
+item 12); the values chosen here are documented in docs/s7_1500/decisions.md #36.
 """
 from __future__ import annotations
 

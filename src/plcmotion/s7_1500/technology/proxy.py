@@ -297,7 +297,7 @@ class LeadingAxisProxy(AxisTagsMixin):
         return self._slot
 
     def leading_value_invalid(self, mode: str) -> str | None:
-        """Why a new coupling cannot use this proxy now (None: it can): an alarm of the proxy (900, 901, 903)
+        """Why a new coupling cannot use this proxy now (None: it can): an alarm of the proxy (900)
         means its leading value is invalid until acknowledged (§8.2.3).  Before the first telegram there is
         no alarm yet: the coupling starts and the tolerance time decides."""
         return f"leading value of {self.name} invalid" if self.alarms else None

@@ -105,6 +105,8 @@ class ServeLoop:
             k = 0
             while (n is None or k < n) and not self._shutdown.is_set():
                 self._run_commands()
+                if self._shutdown.is_set():         # a service's command asked for it
+                    break
                 ctl.step()
                 k += 1
                 self._publish()

@@ -357,6 +357,10 @@ def _check_serve_args(args: argparse.Namespace) -> str | None:
         return "--speed and --virtual: virtual time runs unpaced, there is no wall clock to scale"
     if args.tolerate < 0:
         return f"--tolerate {args.tolerate}: allowed: a whole number >= 0 of overruns in a row"
+    if args.realtime is not None and not 1 <= args.realtime <= 99:
+        return f"--realtime {args.realtime}: allowed: a SCHED_FIFO priority in [1, 99]"
+    if args.realtime is not None and args.virtual:
+        return "--realtime and --virtual: virtual time runs unpaced, there is nothing to schedule in real time"
     return None
 
 
@@ -365,6 +369,7 @@ def cmd_serve(args: argparse.Namespace) -> int:
     import signal
 
     from .services import make_loop
+    from .services.realtime import request_realtime
 
     problem = _check_serve_args(args)
     if problem:
@@ -393,6 +398,10 @@ def cmd_serve(args: argparse.Namespace) -> int:
             raise KeyboardInterrupt
         loop.request_shutdown()
 
+    if args.realtime is not None:
+        refused = request_realtime(args.realtime)
+        if refused:
+            log.warning(refused)
     handlers = {sig: signal.signal(sig, on_signal) for sig in (signal.SIGINT, signal.SIGTERM)}
     wall0 = time.perf_counter()
     try:
@@ -456,6 +465,8 @@ def build_parser() -> argparse.ArgumentParser:
                    help="reaction to servo cycle overruns: count and log, or STOP (default: %(default)s)")
     p.add_argument("--tolerate", type=int, default=2,
                    help="overruns in a row --overrun stop tolerates (default: %(default)s)")
+    p.add_argument("--realtime", type=int, metavar="PRIORITY",
+                   help="run with SCHED_FIFO at this priority (1-99; Linux, needs root or CAP_SYS_NICE)")
     p.add_argument("--allow-outside-paths", action="store_true", help=OUTSIDE_HELP)
     p.set_defaults(func=cmd_serve)
     p = sub.add_parser("check", help="validate a project file")

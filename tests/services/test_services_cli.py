@@ -43,6 +43,8 @@ def _axis_lines(out: str) -> list[str]:
     (["--duration", "-1"], "--duration -1.0: allowed: a finite time > 0 s"),
     (["--tolerate", "-1"], "--tolerate -1"),
     (["--overrun", "halt"], "invalid choice: 'halt'"),
+    (["--realtime", "0"], "--realtime 0: allowed: a SCHED_FIFO priority in [1, 99]"),
+    (["--realtime", "5", "--virtual"], "--realtime and --virtual"),
 ])
 def test_services_serve_rejects_bad_flags_with_one_line(project, capsys, argv, text):
     assert main(["serve", str(project / "p.toml"), str(project / "prog.py"), *argv]) == 2
@@ -175,3 +177,20 @@ def test_services_signal_stops_axes_on_their_ramp_saves_retain_and_exits_0(proje
     assert samples[-1][2] is False and v[-1] == 0.0
     assert 0.095 <= braking.sum() * 0.001 <= 0.101              # 200 mm/s / 2000 mm/s^2 = 0.1 s
     assert np.max(-np.diff(v) / np.diff(t)) <= 2000.0 * (1 + 1e-9)
+
+
+@pytest.mark.parametrize("refuse", [False, True])
+def test_services_serve_realtime_asks_for_sched_fifo_and_runs_on_without_it(project, capsys, monkeypatch, refuse):
+    calls = []
+
+    def setscheduler(pid, policy, param):
+        calls.append((pid, policy, param.sched_priority))
+        if refuse:
+            raise PermissionError(1, "Operation not permitted")
+
+    monkeypatch.setattr(os, "sched_setscheduler", setscheduler)
+    assert main(["serve", str(project / "p.toml"), str(project / "prog.py"), "--duration", "0.05", "--speed", "5",
+                 "--realtime", "10"]) == 0
+    assert calls == [(0, os.SCHED_FIFO, 10)]
+    err = capsys.readouterr().err
+    assert ("SCHED_FIFO priority 10 refused (Operation not permitted" in err) == refuse

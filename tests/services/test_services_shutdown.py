@@ -15,7 +15,7 @@ from ._fixtures import ScriptedClock, controller
 
 
 class Watcher:
-    """A service in a thread of its own: waits for a snapshot at t >= 0.3 s, then asks for a shutdown."""
+    """A service in a thread of its own: waits for a snapshot at t >= 0.5 s (the axis at speed), then asks for a shutdown."""
 
     name = "watcher"
 
@@ -29,7 +29,7 @@ class Watcher:
         def watch():
             while not loop.shutting_down:
                 snap = loop.snapshot
-                if snap is not None and snap.time >= 0.3 - 1e-9:
+                if snap is not None and snap.time >= 0.5 - 1e-9:
                     self.seen.append(snap)
                     loop.call_soon(lambda: (self.requested.append(loop.ctl.time), loop.request_shutdown()))
                     return

@@ -8,8 +8,10 @@ from __future__ import annotations
 import logging
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
-from plcmotion.services import Pacer, ServeLoop, make_loop
+from plcmotion.services import LatenessStats, Pacer, ServeLoop, make_loop
 
 from ._fixtures import ORIGIN, ScriptedClock, controller
 
@@ -136,3 +138,30 @@ def test_services_pacing_rejects_bad_settings():
             Pacer(ctl, **kw)
     with pytest.raises(ValueError, match="shutdown_timeout"):
         ServeLoop(ctl, shutdown_timeout=-1.0)
+
+
+@given(st.lists(st.integers(0, 10**9), min_size=1, max_size=300), st.integers(1, 64),
+       st.sampled_from([1, 50, 99, 100]))
+def test_services_lateness_window_percentile_is_the_nearest_rank_of_the_last_cycles(samples, window, p):
+    """The percentile is the smallest of the last ``window`` samples with at least p % at or below it; the
+    maximum and the count cover all samples."""
+    stats = LatenessStats(window)
+    for s in samples:
+        stats.add(s)
+    last = sorted(samples[-window:])
+    assert stats.percentile_ns(p) == last[max(1, -(-p * len(last) // 100)) - 1]
+    assert list(stats.samples()) == samples[-window:]
+    assert stats.max_ns == max(samples) and stats.count == len(samples)
+
+
+@settings(max_examples=40)
+@given(st.lists(st.integers(0, 999_999), min_size=1, max_size=50), st.sampled_from([0.25, 1.0, 3.0, 7.0]))
+def test_services_deadlines_stay_absolute_for_any_wakeup_delays_below_a_cycle(delays, speed):
+    """Wake-ups late by less than a servo cycle / speed never shift the deadlines (no overrun, no slip)."""
+    period = 1e6 / speed
+    clock = ScriptedClock(oversleep=lambda k: int(delays[k % len(delays)] * min(1.0, 1 / speed)) % int(period))
+    ctl = controller()
+    loop = make_loop(ctl, clock=clock, speed=speed)
+    loop.run(0.2)
+    assert clock.sleeps == [ORIGIN + round(n * period) for n in range(1, 200)]
+    assert loop.pacing.Overruns == 0 and loop.pacing.Slip == 0.0

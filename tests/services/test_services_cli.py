@@ -90,6 +90,7 @@ def test_services_serve_paced_takes_at_least_the_wall_clock_time(project, capsys
         out = capsys.readouterr().out
         cycles = round(float(duration) * 1000)
         assert f"pacing: {cycles} servo cycles at x{speed}" in out and "ended by duration" in out
+    assert not (project / "p.state.json").exists()        # nothing retentive: no state file left behind
 
 
 def test_services_program_reads_the_pacing_tags(project, capsys):
@@ -111,8 +112,15 @@ def test_services_load_without_program_globals_is_as_run(project):
     assert not isinstance(ctl, int) and ctl.axes["Axis_1"].state == "disabled"
 
 
-SHUTDOWN_PROGRAM = PROGRAM + '''
+ABSOLUTE_ENCODER = """
+[axes.Axis_1."Sensor[1]"]
+Type = 1
+Parameter.DeterminableRevolutions = 4096
+"""
+
+SHUTDOWN_PROGRAM = '''
 import atexit
+from plcmotion.s7_1200 import MC_Home, MC_MoveVelocity, MC_Power
 import json
 import os
 
@@ -133,11 +141,17 @@ def watch(ctl):
 
 
 from pathlib import Path
-_setup = setup
 
 
 def setup(ctl):
-    _setup(ctl)
+    axis = ctl.axes["Axis_1"]
+    power, home, run = MC_Power(), MC_Home(), MC_MoveVelocity()
+
+    @ctl.program
+    def main():
+        power(Axis=axis, Enable=True, StopMode=0)
+        home(Axis=axis, Execute=power.Status, Mode=7, Position=1000.0)     # absolute encoder adjustment
+        run(Axis=axis, Execute=home.Done, Velocity=200.0)
     watch(ctl)
 '''
 
@@ -147,7 +161,9 @@ def test_services_signal_stops_axes_on_their_ramp_saves_retain_and_exits_0(proje
     """SIGINT/SIGTERM: the axis running at 200 mm/s is disabled with the StopMode its MC_Power gave (0:
     emergency stop with the configured EmergencyDeceleration 2000 mm/s^2, S7-1200 V6 §11.1.1), so it
     brakes over 0.1 s instead of losing its enable at speed; then the enable goes off, the state file is
-    written and the process exits 0."""
+    written and the process exits 0.  The retentive data (S7-1200 V6 §11.1.3: the absolute encoder offset
+    of MC_Home mode 7) is in the state file after the exit even where the file was lost during the run."""
+    (project / "p.toml").write_text(PROJECT + ABSOLUTE_ENCODER)
     (project / "prog.py").write_text(SHUTDOWN_PROGRAM)
     mark = project / "running"
     state = project / "p.state.json"
@@ -160,7 +176,7 @@ def test_services_signal_stops_axes_on_their_ramp_saves_retain_and_exits_0(proje
         while not mark.exists() and proc.poll() is None and time.monotonic() < deadline:
             time.sleep(0.02)
         assert mark.exists(), proc.communicate(timeout=10)
-        assert not state.exists()
+        state.unlink()                              # written at the adjustment; the shutdown writes it again
         proc.send_signal(sig)
         out, err = proc.communicate(timeout=120)
     finally:
@@ -168,7 +184,8 @@ def test_services_signal_stops_axes_on_their_ramp_saves_retain_and_exits_0(proje
             proc.kill()
     assert proc.returncode == 0, err
     assert "ended by shutdown" in out and "Axis_1: disabled" in out
-    assert json.loads(state.read_text())["format"] == "plcmotion-retain-1"
+    assert json.loads(state.read_text()) == {"format": "plcmotion-retain-1",
+                                             "axes": {"Axis_1": {"AbsEncoderOffset": 1000.0, "HomingDone": True}}}
     samples = json.loads(Path(str(mark) + ".json").read_text())
     last_full = max(i for i, s in enumerate(samples) if s[1] >= 200.0)
     v = np.array([s[1] for s in samples[last_full:]])

@@ -10,11 +10,13 @@ application cycles in its own thread.
 Shutdown (``request_shutdown``, e.g. from SIGINT/SIGTERM): the programs no longer run, every enabled axis
 is disabled by the family's own disabling path with the StopMode its enabling instruction gave (its
 configured stop ramp), the servo cycles run until all axes stand disabled (at most ``shutdown_timeout``
-s of virtual time; then the enable is removed), the retentive data is saved and the services stopped.
+s of virtual time; then the enable is removed), the retentive data is saved (if there is any) and the
+services stopped.
 """
 from __future__ import annotations
 
 import math
+import os
 import queue
 import threading
 from dataclasses import dataclass, field
@@ -136,7 +138,9 @@ class ServeLoop:
                          f"{self.shutdown_timeout:g} s; enable removed")
         if ctl.mode != "RUN" and self.ended_by == "duration":
             self.ended_by = "STOP"
-        if ctl.state_file:
+        # the kernel writes the state file whenever retentive data changes; this keeps it whole at the end
+        # without leaving an empty file beside a project that has nothing to retain
+        if ctl.state_file and (ctl.retain or os.path.exists(ctl.state_file)):
             retain.save(ctl.state_file, ctl.retain)
 
     def _run_commands(self) -> None:

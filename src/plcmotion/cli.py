@@ -1,4 +1,4 @@
-"""Command line: ``plcmotion demo``, ``plcmotion run``, ``plcmotion check``.
+"""Command line: ``plcmotion demo``, ``plcmotion run``, ``plcmotion serve``, ``plcmotion check``.
 
 Every argument is checked before anything runs: a bad one gives one line on stderr and exit code 2
 (issue 8, defect 10).  ``run`` exits 1 when the controller ended in STOP and 130 after Ctrl-C.
@@ -200,13 +200,15 @@ def _values(ax) -> str:
         return f"setpoint {float(b.sp_p[i]):.6g}, actual {float(b.act_p[i]):.6g}"
 
 
-def load_program(ctl, program: str) -> None:
-    """Run a user program file: it defines ``setup(ctl)`` or uses the global ``ctl`` it is given."""
+def load_program(ctl, program: str, extra: dict | None = None) -> None:
+    """Run a user program file: it defines ``setup(ctl)`` or uses the global ``ctl`` it is given
+    (``extra``: further globals, e.g. ``pacing`` under ``plcmotion serve``)."""
     path = Path(program)
     if not path.is_file():
         raise FileNotFoundError(f"{program}: program file not found")
     try:
-        namespace = runpy.run_path(str(path), init_globals={"ctl": ctl, "axes": ctl.axes}, run_name="__plcmotion__")
+        namespace = runpy.run_path(str(path), init_globals={"ctl": ctl, "axes": ctl.axes, **(extra or {})},
+                                   run_name="__plcmotion__")
     except SystemExit as exc:            # not the CLI's exit: the program file must register programs
         raise RuntimeError(f"the file called sys.exit({exc.code!r}) while it was loaded") from None
     setup = namespace.get("setup")
@@ -217,28 +219,58 @@ def load_program(ctl, program: str) -> None:
                          f"(inside setup(ctl) or at module level)")
 
 
-def cmd_run(args: argparse.Namespace) -> int:
+def _load(args: argparse.Namespace, before_program=None):
+    """The controller of ``args.project`` with ``args.program`` loaded, or the exit code of the failure.
+    ``before_program(ctl)`` gives further globals of the program file."""
     from .kernel.runtime import exception_text
     from .project import ProjectError, load_project
-    from .trace import Trace, plot_csv
 
-    problem = _check_run_args(args)
-    if problem:
-        print(f"plcmotion run: {problem}", file=sys.stderr)
-        return 2
     try:
         ctl = load_project(args.project, allow_outside_paths=getattr(args, "allow_outside_paths", False))
     except ProjectError as exc:
         print(exc, file=sys.stderr)
         return 2
     try:
-        load_program(ctl, args.program)
+        load_program(ctl, args.program, before_program(ctl) if before_program is not None else None)
     except KeyboardInterrupt:
         print(f"{args.program}: interrupted while loading", file=sys.stderr)
         return 130
     except BaseException as exc:  # noqa: BLE001 - the user's file: report it, do not show our internals
         print(f"{args.program}: {exception_text(exc)}", file=sys.stderr)
         return 2
+    return ctl
+
+
+def _print_objects(ctl) -> None:
+    """Each axis and technology object after a run: state, values, errors; the watchdog's overruns."""
+    family = families.lookup(ctl.family)
+
+    def alarms(to) -> str:
+        """The family's view of the object's errors (its alarm numbers and texts, its error records)."""
+        return ", ".join(families.error_texts(family, to)) or "no error"
+
+    for name, ax in ctl.axes.items():
+        errors = alarms(ax)
+        print(f"  {name}: {ax.state}, {_values(ax)}, homed {ax.homed}, {errors}")
+    for name, to in ctl.objects.items():
+        errors = alarms(to)
+        print(f"  {name}: {type(to).__name__}, {errors}")
+    wd = ctl.watchdog
+    if wd.count:
+        print(f"cycle watchdog: {wd.count} cycle time overrun{'s' if wd.count != 1 else ''} (longest program "
+              f"run {wd.longest * 1000:.4g} ms, watchdog time {wd.limit * 1000:.4g} ms)")
+
+
+def cmd_run(args: argparse.Namespace) -> int:
+    from .trace import Trace, plot_csv
+
+    problem = _check_run_args(args)
+    if problem:
+        print(f"plcmotion run: {problem}", file=sys.stderr)
+        return 2
+    ctl = _load(args)
+    if isinstance(ctl, int):
+        return ctl
     settings = getattr(ctl, "project", None) or {}
     trace_settings = settings.get("trace", {}) if isinstance(settings, dict) else {}
     trace = None
@@ -289,22 +321,7 @@ def cmd_run(args: argparse.Namespace) -> int:
             plot_failed = f"--plot {args.plot}: {getattr(exc, 'strerror', None) or exc}"
     print(f"ran {ctl.time:.3f} s of virtual time in {wall:.2f} s (x{ctl.time / wall if wall else 0:.1f} real time), "
           f"mode {ctl.mode}")
-    family = families.lookup(ctl.family)
-
-    def alarms(to) -> str:
-        """The family's view of the object's errors (its alarm numbers and texts, its error records)."""
-        return ", ".join(families.error_texts(family, to)) or "no error"
-
-    for name, ax in ctl.axes.items():
-        errors = alarms(ax)
-        print(f"  {name}: {ax.state}, {_values(ax)}, homed {ax.homed}, {errors}")
-    for name, to in ctl.objects.items():
-        errors = alarms(to)
-        print(f"  {name}: {type(to).__name__}, {errors}")
-    wd = ctl.watchdog
-    if wd.count:
-        print(f"cycle watchdog: {wd.count} cycle time overrun{'s' if wd.count != 1 else ''} (longest program "
-              f"run {wd.longest * 1000:.4g} ms, watchdog time {wd.limit * 1000:.4g} ms)")
+    _print_objects(ctl)
     if args.trace:
         print(f"trace: {args.trace}")
     if args.plot and not interrupted and plot_failed is None:
@@ -321,6 +338,98 @@ def cmd_run(args: argparse.Namespace) -> int:
         print(f"controller in {ctl.mode}: {ctl.stop_reason}", file=sys.stderr)
         return 1
     return 1 if plot_failed or trace_failed else 0
+
+
+#: largest ``--speed`` factor: beyond it a 1 ms servo cycle is shorter than a Python servo cycle takes
+MAX_SPEED = 1000.0
+
+
+def _check_serve_args(args: argparse.Namespace) -> str | None:
+    """The first problem of the ``serve`` arguments (before the project is loaded), or None."""
+    d = args.duration
+    if d is not None and (not math.isfinite(d) or d <= 0):
+        return f"--duration {d!r}: allowed: a finite time > 0 s"
+    if d is not None and d > MAX_DURATION:
+        return f"--duration {d:g}: allowed: at most {MAX_DURATION:g} s"
+    if not math.isfinite(args.speed) or not 0 < args.speed <= MAX_SPEED:
+        return f"--speed {args.speed!r}: allowed: a factor in (0, {MAX_SPEED:g}] of real time"
+    if args.virtual and args.speed != 1.0:
+        return "--speed and --virtual: virtual time runs unpaced, there is no wall clock to scale"
+    if args.tolerate < 0:
+        return f"--tolerate {args.tolerate}: allowed: a whole number >= 0 of overruns in a row"
+    if args.realtime is not None and not 1 <= args.realtime <= 99:
+        return f"--realtime {args.realtime}: allowed: a SCHED_FIFO priority in [1, 99]"
+    if args.realtime is not None and args.virtual:
+        return "--realtime and --virtual: virtual time runs unpaced, there is nothing to schedule in real time"
+    return None
+
+
+def cmd_serve(args: argparse.Namespace) -> int:
+    import logging
+    import signal
+
+    from .services import make_loop
+    from .services.realtime import request_realtime
+
+    problem = _check_serve_args(args)
+    if problem:
+        print(f"plcmotion serve: {problem}", file=sys.stderr)
+        return 2
+    made: list = []
+
+    def make(ctl) -> dict:
+        loop = make_loop(ctl, virtual=args.virtual, speed=args.speed, overrun=args.overrun, tolerated=args.tolerate)
+        made.append(loop)
+        return {} if loop.pacing is None else {"pacing": loop.pacing}
+
+    ctl = _load(args, make)
+    if isinstance(ctl, int):
+        return ctl
+    loop = made[0]
+    log = logging.getLogger("plcmotion.serve")
+    if not log.handlers:
+        handler = logging.StreamHandler(sys.stderr)
+        handler.setFormatter(logging.Formatter("plcmotion serve: %(message)s"))
+        log.addHandler(handler)
+        log.propagate = False
+
+    def on_signal(signum, frame) -> None:
+        if loop.shutting_down:      # a second signal: no more waiting for the stop ramps
+            raise KeyboardInterrupt
+        loop.request_shutdown()
+
+    if args.realtime is not None:
+        refused = request_realtime(args.realtime)
+        if refused:
+            log.warning(refused)
+    handlers = {sig: signal.signal(sig, on_signal) for sig in (signal.SIGINT, signal.SIGTERM)}
+    wall0 = time.perf_counter()
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", ProgramErrorWarning)        # reported at the end, as by run
+            warnings.simplefilter("ignore", CycleOverrunWarning)
+            loop.run(args.duration)
+    except KeyboardInterrupt:
+        print(f"interrupted again at t = {ctl.time:.6g} s: controller in {ctl.mode}", file=sys.stderr)
+        return 130
+    finally:
+        for sig, old in handlers.items():
+            signal.signal(sig, old)
+        ctl.close()
+    wall = time.perf_counter() - wall0
+    print(f"served {ctl.time:.3f} s of virtual time in {wall:.2f} s (x{ctl.time / wall if wall else 0:.1f} real "
+          f"time), mode {ctl.mode}, ended by {loop.ended_by}")
+    if loop.pacer is not None:
+        print(loop.pacer.summary())
+    _print_objects(ctl)
+    if loop.not_stopped:
+        print(f"shutdown: {', '.join(loop.not_stopped)} still moving after {loop.shutdown_timeout:g} s: enable "
+              "removed", file=sys.stderr)
+        return 1
+    if ctl.mode != "RUN":
+        print(f"controller in {ctl.mode}: {ctl.stop_reason}", file=sys.stderr)
+        return 1
+    return 0
 
 
 OUTSIDE_HELP = ("let state_file and cam csv paths of the project leave the project's folder "
@@ -346,6 +455,20 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--progress", action="store_true", help="progress bar even when not on a terminal")
     p.add_argument("--allow-outside-paths", action="store_true", help=OUTSIDE_HELP)
     p.set_defaults(func=cmd_run)
+    p = sub.add_parser("serve", help="run a project with a user program paced to the wall clock")
+    p.add_argument("project", help="project file (TOML)")
+    p.add_argument("program", help="user program (Python file defining setup(ctl))")
+    p.add_argument("--duration", type=float, help="virtual time to run [s] (default: until Ctrl-C/SIGTERM)")
+    p.add_argument("--speed", type=float, default=1.0, help="wall-clock speed factor (2: twice real time)")
+    p.add_argument("--virtual", action="store_true", help="unpaced virtual time (the run of plcmotion run)")
+    p.add_argument("--overrun", choices=("warn", "stop"), default="warn",
+                   help="reaction to servo cycle overruns: count and log, or STOP (default: %(default)s)")
+    p.add_argument("--tolerate", type=int, default=2,
+                   help="overruns in a row --overrun stop tolerates (default: %(default)s)")
+    p.add_argument("--realtime", type=int, metavar="PRIORITY",
+                   help="run with SCHED_FIFO at this priority (1-99; Linux, needs root or CAP_SYS_NICE)")
+    p.add_argument("--allow-outside-paths", action="store_true", help=OUTSIDE_HELP)
+    p.set_defaults(func=cmd_serve)
     p = sub.add_parser("check", help="validate a project file")
     p.add_argument("project", help="project file (TOML)")
     p.add_argument("--allow-outside-paths", action="store_true", help=OUTSIDE_HELP)

@@ -24,6 +24,19 @@ def test_kernel_cycles_and_virtual_time():
     assert ctl.time == pytest.approx(0.108)
 
 
+def test_kernel_step_without_programs_runs_only_the_servo_cycles():
+    """A controlled shutdown lets the stop ramps run out while no program commands the axes again."""
+    ctl = Controller(servo_cycle=0.001, app_cycle=0.004)
+    calls, servo = [], []
+    ctl.program(lambda: calls.append(ctl.time))
+    ctl.on_post_servo(servo.append)
+    ctl.step()
+    ctl.step(programs=False)
+    ctl.step()
+    assert calls == [0.0, 0.008] and len(servo) == 12 and ctl.app_cycles == 3
+    assert ctl.time == pytest.approx(0.012)
+
+
 @pytest.mark.parametrize("servo, app", [(0.001, 0.0025), (0.0, 0.004), (0.001, -1.0), (float("nan"), 0.004)])
 def test_kernel_invalid_cycles_rejected(servo, app):
     with pytest.raises(ValueError):

@@ -457,13 +457,15 @@ class Controller:
         self._servo_defect = False
 
     # --- running ---------------------------------------------------------------------------------------
-    def step(self) -> None:
+    def step(self, *, programs: bool = True) -> None:
         """One application cycle: user programs, then the servo cycles of that period.
 
         Whatever a program or servo hook raises puts the controller in STOP with the reason
         (``stop_reason``) and a ``ProgramErrorWarning``; ``step`` then returns.  Only KeyboardInterrupt
-        leaves ``step``, after the controller went to STOP: the person at the terminal gets it."""
-        if self.mode == RUN:
+        leaves ``step``, after the controller went to STOP: the person at the terminal gets it.
+        ``programs=False``: only the servo cycles run (a controlled shutdown lets the stop ramps run out
+        without a program commanding the axes again)."""
+        if programs and self.mode == RUN:
             self._run_programs()
         self.app_cycles += 1
         try:

@@ -5,7 +5,8 @@ The hand-written tags of ``schema`` (and its helper modules) are the parameters 
 other axis parameter of the list that is a configuration value becomes a tag here, generated from the
 parameter table: its range, ENUM codes, access and effectiveness are the list's, so MC_ReadSysParameter,
 MC_WriteParameter and project files treat it exactly like a modelled one.  The list gives no start values;
-the generated start value is 0 / 0.0 moved into the printed range, 1 for a gear factor, the modelled maxima
+the generated start value is 0 / 0.0 moved into the printed range, 1 for a gear factor, YES for 2034 (the
+model's controller precontrols with the weighting 2032), the modelled maxima
 (numbers 8, 12, 16) for the directional limits of dynamics 4121-4125 / 4151-4155, and for an ENUM its lowest
 ValueDint (EnumYesNo and EnumActiveInactive: NO / INACTIVE).  Data set 2-16 and encoder 2-8 values are optional: one a
 project leaves out is data set 1's / encoder 1's (as ``datasets`` does for the modelled ones).
@@ -42,6 +43,8 @@ def _start(p: Parameter) -> int | float:
     if head in ("minuslimitsofdynamics", "pluslimitsofdynamics"):
         return _LIMITS[leaf]
     if leaf in ("numFactor", "denFactor"):
+        return 1
+    if p.number == 2034:                # the model's position controller always precontrols (weighting 2032)
         return 1
     if p.enum is not None:
         return min(ENUMS[p.enum].codes())

@@ -264,3 +264,11 @@ def test_s7t_parameter_table_docs_say_what_acts():
     kinds = {n: line.split("|")[11].strip() for n, line in lines.items()}
     assert set(kinds.values()) == {"acts", "computed", "stored"}
     assert (kinds[1100], kinds[1264], kinds[4010], kinds[4121]) == ("acts", "stored", "computed", "stored")
+
+
+@pytest.mark.parametrize("position, state", [(110.0, 1), (50.0, 0)])
+def test_s7t_parameter_table_bero_state(position, state):
+    """S7-Technology V4.1 §9.4 4174 homingcommand.berostate (EnumActiveInactive): ACTIVE while the reference
+    cam (I0.0, machine 100..120) is actuated."""
+    r = Rig({"Plant.InitialPosition": position}, enable=False)
+    assert _read(r.axis, 4174).ValueDInt == state

@@ -107,6 +107,12 @@ def _hw_state(ax: "AxisT", side: str) -> int:
     return _LIMIT_EXCEEDED if ax.hw_approached.get(side) else _LIMIT_OK
 
 
+def _bero(ax: "AxisT") -> int:
+    """homingcommand.berostate: the reference cam of active homing is actuated (its input at its level)."""
+    cam = ax.config.homing.active
+    return _ACTIVE if cam.input and ax.ctl.inputs[cam.input] == cam.active_high else _INACTIVE
+
+
 def _superimposed(ax: "AxisT") -> tuple[float, float]:
     """The superimposing coordinate system (technology.coordinates); a speed axis has none."""
     if getattr(ax, "superimposed", None) is None or not ax.positioning:
@@ -128,6 +134,7 @@ _SYSTEM: dict[int, Any] = {
     4050: lambda ax, x=1: _SENSOR_VALID if ax.encoders.is_valid(x) else _SENSOR_NOT_VALID,
     4162: _target_distance,
     4173: lambda ax: float(ax.homing.reference_mark),     # the position the axis was homed to last
+    4174: _bero,
     4400: lambda ax: _sw_state(ax, -1),
     4401: lambda ax: _sw_state(ax, +1),
     4410: lambda ax: _hw_state(ax, "min"),

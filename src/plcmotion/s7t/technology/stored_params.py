@@ -22,7 +22,7 @@ from .to_kinds import TOKind
 
 #: numbers whose value the technology computes or keeps outside the tags (parameter_access)
 COMPUTED = frozenset({1, 10, 11, 2000, 3000, 4001, 4010, 4011, 4020, 4030, 4031, 4040, 4041, 4050, 4162, 4173,
-                      4400, 4401, 4410, 4411, 4412, 4500, 4501, 5002, 5014, 5020})
+                      4174, 4400, 4401, 4410, 4411, 4412, 4500, 4501, 5002, 5014, 5020})
 #: start values the 0-rule would make meaningless: the start values of numbers 8, 12 and 16 in ``schema``
 _LIMITS = {"velocity": 1000.0, "positiveaccel": 10000.0, "negativeaccel": 10000.0,
            "positiveacceljerk": 1.0e6, "negativeacceljerk": 1.0e6}

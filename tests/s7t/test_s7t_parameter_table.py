@@ -174,7 +174,8 @@ def test_s7t_parameter_table_by_name_in_project_files():
         "minuslimitsofdynamics.negativeaccel": 250.0,
         "TypeOfAxis.NumberOfEncoders.Encoder_1.AdaptDrive.denFactor": 4,
         "TypeOfAxis.Homing.referencingNecessary": 0})
-    hyd = ctl.add_positioning_axis("Press", {"Wizard.DriveTechnology": 1, "TypeOfAxis.SlidingFriction.FactorMotionControl": 0.5})
+    hyd = ctl.add_positioning_axis("Press", {"Wizard.DriveTechnology": 1,
+                                             "TypeOfAxis.SlidingFriction.FactorMotionControl": 0.5})
     ctl.run(0.02)
     assert _read(axis, 4121).Value == 250.0
     assert _read(axis, 3011).ValueDInt == 4

@@ -24,7 +24,8 @@ from tools import gen_s7t_basic_docs, gen_s7t_instruction_docs  # noqa: E402
 from tools.s7t_pages import ROOT, row as _row  # noqa: E402
 
 from plcmotion.s7t import fb_errors, fb_tables  # noqa: E402
-from plcmotion.s7t.technology import parameters, tdb_errors  # noqa: E402
+from plcmotion.s7t.technology import parameters, stored_params, tdb_errors  # noqa: E402
+from plcmotion.s7t.technology.schema import AXIS as AXIS_SCHEMA, STORED_NUMBERS  # noqa: E402
 from plcmotion.s7t.technology.enums import ENUMS  # noqa: E402
 from plcmotion.s7t.technology.to_kinds import AxisType, TOKind  # noqa: E402
 
@@ -97,6 +98,17 @@ def render_errorids() -> str:
 _TYPE_NAMES = {AxisType.SPEED: "V", AxisType.POSITIONING: "P", AxisType.SYNCHRONIZATION: "Y"}
 
 
+def _model(p: "parameters.Parameter") -> tuple[str, str]:
+    """(what the parameter does in the model, its default) for the Model and Default columns."""
+    if p.to is not TOKind.AXIS:
+        return "TO not modelled", "–"
+    if p.number in stored_params.COMPUTED:
+        return "computed", "–"
+    start = AXIS_SCHEMA.params[stored_params.tag(p, 1)].start
+    kind = "stored" if p.number in STORED_NUMBERS else "acts"
+    return kind, "–" if start is None else f"{start:g}" if isinstance(start, float) else str(start)
+
+
 def render_parameters() -> str:
     out = [HEADER, "# S7-Technology V4.1: technology parameters", "",
            "All 318 entries of the parameter list (S7-Technology V4.1 §9.4), read with MC_ReadSysParameter (FB 406) "
@@ -107,21 +119,26 @@ def render_parameters() -> str:
            "axis. Index (firmware V3.1 and higher): data sets 1-16, encoders 1-8, synchronous objects 1 (basic) / 2 "
            "(superimposed); the list's firmware column is empty for every entry. REAL "
            "values must lie strictly inside ±1E+12 (§6.9.3); other printed bounds are inclusive. ENUM parameters "
-           "take the ValueDint codes listed below at `ValueDInt`.", ""]
+           "take the ValueDint codes listed below at `ValueDInt`. Model: *acts* - the value drives the axis model; "
+           "*computed* - a system variable the model computes (or a value it keeps elsewhere: 4010 the absolute "
+           "encoder adjustment, 4500/4501 the drive words); *stored* - accepted, range-checked and read back with the "
+           "manual's rules but without a modelled effect (docs/s7t/decisions.md D92); the other TO types are not "
+           "modelled in part 1. Default: the start value of a configuration that does not set the parameter "
+           "(data set / encoder 1).", ""]
     for kind in (TOKind.AXIS, TOKind.EXTERNAL_ENCODER, TOKind.OUTPUT_CAM, TOKind.CAM_TRACK, TOKind.CAM,
                  TOKind.MEASURING_INPUT):
         ps = parameters.all_parameters(kind)
         out += [f"## {kind.value} ({len(ps)})", "",
                 _row("No.", "Index", "Expert name", "DB-Param name", "Type", "Min", "Max", "Access", "Effective",
-                     "Axis types"),
-                _row(*("---",) * 10)]
+                     "Axis types", "Model", "Default"),
+                _row(*("---",) * 12)]
         for p in ps:
             index = f"{p.index[0]}-{p.index[1]}" if p.index else "–"
             types = "".join(_TYPE_NAMES[t] for t in AxisType if t in p.axis_types) or "–"
             if p.hydraulic:
                 types += " hydr."
             out.append(_row(p.number, index, f"`{p.expert_name}`", p.db_name, p.data_type, p.min_text or "–",
-                            p.max_text or "–", p.access, p.effective or "–", types))
+                            p.max_text or "–", p.access, p.effective or "–", types, *_model(p)))
         out.append("")
     out += ["## ENUM values (§9.4.12)", "",
             "ValueDint is the code at MC_ReadSysParameter / MC_WriteParameter; the expert-list column is the number "

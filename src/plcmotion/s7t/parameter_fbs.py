@@ -92,7 +92,7 @@ class MC_WriteParameter(_ParameterFB):  # noqa: N801
         acc = PA.resolve(to, number, index)
         if isinstance(acc, int):
             raise InstructionError(acc)
-        code = PA.write(to, number, index, self._value(PA.output_of(acc.parameter)))
+        code = PA.write(to, number, index, self._value(PA.input_of(acc.parameter)))
         if code >= 0x8000:
             raise InstructionError(code)
         return _done(self, warning=code)

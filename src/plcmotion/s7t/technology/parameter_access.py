@@ -31,6 +31,7 @@ from ...kernel import axis_status as S
 from ...kernel.jobs import JobKind
 from ...kernel.tag_views import TagAccessError
 from . import activation, coordinates
+from . import parameter_words as W
 from . import datasets as D
 from .encoders import ABSOLUTE, CYCLIC_ABSOLUTE, encoder_type
 from .parameters import (ILLEGAL_PARAMETER, INVALID_NUMBER, READ_ONLY, RESTART_REQUIRED, Parameter, parameter)
@@ -48,6 +49,7 @@ _AXIS_TYPE = {0: AxisType.SPEED, 1: AxisType.POSITIONING, 2: AxisType.SYNCHRONIZ
 _COLLECT, _ACTIVATE = 82, 81                        # EnumToActivationModeSetConfigData
 _LIMIT_EXCEEDED, _LIMIT_OK = 101, 102               # EnumLimitExceededOk
 _SENSOR_NOT_VALID, _SENSOR_VALID = 204, 206         # EnumSensorState
+_INACTIVE, _ACTIVE = 0, 1                           # EnumActiveInactive
 _POSITIONING = (JobKind.ABSOLUTE, JobKind.RELATIVE)
 
 
@@ -105,6 +107,12 @@ def _hw_state(ax: "AxisT", side: str) -> int:
     return _LIMIT_EXCEEDED if ax.hw_approached.get(side) else _LIMIT_OK
 
 
+def _bero(ax: "AxisT") -> int:
+    """homingcommand.berostate: the reference cam of active homing is actuated (its input at its level)."""
+    cam = ax.config.homing.active
+    return _ACTIVE if cam.input and ax.ctl.inputs[cam.input] == cam.active_high else _INACTIVE
+
+
 def _superimposed(ax: "AxisT") -> tuple[float, float]:
     """The superimposing coordinate system (technology.coordinates); a speed axis has none."""
     if getattr(ax, "superimposed", None) is None or not ax.positioning:
@@ -126,16 +134,23 @@ _SYSTEM: dict[int, Any] = {
     4050: lambda ax, x=1: _SENSOR_VALID if ax.encoders.is_valid(x) else _SENSOR_NOT_VALID,
     4162: _target_distance,
     4173: lambda ax: float(ax.homing.reference_mark),     # the position the axis was homed to last
+    4174: _bero,
     4400: lambda ax: _sw_state(ax, -1),
     4401: lambda ax: _sw_state(ax, +1),
     4410: lambda ax: _hw_state(ax, "min"),
     4411: lambda ax: _hw_state(ax, "max"),
     4412: lambda ax: ax.encoders.active,
+    5002: lambda ax: ax.drive.output_percent,                       # hydraulic axes only (list: "Hydraulic.")
+    5014: lambda ax: _ACTIVE if S.drive_in_operation(ax) else _INACTIVE,
+    5020: lambda ax: 0.0 if ax.without_encoder else float(ax.ctl.bank.act_v[ax.index]),
 }
 #: system variables indexed 1..8 of which the model has only index 1
-_PER_ENCODER = frozenset({4020, 4030, 4031, 4040, 4041})
+_PER_ENCODER = frozenset({4020, 4030, 4031, 4040, 4041, 5020})
 #: sensordata_x.state: Index = one of the axis's encoders (technology.encoders)
 _SENSOR_STATE = 4050
+#: drive words and absolute encoder adjustment (technology.parameter_words)
+_ADJUSTMENT, _ADJUSTED, _CONTROL_WORDS, _STATUS_WORDS = 4010, 4011, 4500, 4501
+_WORDS = {_CONTROL_WORDS: W.control_words, _STATUS_WORDS: W.status_words}
 
 
 def _tag(p: Parameter, index: int) -> str:
@@ -164,6 +179,12 @@ def output_of(p: Parameter) -> str:
     return OUT_DINT
 
 
+def input_of(p: Parameter) -> str:
+    """The MC_WriteParameter input(s) of ``p``: as :func:`output_of`, but 4500 is written as value + mask in
+    ValueDword1 + ValueDword2 (§6.7.5 example "Drive control word")."""
+    return OUT_DWORD2 if p.value_input == "ValueDword1+ValueDword2" else output_of(p)
+
+
 def resolve(axis: "AxisT", number: int, index: int) -> Access | int:
     """The parameter ``number`` (data set / encoder ``index``) of ``axis``, or the ErrorID 16#8080 when the
     axis has no such parameter, index, or configured value."""
@@ -182,9 +203,15 @@ def resolve(axis: "AxisT", number: int, index: int) -> Access | int:
         return Access(p, None, output_of(p))
     if number == 4001:
         return Access(p, None, OUT_DINT)
+    if number in _WORDS:
+        return Access(p, None, OUT_DWORD1)
+    if number in (_ADJUSTMENT, _ADJUSTED):
+        return Access(p, None, output_of(p)) if W.adjustment_available(axis, i) else INVALID_NUMBER
     tag = _tag(p, i)
     if tag not in axis.schema.params:
         return INVALID_NUMBER                 # not configured on this axis (S7T Config)
+    if ".Encoder_" in tag and i > axis.encoders.count:
+        return INVALID_NUMBER                 # an encoder the axis does not have (§4.5.1)
     if ".DataSet_" in tag and i > axis.parameters.effective.get("TypeOfAxis.NumberOfDataSets.numberOfDataSets", 1):
         return INVALID_NUMBER                 # a data set the axis does not have (§3.1.10)
     return Access(p, tag, output_of(p))
@@ -222,6 +249,12 @@ def read(axis: "AxisT", number: int, index: int) -> tuple[int, str, Any]:
     if acc.tag is None:
         if p.number == 4001:
             return 0, OUT_DINT, _COLLECT if _writes(axis).collecting else _ACTIVATE
+        if p.number in _WORDS:
+            return 0, OUT_DWORD1, _WORDS[p.number](axis)
+        if p.number == _ADJUSTMENT:
+            return 0, acc.output, W.read_adjustment(axis, index)
+        if p.number == _ADJUSTED:
+            return 0, acc.output, W.adjusted(axis, index)
         value = _SYSTEM[p.number](axis, index) if p.number == _SENSOR_STATE else _SYSTEM[p.number](axis)
     else:
         store = axis.parameters
@@ -229,8 +262,9 @@ def read(axis: "AxisT", number: int, index: int) -> tuple[int, str, Any]:
         held = _writes(axis).held
         if acc.tag in held:
             value = held[acc.tag]
-        if value is None and ".DataSet_" in acc.tag:
-            # a data set without its own value of this parameter uses data set 1's (s7t/technology/datasets.py)
+        if value is None and (".DataSet_" in acc.tag or ".Encoder_" in acc.tag):
+            # a data set / encoder without its own value of this parameter uses the first one's
+            # (s7t/technology/datasets.py, stored_params.py)
             first = _tag(p, 1)
             value = store.effective.get(first) if p.needs_restart else store.values.get(first)
         if value is None:
@@ -258,6 +292,10 @@ def write(axis: "AxisT", number: int, index: int, value: Any) -> int:
         return code
     if p.number == 4001:
         return _activation_mode(axis, int(value))
+    if p.number == _CONTROL_WORDS:
+        return W.write_control_words(axis, value)
+    if p.number == _ADJUSTMENT:
+        return W.write_adjustment(axis, index, value)
     if acc.tag is None:
         return READ_ONLY
     store, tag = axis.parameters, acc.tag
@@ -350,5 +388,6 @@ def power_on(axis: "AxisT") -> None:
     axis._apply_bank_config()
 
 
-__all__ = ["Access", "resolve", "read", "write", "power_on", "reinitialize_keeping_pending", "output_of", "NOT_AVAILABLE",
+__all__ = ["Access", "resolve", "read", "write", "power_on", "reinitialize_keeping_pending", "output_of", "input_of",
+           "NOT_AVAILABLE",
            "OUT_REAL", "OUT_DINT", "OUT_DWORD1", "OUT_DWORD2", "OUT_BOOL"]

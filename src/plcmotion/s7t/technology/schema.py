@@ -22,6 +22,7 @@ from .datasets import DATASET_PARAMS, dataset_rule_issues
 from .encoders import ENCODER_PARAMS
 from .homing_params import HOMING_PARAMS, homing_rule_issues
 from .schema_io import IO_PARAMS
+from .stored_params import generated
 from .builder import (DYN, FE, GEAR, PV, TELEGRAMS_NO_ENCODER, TELEGRAMS_ONE_ENCODER, TELEGRAMS_TWO_ENCODERS,
                       axis_config, max_drive_velocity)
 
@@ -147,8 +148,11 @@ def rule_issues(cfg: Mapping[str, Any]) -> list[Issue]:
     return issues + homing_rule_issues(cfg) + dataset_rule_issues(cfg)
 
 
-AXIS = AxisSchema("S7-Technology axis",
-                  _PARAMS + H.PARAMS + HOMING_PARAMS + DATASET_PARAMS + ENCODER_PARAMS + IO_PARAMS + PLANT_PARAMS,
+_MODELLED = _PARAMS + H.PARAMS + HOMING_PARAMS + DATASET_PARAMS + ENCODER_PARAMS + IO_PARAMS + PLANT_PARAMS
+#: the §9.4 parameters the model stores without an effect (technology.stored_params), and their numbers
+_STORED, STORED_NUMBERS = generated(p.path for p in _MODELLED)
+
+AXIS = AxisSchema("S7-Technology axis", _MODELLED + _STORED,
                   rules=rule_issues, canonical=canonical, build=axis_config, real_type="Real")
 
-__all__ = ["AXIS", "FAMILY_TAGS", "DIRECTIONS", "canonical", "rule_issues"]
+__all__ = ["AXIS", "STORED_NUMBERS", "FAMILY_TAGS", "DIRECTIONS", "canonical", "rule_issues"]

@@ -107,6 +107,7 @@ MOVING = [
     ("rel acceleration 0", 2, {**PROFILE, "I403": 10.0, "I405": 0.0}, Cause.ZERO_DYNAMICS, True),
     ("add jerk 0", 3, {**PROFILE, "I403": 10.0, "I407": 0.0}, Cause.ZERO_DYNAMICS, True),
     ("vel acceleration 0", 4, {**PROFILE, "I404": 80.0, "I405": 0.0}, Cause.ZERO_DYNAMICS, False),
+    ("vel lower velocity, deceleration 0", 4, {**PROFILE, "I404": 30.0, "I406": 0.0}, Cause.ZERO_DYNAMICS, False),
     ("stop deceleration 0", 5, {"I406": 0.0, "I407": 1000.0}, Cause.ZERO_DYNAMICS, False),
     ("home not in standstill (I89 = 4)", 6, {}, Cause.NOT_STANDSTILL, False),
     ("move speed jerk 0", 8, {"I426": 80.0, "I407": 0.0}, Cause.ZERO_DYNAMICS, False),
@@ -126,6 +127,7 @@ def test_pilz_denial_while_moving(case, command, registers, cause, stops):
     start(ax, command, **registers)
     ctl.run(0.1)
     assert ax.status.I91 and ax.status.I90 == int(cause) and ax.status.I89 == 7
+    assert not (ax.status.I92 or ax.status.I85 or ax.status.I183)
     assert ax.status.E07 == (0.0 if stops else 50.0)
 
 

@@ -230,6 +230,7 @@ class MotionCore:
             return
         if cause is not None:
             cmd.denied = cause
+            s.I183 = cmd.speed_reached = False  # Fig. 14 keeps I183 only for a command that runs
             if number in C.POSITIONING and cause is not Cause.STOP_ACTIVE and self._moving() and self.ready():
                 self.quick_stop(t)              # §1.2.4, §1.3.4, §1.4.4: only the positionings stop the axis
             elif previous is not None:

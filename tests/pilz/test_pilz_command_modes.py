@@ -171,3 +171,17 @@ def test_pilz_command_modes_torque_control(mode):
     assert [r[2] for r in after[:3]] == [False, False, True]
     assert all(r[1] == 3 for r in after[2:])
     assert all(abs(r[3] - 100.0) < 0.5 and r[4] == 0.0 for r in after)     # torque 0 at rest: it stays
+
+
+def test_pilz_command_modes_torque_control_waiting_cancelled():
+    """Pilz V6.5 Tab. 31 (I409 = 1) with §1.2.7 (I91 "denied or cancelled"): the enable going off while an
+    MC_TorqueControl waits behind a positioning cancels it (I90 = 22, I89 = 0); it never takes the axis over."""
+    ctl, ax = make_axis({"I87": 0.0})
+    start(ax, 1, SLOW, I403=100.0)
+    ctl.run(0.1)
+    start(ax, 9, I428=1.0, I409=1)
+    ctl.run(0.05)
+    assert ax.status.I83 == 2 and not ax.status.I92
+    ax.enable(False)
+    ctl.run(0.3)
+    assert ax.status.I91 and ax.status.I90 == 22 and ax.status.I89 == 0 and ax.status.E02 == 0.0

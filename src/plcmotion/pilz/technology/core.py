@@ -143,11 +143,7 @@ class MotionCore:
         cmd = self.command
         if cmd is not None:
             if cmd.waiting and not self._block_running():
-                cmd.waiting = False
-                cmd.carrier = None
-                cmd.t0 = t                      # its "second cycle after the start" counts from here
-                cmd.state = R.CONTINUOUS
-                self.cyclic.begin(cmd, t)
+                self._end_wait(cmd, t)
             driver = cmd.carrier if cmd.carrier is not None else cmd
             override = live["I230"]
             if (override if override > 0.0 else 0.0) != self._override:
@@ -155,6 +151,23 @@ class MotionCore:
             if driver.number in C.CYCLIC and driver.denied is None and not driver.waiting:
                 self.cyclic.cycle(driver, t)
         self._update(t)
+
+    def _end_wait(self, cmd: C.Command, t: float) -> None:
+        """The block an MC_TorqueControl with I409 = 1 waited for has ended: it takes over - unless that block
+        ended without success (as the kernel's buffered jobs, the follower goes with it) or the enable went."""
+        job = cmd.carrier.job if cmd.carrier is not None else None
+        cmd.waiting = False
+        cmd.carrier = None
+        if cmd.cancelled is not None:
+            return
+        if not self.ready() or (job is not None and job.state in (JobState.ERROR, JobState.ABORTED)):
+            fault = job.fault if job is not None and job.state == JobState.ERROR else (
+                self.axis.alarms[0] if self.axis.alarms else None)
+            cmd.cancelled = Cause.ENABLE_OFF if self.axis.state != "enabled" else cause_of(fault)
+            return
+        cmd.t0 = t                              # its "second cycle after the start" counts from here
+        cmd.state = R.CONTINUOUS
+        self.cyclic.begin(cmd, t)
 
     def _block_running(self) -> bool:
         """A motion block of the job queue still runs or waits: what a command with I409 = 1 waits for.  A

@@ -142,3 +142,46 @@ def test_pilz_command_modes_end_velocity_passes_target():
             slowest = min(slowest, ax.status.E07)
     assert slowest == pytest.approx(50.0, rel=0.02)
     assert ax.status.I96 == pytest.approx(200.0)
+
+
+@pytest.mark.parametrize("mode", [0, 1])
+def test_pilz_command_modes_torque_control(mode):
+    """Pilz V6.5 Tab. 31 lists Command Mode I409 for MC_TorqueControl (Drive Based / PROFIdrive J21): with 0 the
+    set torque takes over at once (with torque 0 the load coasts past 100); with 1 it waits until the running
+    MC_MoveAbsolute has ended at its target - I83 = 2 and I92 = 0 meanwhile - then switches to the set torque
+    at once (§1.10 information) with I92 from the second cycle A150 after that (Tab. 32)."""
+    ctl, ax = make_axis({"I87": 0.0, "E65": 5.0, "E66": 5.0})
+    start(ax, 1, SLOW, I403=100.0)
+    ctl.run(0.1)
+    start(ax, 9, I428=0.0, I409=mode)
+    rows = []
+    for _ in range(2000):
+        ctl.step()
+        rows.append((ctl.time, ax.status.I83, ax.status.I92, ax.status.I96, ax.status.E07))
+    peak = max(r[3] for r in rows)
+    if mode == 0:
+        # torque 0 on a load without friction: it coasts on past the target instead of braking at 100
+        assert peak > 101.0 and rows[2][2] and all(r[1] != 2 for r in rows)
+        return
+    assert peak == pytest.approx(100.0, abs=0.5)     # ended at its target (the actual value within I22)
+    waiting = [r for r in rows if r[1] == 2]
+    assert waiting and all(not r[2] for r in waiting)
+    end = waiting[-1][0]
+    after = [r for r in rows if r[0] > end]
+    assert [r[2] for r in after[:3]] == [False, False, True]
+    assert all(r[1] == 3 for r in after[2:])
+    assert all(abs(r[3] - 100.0) < 0.5 and r[4] == 0.0 for r in after)     # torque 0 at rest: it stays
+
+
+def test_pilz_command_modes_torque_control_waiting_cancelled():
+    """Pilz V6.5 Tab. 31 (I409 = 1) with §1.2.7 (I91 "denied or cancelled"): the enable going off while an
+    MC_TorqueControl waits behind a positioning cancels it (I90 = 22, I89 = 0); it never takes the axis over."""
+    ctl, ax = make_axis({"I87": 0.0})
+    start(ax, 1, SLOW, I403=100.0)
+    ctl.run(0.1)
+    start(ax, 9, I428=1.0, I409=1)
+    ctl.run(0.05)
+    assert ax.status.I83 == 2 and not ax.status.I92
+    ax.enable(False)
+    ctl.run(0.3)
+    assert ax.status.I91 and ax.status.I90 == 22 and ax.status.I89 == 0 and ax.status.E02 == 0.0

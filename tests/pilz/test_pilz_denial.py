@@ -101,35 +101,34 @@ def test_pilz_denial_stop_halt_at_standstill_is_done(command, state):
     assert ax.status.I89 == 2
 
 
-def test_pilz_denial_stop_zero_decel_while_moving():
-    """Pilz V6.5 §1.6.2: deceleration 0 denies MC_Stop when the axis is not at standstill; the motion is
-    stopped by a quick stop (§1.2.4)."""
+# (case, command, registers, I90, stops): denied while the axis moves at 50 under MC_MoveVelocity
+MOVING = [
+    ("abs velocity 0", 1, {**PROFILE, "I403": 10.0, "I404": 0.0}, Cause.ZERO_DYNAMICS, True),
+    ("rel acceleration 0", 2, {**PROFILE, "I403": 10.0, "I405": 0.0}, Cause.ZERO_DYNAMICS, True),
+    ("add jerk 0", 3, {**PROFILE, "I403": 10.0, "I407": 0.0}, Cause.ZERO_DYNAMICS, True),
+    ("vel acceleration 0", 4, {**PROFILE, "I404": 80.0, "I405": 0.0}, Cause.ZERO_DYNAMICS, False),
+    ("vel lower velocity, deceleration 0", 4, {**PROFILE, "I404": 30.0, "I406": 0.0}, Cause.ZERO_DYNAMICS, False),
+    ("stop deceleration 0", 5, {"I406": 0.0, "I407": 1000.0}, Cause.ZERO_DYNAMICS, False),
+    ("home not in standstill (I89 = 4)", 6, {}, Cause.NOT_STANDSTILL, False),
+    ("move speed jerk 0", 8, {"I426": 80.0, "I407": 0.0}, Cause.ZERO_DYNAMICS, False),
+    ("halt deceleration 0", 11, {"I406": 0.0, "I407": 1000.0}, Cause.ZERO_DYNAMICS, False),
+]
+
+
+@pytest.mark.parametrize("case,command,registers,cause,stops", MOVING, ids=[c[0] for c in MOVING])
+def test_pilz_denial_while_moving(case, command, registers, cause, stops):
+    """Pilz V6.5 §1.2.4, §1.3.4, §1.4.4: a denied MC_MoveAbsolute / Relative / Additive stops the motion by a
+    quick stop; §1.5.2, §1.6.2, §1.7.2, §1.9.2, §1.12.2 give the other commands' denials no reaction, so the
+    running MC_MoveVelocity goes on at its set velocity (50).  I91 = 1 with the cause, I89 = 7."""
     ctl, ax = make_axis()
     start(ax, 4, **{**PROFILE, "I404": 50.0})
-    ctl.run(0.1)
-    release(ax)
-    start(ax, 5, I406=0.0, I407=1000.0)
-    ctl.step()
-    assert ax.status.I91 and ax.status.I90 == Cause.ZERO_DYNAMICS
-    ctl.run(0.1)
-    assert abs(ax.status.E07) == 0.0
-
-
-def test_pilz_denial_while_moving_quick_stop():
-    """Pilz V6.5 §1.2.4: a positioning denied while the axis moves stops the motion with a quick stop (I11,
-    without jerk limit: from the edge cycle on the set velocity falls by I11 x A150 per cycle)."""
-    ctl, ax = make_axis({"I11": 5000.0})
-    start(ax, 4, **{**PROFILE, "I404": 100.0})
     ctl.run(0.2)
-    release(ax)
-    v0 = ax.status.E07
-    start(ax, 1, **{**PROFILE, "I403": 10.0, "I404": 0.0})
-    ctl.step()
-    v1 = ax.status.E07
-    assert ax.status.I90 == Cause.ZERO_DYNAMICS
-    assert v0 - v1 == pytest.approx(5000.0 * 0.001, rel=1e-6)
-    ctl.run(0.05)
-    assert ax.status.E07 == 0.0
+    assert ax.status.E07 == 50.0
+    start(ax, command, **registers)
+    ctl.run(0.1)
+    assert ax.status.I91 and ax.status.I90 == int(cause) and ax.status.I89 == 7
+    assert not (ax.status.I92 or ax.status.I85 or ax.status.I183)
+    assert ax.status.E07 == (0.0 if stops else 50.0)
 
 
 def test_pilz_denial_during_stop():
@@ -222,3 +221,47 @@ def test_pilz_denial_zero_maximum_without_motion(params, command, registers):
     start(ax2, 6)
     ctl2.run(0.003)
     assert ax2.status.I92
+
+
+def _during_stop(ctl, ax):
+    start(ax, 4, **{**PROFILE, "I404": 100.0})
+    ctl.run(0.2)
+    start(ax, 5, I406=500.0, I407=100000.0)
+    ctl.run(0.02)
+
+
+def _disabled(ctl, ax):
+    ax.enable(False)
+    ctl.run(0.1)
+
+
+def _one_waiting(ctl, ax):
+    start(ax, 1, **{**PROFILE, "I403": 100.0})
+    ctl.run(0.05)
+    start(ax, 1, **{**PROFILE, "I403": 150.0, "I409": 1})
+    ctl.run(0.01)
+
+
+# (case, set-up, command, registers, I90): the causes of the drive's state (decisions.md, denials.md)
+GENERAL_CASES = [
+    ("MC_MoveVelocity while MC_Stop is active", _during_stop, 4, {**PROFILE, "I404": 100.0}, Cause.STOP_ACTIVE),
+    ("MC_Halt while MC_Stop is active", _during_stop, 11, PROFILE, Cause.STOP_ACTIVE),
+    ("MC_MoveAbsolute with the drive disabled", _disabled, 1, {**PROFILE, "I403": 10.0}, Cause.NOT_READY),
+    ("MC_CyclicSpeed with the drive disabled", _disabled, 7, {"I426": 10.0}, Cause.NOT_READY),
+    ("second buffered MC_MoveAbsolute", _one_waiting, 1, {**PROFILE, "I403": 200.0, "I409": 1},
+     Cause.BUFFER_FULL),
+]
+
+
+@pytest.mark.parametrize("case,setup,command,registers,cause", GENERAL_CASES, ids=[c[0] for c in GENERAL_CASES])
+def test_pilz_denial_general_cause(case, setup, command, registers, cause):
+    """Pilz V6.5 §1.6.5 / Fig. 15 (I90 = 10: commands while MC_Stop holds the axis), §1 I89 (I90 = 11: drive
+    not ready), Tab. 15 I83 "running and buffered subsequent motion block" (I90 = 12: one block waits already):
+    I91 = 1 with the cause from the cycle after the edge, 0 in the edge cycle."""
+    ctl, ax = make_axis()
+    setup(ctl, ax)
+    t0 = start(ax, command, **registers)
+    ctl.step()
+    edge = [r for r in ax.rows if abs(r.t - t0) < 1e-9][0]
+    assert (edge.I91, edge.I90, edge.I92) == (False, 0, False)
+    assert ax.status.I91 and ax.status.I90 == int(cause)

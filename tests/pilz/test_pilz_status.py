@@ -66,21 +66,32 @@ def test_pilz_status_speed_reached_positioning():
 
 
 def test_pilz_status_move_velocity():
-    """Pilz V6.5 §1.5.7 Tab. 15, Fig. 14: I183, I85 and I92 rise together when the set velocity is reached;
-    a new command clears them (handshake) and they come again at the new velocity; I89 = 4."""
-    ctl, ax = make_axis({"C40": 1.0})
+    """Pilz V6.5 §1.5.7 Tab. 15, Fig. 14 (300, then 200, then 400): I183, I85 and I92 rise together when the
+    set velocity is reached; the second command (lower velocity) keeps I183 = 1 while I85 / I92 restart from 0
+    (handshake) and come at 200; the third (higher) clears all three, which come together at 400; I89 = 4."""
+    ctl, ax = make_axis({"C40": 5.0, "I10": 500.0})      # a window wider than the drive model's lag
     t0 = start(ax, 4, PROFILE, I404=300.0)
     ctl.run(0.5)
     rows = rows_from(ax, t0)
     first = _first(rows, "I92")
     assert first.I183 and first.I85 and abs(first.E07 - 300.0) < 1e-9
+    assert all(r.I85 for r in rows if r.I183) and all(r.I92 == (r.I85 and r.I183) for r in rows[1:])
     assert all(r.I89 == 4 for r in rows)
     t1 = start(ax, 4, PROFILE, I404=200.0)
     ctl.run(0.5)
     rows = rows_from(ax, t1)
-    assert not rows[0].I92 and not rows[0].I85 and not rows[0].I183
+    assert not rows[0].I92 and not rows[0].I85
+    assert all(r.I183 for r in rows)                  # "The Speed reached state remains active"
     second = _first(rows, "I92")
-    assert abs(second.E07 - 200.0) < 1e-9 and second.I183 and second.I85
+    assert abs(second.E07 - 200.0) < 1e-9 and second.I85
+    assert all(not r.I92 for r in rows if r.E07 > 200.0 + 1e-9)
+    t2 = start(ax, 4, PROFILE, I404=400.0)
+    ctl.run(0.5)
+    rows = rows_from(ax, t2)
+    assert not rows[0].I92 and not rows[0].I85 and not rows[0].I183
+    third = _first(rows, "I92")
+    assert abs(third.E07 - 400.0) < 1e-9 and third.I183
+    assert all(r.I85 for r in rows if r.I183) and all(r.I92 == (r.I85 and r.I183) for r in rows[1:])
 
 
 def test_pilz_status_move_velocity_zero():

@@ -96,3 +96,19 @@ def test_pilz_wrappers_velocity_stop_halt_home():
     home = MC_Home(Axis=ax)
     _call(ctl, [(halt, {"Execute": False}), (home, {"Execute": True})], 5)
     assert home.Done
+
+
+def test_pilz_wrappers_in_velocity_follows_done():
+    """Pilz V6.5 Tab. 15: I92 of MC_MoveVelocity = I85 and I183 (E07 = I404); InVelocity mirrors it while the
+    command runs - the override I230 = 50 takes it away, 100 brings it back; Busy stays TRUE."""
+    ctl, ax = make_axis({"C40": 5.0})
+    vel = MC_MoveVelocity(Axis=ax, Velocity=100.0, Acceleration=2000.0, Deceleration=2000.0, Jerk=100000.0)
+    ctl.program(lambda: vel(Execute=True))
+    ctl.run(0.3)
+    assert vel.InVelocity and vel.Busy
+    ax.registers.I230 = 50.0
+    ctl.run(0.3)
+    assert not vel.InVelocity and vel.Busy and not vel.Error
+    ax.registers.I230 = 100.0
+    ctl.run(0.3)
+    assert vel.InVelocity and vel.Busy

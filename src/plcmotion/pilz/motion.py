@@ -138,14 +138,13 @@ class MotionCommand(Instruction):
                 axis.registers.write(reg, getattr(self, name))
         except RegisterError:
             pass                                    # the last valid set value stays
-        if cmd.done:
-            if self.CONTINUOUS:
-                self._out(**{self.DONE: True})      # InVelocity / Done go on while the command runs
-            else:
-                self._set(_final=("Done", 0), _state="ended")
-                return
+        if self.CONTINUOUS:
+            self._out(**{self.DONE: cmd.done})      # InVelocity follows I92 while the command runs (Tab. 15)
+        elif cmd.done:
+            self._set(_final=("Done", 0), _state="ended")
+            return
         job = cmd.job
-        self._out(Active=(job is None or job.active) and cmd.denied is None)
+        self._out(Active=(job is None or job.active) and cmd.denied is None and not cmd.waiting)
 
     def _holding(self) -> bool:
         """An MC_Stop block holds the command register while its Execute is TRUE (§1.6.4)."""
@@ -221,7 +220,8 @@ MC_MoveSpeed = _fb("MC_MoveSpeed", C.MOVE_SPEED,
                    {"Velocity": "I426", "Acceleration": "I216", "Deceleration": "I217"}, done="InVelocity",
                    doc="Command 8 (§1.9): velocity control at Velocity (taken cyclically unless I119 = 1).")
 MC_TorqueControl = _fb("MC_TorqueControl", C.TORQUE_CONTROL,
-                       {"Torque": 0.0, "TorqueRampUp": 0.0, "TorqueRampDown": 0.0}, {},
+                       {"Torque": 0.0, "TorqueRampUp": 0.0, "TorqueRampDown": 0.0, "BufferMode": 0},
+                       {"BufferMode": "I409"},
                        {"Torque": "I428", "TorqueRampUp": "I430", "TorqueRampDown": "I431"},
                        done="InTorque", doc="Command 9 (§1.10): torque/force control; InTorque = I92.")
 MC_CyclicPosition = _fb("MC_CyclicPosition", C.CYCLIC_POSITION, {"Position": 0.0}, {}, {"Position": "I421"},

@@ -19,7 +19,8 @@ STOPPING = frozenset({STOP, HALT})
 CYCLIC = frozenset({CYCLIC_SPEED, TORQUE_CONTROL, CYCLIC_POSITION})
 #: commands whose velocity the override I230 scales (§1.2.5, §1.5.5, §1.7.5, §1.9.5)
 OVERRIDDEN = frozenset({MOVE_ABSOLUTE, MOVE_RELATIVE, MOVE_ADDITIVE, MOVE_VELOCITY, HOME, MOVE_SPEED})
-#: commands with Command Mode I409 (Tab. 4, 7, 10, 14, 28); TorqueControl takes over at once (decisions.md)
+#: commands with Command Mode I409 on the kernel's job queue (Tab. 4, 7, 10, 14, 28); MC_TorqueControl has it
+#: too (Tab. 31) and waits in the motion core (core.py), as it runs on no kernel job
 BUFFERABLE = frozenset({MOVE_ABSOLUTE, MOVE_RELATIVE, MOVE_ADDITIVE, MOVE_VELOCITY, MOVE_SPEED})
 
 
@@ -38,6 +39,8 @@ class Command:
     speed_reached: bool = False     # the profile has reached the set velocity (I183)
     state: int = 2                  # the I89 this command puts the core in while it runs
     cyclic: dict[str, Any] = field(default_factory=dict)    # cyclic commands' interpolator state
+    carrier: "Command | None" = None    # denied without a stop: the command whose motion goes on
+    waiting: bool = False               # MC_TorqueControl with I409 = 1 behind a running block
 
     def value(self, name: str) -> Any:
         return self.values[name]

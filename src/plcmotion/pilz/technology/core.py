@@ -142,12 +142,53 @@ class MotionCore:
             self.brake.cycle(t)
         cmd = self.command
         if cmd is not None:
+            if cmd.waiting and not self._block_running():
+                self._end_wait(cmd, t)
+            driver = cmd.carrier if cmd.carrier is not None else cmd
             override = live["I230"]
             if (override if override > 0.0 else 0.0) != self._override:
-                self._follow_override(cmd)
-            if cmd.number in C.CYCLIC and cmd.denied is None:
-                self.cyclic.cycle(cmd, t)
+                self._follow_override(driver)
+            if driver.number in C.CYCLIC and driver.denied is None and not driver.waiting:
+                self.cyclic.cycle(driver, t)
         self._update(t)
+
+    def _end_wait(self, cmd: C.Command, t: float) -> None:
+        """The block an MC_TorqueControl with I409 = 1 waited for has ended: it takes over - unless that block
+        ended without success (as the kernel's buffered jobs, the follower goes with it) or the enable went."""
+        job = cmd.carrier.job if cmd.carrier is not None else None
+        cmd.waiting = False
+        cmd.carrier = None
+        if cmd.cancelled is not None:
+            return
+        if not self.ready() or (job is not None and job.state in (JobState.ERROR, JobState.ABORTED)):
+            fault = job.fault if job is not None and job.state == JobState.ERROR else (
+                self.axis.alarms[0] if self.axis.alarms else None)
+            cmd.cancelled = Cause.ENABLE_OFF if self.axis.state != "enabled" else cause_of(fault)
+            return
+        cmd.t0 = t                              # its "second cycle after the start" counts from here
+        cmd.state = R.CONTINUOUS
+        self.cyclic.begin(cmd, t)
+
+    def _block_running(self) -> bool:
+        """A motion block of the job queue still runs or waits: what a command with I409 = 1 waits for.  A
+        velocity job counts as ended once it is at its velocity, as for the kernel's buffered jobs."""
+        ax = self.axis
+        if ax.queue.pending:
+            return True
+        job = ax.job
+        return job is not None and job.busy and not (job.kind == JobKind.VELOCITY and job.in_velocity)
+
+    def _keeps_speed_reached(self, number: int, velocity: float) -> bool:
+        """Fig. 14: I183 stays 1 when an MC_MoveVelocity follows one at speed with a lower set velocity (same
+        direction) - the axis is at or above the new velocity while it slows down to it (decisions.md, E9)."""
+        cmd = self.command
+        if number != C.MOVE_VELOCITY or cmd is None or cmd.number != C.MOVE_VELOCITY or not self.status.I183:
+            return False
+        if cmd.denied is not None or cmd.cancelled is not None:
+            return False
+        act_v = self.axis.ctl.bank.act_v.item(self.axis.index)
+        target = min(abs(velocity), self.axis.eff["I10"])
+        return act_v * velocity > 0.0 and abs(act_v) >= target - self.axis.eff["C40"]
 
     def _watch_enable(self, t: float) -> None:
         enabled = self.axis.state == "enabled"
@@ -179,12 +220,16 @@ class MotionCore:
             return                              # no status, no motion ID (§1.1)
         self.starts += 1
         s = self.status
+        keep_i183 = self._keeps_speed_reached(number, regs.I404)
         s.clear_command()
+        s.I183 = keep_i183
         s.I82 = regs.I400
         s.I80 = self.actual_position()
         cmd = C.Command(number, regs.values(), t)
+        cmd.speed_reached = keep_i183
         previous = self.command
         self.command = cmd
+        cyclic_running = self.cyclic.running
         if previous is not None and previous.number in C.CYCLIC:
             self.cyclic.end()
         cause = starts.denial(self, cmd)
@@ -198,8 +243,18 @@ class MotionCore:
             return
         if cause is not None:
             cmd.denied = cause
-            if cause is not Cause.STOP_ACTIVE and self._moving() and self.ready():
-                self.quick_stop(t)
+            s.I183 = cmd.speed_reached = False  # Fig. 14 keeps I183 only for a command that runs
+            if number in C.POSITIONING and cause is not Cause.STOP_ACTIVE and self._moving() and self.ready():
+                self.quick_stop(t)              # §1.2.4, §1.3.4, §1.4.4: only the positionings stop the axis
+            elif previous is not None:
+                # the other commands' denials leave the running motion as it is (decisions.md, "Denial")
+                cmd.carrier = previous.carrier if previous.denied is not None else previous
+                self.cyclic.running = cyclic_running
+            return
+        if number == C.TORQUE_CONTROL and cmd.value("I409") == 1 and self._block_running():
+            cmd.waiting = True                  # Tab. 31 I409 = 1: it starts at the end of the running block
+            cmd.carrier = previous              # whose motion (and override) goes on until then
+            cmd.state = s.I89 if s.I89 not in (R.ERROR_STOP, R.DISABLED) else R.CONTINUOUS
             return
         self.brake.on_start(cmd)
         starts.limit_flags(self, cmd)
@@ -217,7 +272,8 @@ class MotionCore:
             self.set_position = job.target
 
     def quick_stop(self, t: float) -> None:
-        """Stop the motion at once (a denial while moving, §1.2.4): I11 without jerk limit."""
+        """Stop the motion at once (a denied positioning while moving, §1.2.4; a cancellation): I11 without
+        jerk limit."""
         ax = self.axis
         ax._abort_all(t)
         ax.queue.abort_all()
@@ -316,7 +372,7 @@ class MotionCore:
             self._cyclic_status(cmd, t)
         if s.I92:
             self.brake.on_done(cmd, t)
-        if job is not None and job.pending:
+        if job is not None and job.pending or cmd.waiting:
             s.I83 = R.I83_ACTIVE_WITH_FOLLOWER     # a block runs, this one waits behind it
         else:
             s.I83 = R.I83_DONE if s.I92 else R.I83_ACTIVE
@@ -348,7 +404,7 @@ class MotionCore:
         target = job.target
         self.set_position = target
         end_v = job.extra.get("end_velocity", 0.0)
-        finished = ax.profile.t_end <= t + _EPS and (job is not ax.job or not ax._interpolating or end_v)
+        finished = ax.profile.t_end <= t + _EPS and (job is not ax.job or not ax._interpolating or bool(end_v))
         # with an end velocity the profile ends where it passes the target (decisions.md, E15)
         s.I85 = finished and (bool(end_v) or abs(p - target) <= 1e-6 * max(1.0, abs(target)))
         inside = abs(act_p - target) <= e["I22"] + _EPS         # the window I22 around the target
@@ -386,11 +442,21 @@ class MotionCore:
         elif cmd.number == C.MOVE_VELOCITY and cmd.value("I424") == 1:
             self.cyclic.follow_move_velocity(cmd, job)
         e = ax.eff
-        target = math.copysign(min(abs(job.velocity) * self.override / 100.0, e["I10"]), job.velocity)
+        # Tab. 15 / Tab. 29: E07 = I404 (I426) - the set velocity itself, not as the override I230 scales it
+        # (decisions.md "Override"); I10 caps it (§1.5.5)
+        target = math.copysign(min(abs(job.velocity), e["I10"]), job.velocity)
         s.I85 = ax.profile.t_end <= t + _EPS and abs(v - target) <= 1e-9 * max(1.0, abs(target))
-        s.I183 = s.I85 and abs(act_v - target) <= e["C40"]
-        if s.I85 and s.I183:
-            cmd.done = True
+        near = abs(act_v - target) <= e["C40"]
+        if cmd.speed_reached and not s.I85:
+            # Fig. 14: kept from the previous command while the axis slows down to the lower velocity
+            cmd.speed_reached = abs(act_v) >= abs(target) - e["C40"] and act_v * target > 0.0
+            s.I183 = cmd.speed_reached
+        else:
+            cmd.speed_reached = False
+            s.I183 = s.I85 and near
+        # Done follows I85 and I183 (the command never ends by itself): an override or load that takes the
+        # axis off the set velocity takes Done away until it is back (Tab. 15)
+        cmd.done = s.I85 and s.I183
         s.I92 = cmd.done
 
     def _stopping(self, cmd: C.Command, v: float, act_v: float) -> None:
@@ -426,6 +492,9 @@ class MotionCore:
     def _cyclic_status(self, cmd: C.Command, t: float) -> None:
         s = self.status
         s.I89 = cmd.state
+        if cmd.waiting:
+            s.I92 = False
+            return
         # "state after the second cycle time A150 after command start" (§1.8.7, §1.10.7, §1.11.7)
         if t >= cmd.t0 + 2 * self.axis.ctl.servo_cycle - _EPS:
             cmd.done = True

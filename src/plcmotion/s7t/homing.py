@@ -20,7 +20,7 @@ from ..kernel.jobs import Job, JobKind, JobState
 from ..kernel.policy import ABORT
 from . import errors as E
 from .base import POSITION_AXES, ExecuteInstruction, InstructionError, integer, real
-from .technology import coordinates, override
+from .technology import coordinates, override, parameter_access
 from .technology.axes import AxisT
 from .technology.homing_params import ENC, MODE_NO_REFERENCE
 
@@ -31,6 +31,8 @@ ACTIVE, ACTIVE_POSITION, PASSIVE, DIRECT, CORRECT_ACTUAL, ABSOLUTE_ENCODER, CORR
 MODES_VIRTUAL = frozenset({3, 4, 6, 7, 8})
 MODES_INCREMENTAL = frozenset({0, 1, 2, 3, 4, 6, 7, 8})
 MODES_ABSOLUTE = frozenset({3, 4, 5, 6, 7, 8})
+#: EnumToActivationModeSetConfigData of parameter 4001 (§9.4)
+COLLECT_CHANGED_CONFIG_DATA = 82
 _CORRECTIONS = {CORRECT_ACTUAL: "actual", CORRECT_BASE: "base", CORRECT_SUPERIMPOSED: "superimposed"}
 
 
@@ -107,7 +109,9 @@ class MC_Home(ExecuteInstruction):  # noqa: N801 - instruction name of the manua
             supported = MODES_ABSOLUTE if axis.absolute_encoder() else MODES_INCREMENTAL
         if mode not in supported:
             raise InstructionError(E.INVALID_AXIS_TYPE if axis.virtual else E.NOT_ALLOWED_IN_STATE)
-        if axis.restarting:
+        if axis.restarting or axis.restart_requested or _collecting(axis):
+            # §6.2.2: a parameter change waits for a restart (MC_WriteParameter gave 0020), or parameter
+            # 4001 collects the changes (COLLECT_CHANGED_CONFIG_DATA): 8045
             raise InstructionError(E.NOT_ALLOWED_IN_STATE)
         enabled = axis.state == "enabled" and not axis.following_mode
         speed_mode = not axis.position_controlled
@@ -128,6 +132,12 @@ class MC_Home(ExecuteInstruction):  # noqa: N801 - instruction name of the manua
             controlled = enabled and not speed_mode
             if not controlled or not axis.ctl.bank.standstill[axis.index] or axis.sw_limits_effective():
                 raise InstructionError(E.NOT_ALLOWED_IN_STATE)
+
+
+def _collecting(axis: AxisT) -> bool:
+    """Parameter 4001 (activationmodechangedconfigdata) is COLLECT_CHANGED_CONFIG_DATA."""
+    code, _, value = parameter_access.read(axis, 4001, 1)
+    return code == 0 and value == COLLECT_CHANGED_CONFIG_DATA
 
 
 __all__ = ["MC_Home", "MODES_VIRTUAL", "MODES_INCREMENTAL", "MODES_ABSOLUTE"]

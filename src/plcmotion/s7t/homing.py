@@ -10,7 +10,8 @@ Which modes an axis takes (§6.2.2 note): a virtual axis 3, 4, 6, 7 (else 16#804
 0-4, 6, 7; an absolute encoder 3-7 (a mode of the other encoder type: 16#8045, plcmotion's choice, the manual
 names no code) - the encoder of the data set in force (``technology.encoders``).  Modes 0, 1, 2 need an axis enabled position-controlled (16#8040), 0 and 1 no MC_Stop
 (16#8045); 2, 3, 5 not in speed-controlled mode (16#8045); 3, 4, 6, 7 run on a disabled axis too, 5 only on
-an axis enabled position-controlled at standstill (16#8045, docs/s7t/decisions.md D78).  The active homing
+an axis enabled position-controlled at standstill (16#8045, docs/s7t/decisions.md D78).  No mode while a
+parameter change waits for a restart or parameter 4001 collects changes (16#8045).  The active homing
 sequences, distance monitoring (16#801D in the technology DB) and the corrections are the kernel's
 ``reference_approach.ApproachHoming``.
 """

@@ -31,7 +31,8 @@ class MC_Stop(ExecuteInstruction):  # noqa: N801 - instruction name of the manua
 
     Done only once the axis stands still and Execute is FALSE (one call); Busy until then.  Only another
     MC_Stop aborts it.  Deceleration / Jerk above 1E12: the maximum of the axis (TypeOfAxis.MaxAcceleration /
-    MaxJerk); Deceleration = 0: the default deceleration and warning 16#0028 at ErrorID.
+    MaxJerk); between the maximum and 1E12: the maximum and warning 16#0021; Deceleration = 0: the default
+    deceleration and warning 16#0028 at ErrorID.
     """
 
     #: a deactivated axis takes no command (§6.7.2); MC_Stop's ErrorID table (§6.2.3) has no 8045: 8044

@@ -12,8 +12,8 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from plcmotion.s7t import (MC_Halt, MC_MoveAbsolute, MC_MoveAdditive, MC_MoveRelative, MC_MoveSuperImposed,
-                           MC_MoveVelocity, MC_Stop)
+from plcmotion.s7t import (MC_ChangeDataset, MC_Halt, MC_Home, MC_MoveAbsolute, MC_MoveAdditive, MC_MoveRelative,
+                           MC_MoveSuperImposed, MC_MoveToEndPos, MC_MoveVelocity, MC_SetTorqueLimit, MC_Stop)
 
 from _s7t_rig import VIRTUAL, enabled
 
@@ -26,14 +26,27 @@ REALS = st.one_of(st.floats(allow_nan=True, allow_infinity=True), st.sampled_fro
     st.integers(-10**6, 10**6), st.just("7"), st.none())
 INTS = st.one_of(st.integers(-3, 40), st.sampled_from([2**31, -(2**31), 1.5, math.nan]), st.just(True))
 FBS = [MC_MoveAbsolute, MC_MoveRelative, MC_MoveAdditive, MC_MoveSuperImposed, MC_MoveVelocity, MC_Halt, MC_Stop]
-REAL_INPUTS = ("Position", "Distance", "Velocity", "VelocityDiff", "Acceleration", "Deceleration", "Jerk")
-INT_INPUTS = ("Mode", "Direction", "DoneFlag")
+REAL_INPUTS = ("Position", "Distance", "Velocity", "VelocityDiff", "Acceleration", "Deceleration", "Jerk",
+               "Torque", "MaxTorque")
+INT_INPUTS = ("Mode", "Direction", "DoneFlag", "Dataset")
+
+#: an electric real axis (telegram 105, torque reduction) with two data sets and a fixed end stop inside its
+#: software limit switches, for the instructions a virtual axis does not take
+DS = "TypeOfAxis.NumberOfDataSets"
+CLAMP = f"{DS}.DataSet_1.ClampingMonitoring"
+REAL_LIMITS = {"TypeOfAxis.Homing.referencingNecessary": 0, "Wizard.Telegram": 105,
+               "swlimit": {"state": 1, "minusposition": -LIMIT, "plusposition": LIMIT},
+               "TypeOfAxis.MaxVelocity.maximum": 400.0, "TypeOfAxis.MaxAcceleration.maximum": 2000.0,
+               f"{CLAMP}.recognitionMode": 106, f"{CLAMP}.followingErrorDeviation": 1.0,
+               f"{CLAMP}.positionTolerance": 0.1, "Plant.EndStopMaxPosition": LIMIT / 4,
+               f"{DS}.numberOfDataSets": 2, f"{DS}.DataSet_2.ControllerStruct.PV_Controller.kv": 40.0}
+REAL_FBS = FBS + [MC_MoveToEndPos, MC_SetTorqueLimit, MC_Home, MC_ChangeDataset]
 
 
 @st.composite
-def command(draw):
-    fb = draw(st.sampled_from(range(len(FBS))))
-    cls = FBS[fb]
+def command(draw, fbs=FBS):
+    fb = draw(st.sampled_from(range(len(fbs))))
+    cls = fbs[fb]
     inputs = {name: draw(REALS) for name in REAL_INPUTS if name in cls.INPUTS and draw(st.booleans())}
     inputs.update({name: draw(INTS) for name in INT_INPUTS if name in cls.INPUTS and draw(st.booleans())})
     if "Axis" in inputs:
@@ -52,13 +65,29 @@ def _exclusive(inst) -> bool:
 def test_s7t_bad_inputs_never_raise_nor_pass_the_limits(commands):
     """S7-Technology V4.1 §6.9.3, §4.5.7.3: any input values: the instructions answer with ErrorIDs, the CPU
     stays in RUN and the axis stays inside its software limit switches; outputs stay exclusive (§5.8)."""
-    ctl, axis, _ = enabled(LIMITS, run=0.01)
-    instances = [cls() for cls in FBS]
+    _run(LIMITS, FBS, commands)
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(command(REAL_FBS), min_size=1, max_size=6))
+def test_s7t_bad_inputs_on_a_real_axis_never_raise_nor_pass_the_limits(commands):
+    """S7-Technology V4.1 §6.9.3, §4.5.7.3, §5.8 on an electric real axis, with MC_MoveToEndPos (§6.2.11),
+    MC_SetTorqueLimit (§6.2.12), MC_Home (§6.2.2) and MC_ChangeDataset (§6.2.5) in the mix: no call raises,
+    the CPU stays in RUN, outputs stay exclusive and the axis stays inside its software limit switches
+    until an MC_Home command redefines its coordinates."""
+    _run(REAL_LIMITS, REAL_FBS, commands)
+
+
+def _run(params: dict, fbs: list, commands) -> None:
+    ctl, axis, _ = enabled(params, run=0.01)
+    instances = [cls() for cls in fbs]
     b, i = ctl.bank, axis.index
+    homed = False                        # an MC_Home sets the position anywhere: the limits are its coordinates
     for fb, inputs, wait, release in commands:
         inst = instances[fb]
         inst(Axis=axis, Execute=False)
         inst(Axis=axis, Execute=True, **inputs)
+        homed = homed or isinstance(inst, MC_Home)
         assert _exclusive(inst)
         steps = max(1, int(wait / ctl.app_cycle))
         for _ in range(steps):
@@ -67,8 +96,9 @@ def test_s7t_bad_inputs_never_raise_nor_pass_the_limits(commands):
                 other(Execute=other.Execute and not release)
                 assert _exclusive(other)
             assert ctl.mode == "RUN", ctl.stop_reason
-            assert -LIMIT - 1e-6 <= float(b.sp_p[i]) <= LIMIT + 1e-6
-            assert -LIMIT - 1e-6 <= float(b.act_p[i]) <= LIMIT + 1e-6
+            if not homed:
+                assert -LIMIT - 1e-6 <= float(b.sp_p[i]) <= LIMIT + 1e-6
+                assert -LIMIT - 1e-6 <= float(b.act_p[i]) <= LIMIT + 1e-6
 
 
 def test_s7t_superimposed_motion_stops_at_the_limit():

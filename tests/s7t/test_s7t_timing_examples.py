@@ -51,6 +51,34 @@ class Scenario:
         return min(self.log, key=lambda r: abs(r["t"] - self.t0 - t))
 
 
+def test_s7t_override_phase_a():
+    """S7-Technology V4.1 §6.2.6 "override motion" phase a: FB1 reaches 1000 (5 s to 50, 750 at 50, 5 s
+    braking: Done_1 at 25 s, standing still); Exe_2 is set in the OB1 cycle that shows Done_1, so FB2
+    (1500, Velocity 30, Acceleration/Deceleration 10) starts one OB1 cycle later after a brief standstill:
+    3 s to 30 (45), 410 at 30, 3 s braking = 19.667 s, Done_2 at 1500.  Nothing is aborted."""
+    s = Scenario()
+    s.in2 = dict(Position=1500.0, Velocity=30.0, Acceleration=10.0, Deceleration=10.0, Jerk=0.0)
+    s.run(0.0, exe1=True)
+    s.ctl.run_until(lambda: s.fb1.Done, 30.0)
+    done1 = s.log[-1]
+    assert done1["t"] - s.t0 == pytest.approx(25.0, abs=0.005)
+    assert done1["p"] == pytest.approx(1000.0, abs=1e-6) and done1["v"] == 0.0 and not done1["busy1"]
+    s.exe2 = True
+    s.ctl.step()
+    start = s.log[-1]                               # the next OB1 cycle: FB2 takes the axis at rest
+    assert start["busy2"] and start["done1"] and not start["abort1"]
+    assert start["t"] - done1["t"] == pytest.approx(CYCLE, abs=1e-9)
+    assert start["p"] == pytest.approx(1000.0, abs=1e-6)
+    t2 = start["t"] - s.t0
+    s.run(t2 + 21.0)
+    assert s.at(t2 + 1.5)["v"] == pytest.approx(15.0, abs=0.05)     # accelerating with 10
+    assert s.at(t2 + 10.0)["v"] == pytest.approx(30.0, abs=1e-6)
+    done2 = s.first("done2")
+    assert done2["t"] - s.t0 == pytest.approx(t2 + 19.667, abs=0.01)
+    assert done2["p"] == pytest.approx(1500.0, abs=1e-6) and not done2["busy2"]
+    assert not any(r["abort1"] or r["abort2"] or r["err"] for r in s.log)
+
+
 def test_s7t_override_phase_b():
     """S7-Technology V4.1 §6.2.6 "override motion" phase b: FB2 (1500, Velocity 30, Deceleration 10) while
     FB1 cruises at 50: Abort_1 in the same OB1 cycle, the axis brakes with 10 to 30 (2 s) and is Done_2 at

@@ -10,7 +10,8 @@ Which modes an axis takes (§6.2.2 note): a virtual axis 3, 4, 6, 7 (else 16#804
 0-4, 6, 7; an absolute encoder 3-7 (a mode of the other encoder type: 16#8045, plcmotion's choice, the manual
 names no code) - the encoder of the data set in force (``technology.encoders``).  Modes 0, 1, 2 need an axis enabled position-controlled (16#8040), 0 and 1 no MC_Stop
 (16#8045); 2, 3, 5 not in speed-controlled mode (16#8045); 3, 4, 6, 7 run on a disabled axis too, 5 only on
-an axis enabled position-controlled at standstill (16#8045, docs/s7t/decisions.md D78).  The active homing
+an axis enabled position-controlled at standstill (16#8045, docs/s7t/decisions.md D78).  No mode while a
+parameter change waits for a restart or parameter 4001 collects changes (16#8045).  The active homing
 sequences, distance monitoring (16#801D in the technology DB) and the corrections are the kernel's
 ``reference_approach.ApproachHoming``.
 """
@@ -20,7 +21,7 @@ from ..kernel.jobs import Job, JobKind, JobState
 from ..kernel.policy import ABORT
 from . import errors as E
 from .base import POSITION_AXES, ExecuteInstruction, InstructionError, integer, real
-from .technology import coordinates, override
+from .technology import coordinates, override, parameter_access
 from .technology.axes import AxisT
 from .technology.homing_params import ENC, MODE_NO_REFERENCE
 
@@ -31,6 +32,8 @@ ACTIVE, ACTIVE_POSITION, PASSIVE, DIRECT, CORRECT_ACTUAL, ABSOLUTE_ENCODER, CORR
 MODES_VIRTUAL = frozenset({3, 4, 6, 7, 8})
 MODES_INCREMENTAL = frozenset({0, 1, 2, 3, 4, 6, 7, 8})
 MODES_ABSOLUTE = frozenset({3, 4, 5, 6, 7, 8})
+#: EnumToActivationModeSetConfigData of parameter 4001 (§9.4)
+COLLECT_CHANGED_CONFIG_DATA = 82
 _CORRECTIONS = {CORRECT_ACTUAL: "actual", CORRECT_BASE: "base", CORRECT_SUPERIMPOSED: "superimposed"}
 
 
@@ -107,7 +110,9 @@ class MC_Home(ExecuteInstruction):  # noqa: N801 - instruction name of the manua
             supported = MODES_ABSOLUTE if axis.absolute_encoder() else MODES_INCREMENTAL
         if mode not in supported:
             raise InstructionError(E.INVALID_AXIS_TYPE if axis.virtual else E.NOT_ALLOWED_IN_STATE)
-        if axis.restarting:
+        if axis.restarting or axis.restart_requested or _collecting(axis):
+            # §6.2.2: a parameter change waits for a restart (MC_WriteParameter gave 0020), or parameter
+            # 4001 collects the changes (COLLECT_CHANGED_CONFIG_DATA): 8045
             raise InstructionError(E.NOT_ALLOWED_IN_STATE)
         enabled = axis.state == "enabled" and not axis.following_mode
         speed_mode = not axis.position_controlled
@@ -128,6 +133,12 @@ class MC_Home(ExecuteInstruction):  # noqa: N801 - instruction name of the manua
             controlled = enabled and not speed_mode
             if not controlled or not axis.ctl.bank.standstill[axis.index] or axis.sw_limits_effective():
                 raise InstructionError(E.NOT_ALLOWED_IN_STATE)
+
+
+def _collecting(axis: AxisT) -> bool:
+    """Parameter 4001 (activationmodechangedconfigdata) is COLLECT_CHANGED_CONFIG_DATA."""
+    code, _, value = parameter_access.read(axis, 4001, 1)
+    return code == 0 and value == COLLECT_CHANGED_CONFIG_DATA
 
 
 __all__ = ["MC_Home", "MODES_VIRTUAL", "MODES_INCREMENTAL", "MODES_ABSOLUTE"]

@@ -1,11 +1,15 @@
 """FB 404 MC_Stop and FB 405 MC_Halt (S7-Technology V4.1 §6.2.3, §6.2.4)."""
 from __future__ import annotations
 
+import math
+
 from ..kernel import axis_status as S
 from ..kernel.jobs import Job, JobKind, JobState
 from . import errors as E
 from .base import ALL_AXES, ExecuteInstruction, dynamic
+from .fb_errors import DYNAMICS_LIMITED
 from .technology.axes import AxisT
+from .technology.to_errors import W_DYNAMICS_LIMITED
 
 #: MC_Stop: warning "illegal parameter value ignored, default used" (§6.2.3)
 W_DEFAULT_USED = 0x0028
@@ -16,13 +20,19 @@ def _dyn(axis: AxisT) -> tuple[float, float]:
     return e["userdefaultdynamics.negativeaccel"], e["userdefaultdynamics.positiveaccelstartjerk"]
 
 
+def _beyond(value: float, maximum: float | None) -> bool:
+    """``value`` exceeds a configured maximum (None or 0: none configured; INF jerk: trapezoidal)."""
+    return bool(maximum) and math.isfinite(value) and value > maximum
+
+
 class MC_Stop(ExecuteInstruction):  # noqa: N801 - instruction name of the manual
     """FB 404: brake the axis to standstill and keep every motion command from it while Execute is TRUE
     (also across a disable and enable with MC_Power).
 
     Done only once the axis stands still and Execute is FALSE (one call); Busy until then.  Only another
     MC_Stop aborts it.  Deceleration / Jerk above 1E12: the maximum of the axis (TypeOfAxis.MaxAcceleration /
-    MaxJerk); Deceleration = 0: the default deceleration and warning 16#0028 at ErrorID.
+    MaxJerk); between the maximum and 1E12: the maximum and warning 16#0021; Deceleration = 0: the default
+    deceleration and warning 16#0028 at ErrorID.
     """
 
     #: a deactivated axis takes no command (§6.7.2); MC_Stop's ErrorID table (§6.2.3) has no 8045: 8044
@@ -47,6 +57,12 @@ class MC_Stop(ExecuteInstruction):  # noqa: N801 - instruction name of the manua
             return True
         dec = dynamic("Deceleration", self.Deceleration, dec_default, zero=zero, above=lim.max_deceleration)
         jerk = dynamic("Jerk", self.Jerk, jerk_default, jerk=True, above=lim.max_jerk)
+        if _beyond(dec, lim.max_deceleration) or _beyond(jerk, lim.max_jerk):
+            # §6.2.3 ErrorIDs: a value above the configured maximum is cut to it, with warning 0021 (at
+            # ErrorID and in the technology DB); a Deceleration = 0 warning 0028 stays the one shown
+            if self._warning == 0:
+                object.__setattr__(self, "_warning", DYNAMICS_LIMITED)
+            axis.errors.note(W_DYNAMICS_LIMITED)
         job = Job(JobKind.STOP, deceleration=dec, jerk=jerk, owner=self)
         axis.submit(job)
         object.__setattr__(self, "_stop", (axis, job))

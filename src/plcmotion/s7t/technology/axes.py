@@ -29,6 +29,7 @@ from . import datasets as D
 from .encoders import Encoders, dataset_encoder, retain_key
 from .monitoring import (FOLLOWING_WARNING_ENTRY, HwLimitRetraction, hw_limit_side, note_sw_limit_at_start,
                          tdb_errors)
+from .superimposed_dynamics import within_maxima
 from .to_errors import W_DYNAMICS_LIMITED, W_SW_LIMIT, ErrorRecord, tdb_error
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -85,6 +86,7 @@ class AxisT(LayeredAxis):
         self.dataset_change: Job | None = None
         #: §4.5.7.2: the hardware limit switch met last, until the axis has left it (technology.monitoring)
         self.hw_retraction: HwLimitRetraction | None = None
+        self._initialized = True                     # the TO (re)started: the next enable is its first
         super().__init__(ctl, name, cfg, db_number=db_number)
         self.encoders = Encoders(self, self._encoder_in_force())
         self.db = AxisDB(self)
@@ -217,6 +219,10 @@ class AxisT(LayeredAxis):
             if clamped != target:
                 job.position = clamped - here
                 self.errors.note(W_SW_LIMIT)
+        # §6.2.9: the sum of both layers' dynamics stays within the configured maxima (warning 0021)
+        lim, cut = within_maxima(self.profile, self.now, job.position, lim, self.config.limits)
+        if cut and not self.warnings:            # not noted already for this command (_note_limits)
+            self.errors.note(W_DYNAMICS_LIMITED)
         super().start_superimposed(job, lim)
 
     # --- restart (MC_Reset Restart = TRUE): the object takes no commands for RESTART_TIME (§6.7.1) --------
@@ -255,6 +261,13 @@ class AxisT(LayeredAxis):
     def simulation(self) -> bool:
         """MC_Power Mode 4 is in force (Statusword.Simulation, §3.1.2)."""
         return bool(self.ctl.bank.simulated[self.index])
+
+    def _zero_at_enable(self) -> bool:
+        """An unhomed incremental axis counts from 0 from the (re)start of its technology object; enabling
+        it again, also in simulation (MC_Power Mode 4), keeps the encoder's actual value (S7-Technology
+        V4.1 §3.1.2, §6.2.1; the position of an unhomed axis is not lost by a disable)."""
+        first, self._initialized = self._initialized, False
+        return first and super()._zero_at_enable()
 
     def _enable(self, start_mode: int) -> None:
         if self.restarting:                      # enabled once the restart is over (MC_Power calls again)
@@ -381,6 +394,7 @@ class AxisT(LayeredAxis):
         self.following_mode = False
         self.restart_requested = False
         self._warned = None
+        self._initialized = True
 
     @property
     def disabled(self) -> bool:

@@ -137,7 +137,7 @@ class TechnologyDevice:
         self._axis_dbs.append(to.db)
         self._rows = np.array([db._axis.index for db in self._axis_dbs], dtype=np.intp)
         from .dp_drive import bus                 # the drive's DP slave shows in StationLifeList from the start
-        bus(self).refresh()
+        bus(self).refresh(to)
 
     def register_object(self, to: Any) -> None:
         """Make the technology DB ``to.db`` of a technology object that is no axis known under its number."""

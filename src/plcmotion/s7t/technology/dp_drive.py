@@ -128,10 +128,14 @@ class DPDrive:
         self.slaves: list[Slave] = []
         self.refresh()
 
-    def refresh(self) -> None:
-        """Take the real axes configured so far onto the bus (new ones at the end)."""
+    def refresh(self, new: Any = None) -> None:
+        """Take the real axes configured so far onto the bus (new ones at the end).  ``new``: an axis being
+        added, which the controller lists only once its family has made it."""
         known = {id(s.axis) for s in self.slaves}
-        axes = sorted((a for a in self.device.ctl.axes.values()
+        candidates = list(self.device.ctl.axes.values())
+        if new is not None and all(a is not new for a in candidates):
+            candidates.append(new)
+        axes = sorted((a for a in candidates
                        if getattr(a, "db_number", None) is not None and not getattr(a, "virtual", True)
                        and not getattr(a, "hydraulic", False)),
                       key=lambda a: a.db_number)

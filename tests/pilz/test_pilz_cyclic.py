@@ -173,3 +173,19 @@ def test_pilz_cyclic_torque_control_own_load_model_wins():
     t0 = start(ax, 9, I428=1.0)
     ctl.run(0.5)
     assert ax.status.E07 == pytest.approx(2.0 * (ctl.time - t0), abs=0.01)
+
+
+@pytest.mark.parametrize("torque", [2.0, -2.0])
+def test_pilz_cyclic_torque_control_stays_inside_software_limits(torque):
+    """Pilz V6.5 §1.10.3 with the project rule (docs/pilz/decisions.md, Commands): a torque that drives a referenced
+    limited axis towards a software limit switch (I50 / I51) is cancelled with I90 = 21 and the quick stop ends
+    inside the switches; never beyond them."""
+    ctl, ax = make_axis({"Drive.Inertia": 0.01, "E65": 5.0, "E66": 5.0, "I10": 100.0, "I11": 1000.0,
+                         "I50": 20.0, "I51": -20.0})
+    _feed(ctl, ax, I428=torque)
+    start(ax, 9, I428=torque)
+    ctl.run(2.0)
+    assert ax.status.I91 and ax.status.I90 == Cause.SW_LIMIT_REACHED
+    assert ax.status.E07 == 0.0
+    assert max(abs(r.I96) for r in ax.rows) <= 20.0 + 1e-9
+    assert max(abs(r.p) for r in ax.rows) <= 20.0 + 1e-6

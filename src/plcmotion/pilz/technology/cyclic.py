@@ -172,8 +172,25 @@ class CyclicSetValues:
         if abs(v_next) > e["I10"]:                   # the velocity never exceeds I10
             v_next = math.copysign(e["I10"], v_next)
             acc = (v_next - v) / dt
+        if self._beyond_sw_limit(p + v * dt + acc * dt * dt / 2, v_next):
+            self._cancel(cmd, Cause.SW_LIMIT_REACHED, t)
+            return
         ax._start_profile(Profile([Segment(t, p, v, acc, 0.0), Segment(t + dt, p + v * dt + acc * dt * dt / 2,
                                                                       v_next, 0.0, 0.0)], t + dt))
+
+    def _beyond_sw_limit(self, p_next: float, v_next: float) -> bool:
+        """Whether the quick stop (I11) from the next cycle's state would end beyond an active software limit
+        switch.  The torque has no target the planner could guard, so the check runs on every cycle: cancelling
+        one cycle early brakes from a state whose stopping point was still inside (docs/pilz/decisions.md, Commands)."""
+        ax = self.core.axis
+        lim = ax.config.software_limits
+        if not lim.enabled or not ax.homed:
+            return False
+        dec = ax.eff["I11"]
+        # without position control the drive's speed loop lags the ramp by its time constant (and one cycle)
+        lag = abs(v_next) * (ax.config.drive.plant.speed_time_constant + ax.ctl.servo_cycle)
+        reach = p_next + math.copysign(v_next * v_next / (2.0 * dec) + lag if dec > 0.0 else lag, v_next)
+        return reach > lim.maximum or reach < lim.minimum
 
     def load_inertia(self) -> float:
         """Torque per unit/s² of load acceleration: ``Drive.Inertia``, or when unset the inertia the simulated

@@ -57,7 +57,7 @@ def _stopped_near_the_switch(stop_mode: int, stop_time: float, velocity: float, 
     r = Powered({**LIMITED, "userdefaultdynamics.stoptime": stop_time}, StopMode=stop_mode)
     move = MC_MoveVelocity()
     move(Axis=r.axis, Execute=True, Velocity=velocity, Acceleration=1000.0, Deceleration=1000.0, Jerk=0.0)
-    r.ctl.run_until(lambda: r.axis.db.CommandPosition >= at, 10.0)
+    r.ctl.run_until(lambda: r.axis.db.CommandPosition >= at, at / velocity + 1.0)   # travel time + ramp
     r.enable = False
     highest = -1e9
     for _ in range(int((stop_time + 1.0) / r.ctl.app_cycle)):

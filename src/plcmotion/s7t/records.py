@@ -34,6 +34,19 @@ ADDRESS_NOT_AVAILABLE = 0x8091
 REQUEST_SLICES = 2
 
 
+class _ShowsDataLength:
+    """The reading FBs show DataLength (the bytes the answer filled) with Done."""
+
+    def _show(self, output: str, error_id: int, error_info: int) -> None:
+        super()._show(output, error_id, error_info)  # type: ignore[misc]
+        if output == "Done":
+            self._out(DataLength=self.__dict__.get("_length", 0))  # type: ignore[attr-defined]
+
+    def _final_for(self, job: Job):
+        object.__setattr__(self, "_length", job.extra.get("length", 0))
+        return super()._final_for(job)  # type: ignore[misc]
+
+
 class _RecordBase(ServiceInstruction):
     INPUTS = {"Execute": False, "InOut": False, "Address": 0, "RecordNumber": 0, "Data": None, "DoneFlag": 0}
 
@@ -48,7 +61,7 @@ class _RecordBase(ServiceInstruction):
         return slave
 
 
-class MC_ReadRecord(_RecordBase):  # noqa: N801 - instruction name of the manual
+class MC_ReadRecord(_ShowsDataLength, _RecordBase):  # noqa: N801 - instruction name of the manual
     """FB 453: read a data record of a DP(DRIVE) slave into Data; ``DataLength`` bytes were read."""
 
     OUTPUTS = {"Done": False, "Busy": False, "Error": False, "ErrorID": 0, "DataLength": 0}
@@ -72,15 +85,6 @@ class MC_ReadRecord(_RecordBase):  # noqa: N801 - instruction name of the manual
             job.extra["length"] = len(resp)
             self.complete(job)
         DP.bus(device).slices.after(REQUEST_SLICES, answer)
-
-    def _show(self, output: str, error_id: int, error_info: int) -> None:
-        super()._show(output, error_id, error_info)
-        if output == "Done":
-            self._out(DataLength=self.__dict__.get("_length", 0))
-
-    def _final_for(self, job: Job):
-        object.__setattr__(self, "_length", job.extra.get("length", 0))
-        return super()._final_for(job)
 
 
 class MC_WriteRecord(_RecordBase):  # noqa: N801
@@ -142,7 +146,7 @@ class _DriveParameterBase(ServiceInstruction):
         DP.bus(device).slices.after(REQUEST_SLICES, answer)
 
 
-class MC_ReadDriveParameter(_DriveParameterBase):  # noqa: N801
+class MC_ReadDriveParameter(_ShowsDataLength, _DriveParameterBase):  # noqa: N801
     """FB 455: read a drive parameter (NumberOfElements = 0: not indexed; n > 0: n elements from SubIndex)
     into Data; ``DataLength`` bytes."""
 
@@ -160,15 +164,6 @@ class MC_ReadDriveParameter(_DriveParameterBase):  # noqa: N801
             job.extra["length"] = len(values)
             self.complete(job)
         self._send(device, job, slave, request, finish)
-
-    def _show(self, output: str, error_id: int, error_info: int) -> None:
-        super()._show(output, error_id, error_info)
-        if output == "Done":
-            self._out(DataLength=self.__dict__.get("_length", 0))
-
-    def _final_for(self, job: Job):
-        object.__setattr__(self, "_length", job.extra.get("length", 0))
-        return super()._final_for(job)
 
 
 class MC_WriteDriveParameter(_DriveParameterBase):  # noqa: N801

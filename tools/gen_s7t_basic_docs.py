@@ -1,5 +1,6 @@
 """The pages docs/s7t/instructions/<FB>.md of the basic-function FBs of S7-Technology V4.1 §6.7 (FB 406, 407,
-450, 451, 453-457, 460) from the instruction classes, the FB ErrorID tables and docs/s7t/examples/<FB>.py,
+450, 451, 453-457, 460) from the instruction classes, the FB ErrorID tables and docs/s7t/examples/<FB>.py (the
+example, which writes the plot docs/img/s7t/<FB>.png the page shows),
 written by the generator ``tools/gen_s7t_docs.py`` (``PYTHONPATH=src python -m tools.gen_s7t_docs basic``).
 
 tests/s7t/test_s7t_basic_docs.py compares the committed pages with :func:`render` and runs the examples.
@@ -193,7 +194,7 @@ def page(name: str) -> str:
     for lo, hi in table.ranges:
         out.append(_row(f"16#{lo:04X}..16#{hi:04X}", fb_errors.describe(lo, name).split(" ", 1)[1]))
     script = f"docs/s7t/examples/{name}.py"
-    out += ["", "## Example\n", f"<!-- example: {script} -->", "```python",
+    out += ["", "## Example\n", f"![{name} trace](../../img/s7t/{name}.png)\n", f"<!-- example: {script} -->", "```python",
             (ROOT / script).read_text(encoding="utf-8").rstrip("\n"), "```", "<!-- end example -->", ""]
     return "\n".join(out)
 

@@ -24,11 +24,27 @@ def test_s7t_basic_docs_equal_the_generated_pages():
         assert (ROOT / rel).read_text(encoding="utf-8") == text, f"{rel} is out of date"
 
 
+PNG = b"\x89PNG\r\n\x1a\n"
+
+
 @pytest.mark.parametrize("name", sorted(TOOL.PAGES))
-def test_s7t_basic_docs_example_runs(name, capsys):
-    """S7-Technology V4.1 §6.7: the example of each page runs (it asserts the values the page describes)."""
+def test_s7t_basic_docs_example_runs(name, tmp_path, monkeypatch, capsys):
+    """S7-Technology V4.1 §6.7: the example of each page runs (it asserts the values the page describes) and
+    writes one PNG, its trace (into PLCMOTION_DOCS_IMG, here a temporary directory)."""
+    monkeypatch.setenv("PLCMOTION_DOCS_IMG", str(tmp_path))
     runpy.run_path(str(ROOT / "docs" / "s7t" / "examples" / f"{name}.py"), run_name="__main__")
-    assert capsys.readouterr().out.strip()
+    png = tmp_path / f"{name}.png"
+    assert png.read_bytes()[:8] == PNG
+    assert [p.name for p in tmp_path.iterdir()] == [png.name]
+    assert str(png) in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("name", sorted(TOOL.PAGES))
+def test_s7t_basic_docs_page_shows_its_committed_plot(name):
+    """Issue 11 §4: each basic-function page embeds the plot of its example, and the plot is committed."""
+    text = (ROOT / "docs" / "s7t" / "instructions" / f"{name}.md").read_text(encoding="utf-8")
+    assert f"](../../img/s7t/{name}.png)" in text
+    assert (ROOT / "docs" / "img" / "s7t" / f"{name}.png").read_bytes()[:8] == PNG
 
 
 def test_s7t_basic_docs_list_the_manual_error_ids():

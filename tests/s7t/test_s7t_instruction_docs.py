@@ -106,3 +106,30 @@ def test_s7t_instruction_docs_project_example_is_valid(tmp_path):
     path = tmp_path / "machine.toml"
     path.write_text(re.search(r"```toml\n(.+?)```", text, re.S).group(1), encoding="utf-8")
     assert check_project(path) == []
+
+
+#: pages written by hand (not by tools/gen_s7t_docs.py) that still show a runnable example with its plot
+HAND_WRITTEN = ("MC_SetTorqueLimit",)
+
+
+@pytest.mark.parametrize("fb", HAND_WRITTEN)
+def test_s7t_instruction_docs_hand_written_page_example_runs_and_writes_its_plot(fb, tmp_path, monkeypatch,
+                                                                                  capsys):
+    """Issue 11 §4: the example of the page runs (it asserts what the page describes) and writes one PNG."""
+    monkeypatch.setenv("PLCMOTION_DOCS_IMG", str(tmp_path))
+    runpy.run_path(str(DOCS / "s7t" / "examples" / f"{fb}.py"), run_name="__main__")
+    png = tmp_path / f"{fb}.png"
+    assert png.read_bytes()[:8] == PNG
+    assert [p.name for p in tmp_path.iterdir()] == [png.name]
+    assert str(png) in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("fb", HAND_WRITTEN)
+def test_s7t_instruction_docs_hand_written_page_shows_its_example_and_plot(fb):
+    """The page embeds the example script verbatim and its committed plot."""
+    text = (DOCS / "s7t" / "instructions" / f"{fb}.md").read_text(encoding="utf-8")
+    script = (DOCS / "s7t" / "examples" / f"{fb}.py").read_text(encoding="utf-8")
+    assert f"<!-- example: docs/s7t/examples/{fb}.py -->\n```python\n{script.rstrip()}\n```\n<!-- end example -->" \
+        in text
+    assert f"](../../img/s7t/{fb}.png)" in text
+    assert (DOCS / "img" / "s7t" / f"{fb}.png").read_bytes()[:8] == PNG
